@@ -1,0 +1,1 @@
+//! Placeholder: the simulated bus lands with its issue.

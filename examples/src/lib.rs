@@ -1,0 +1,1 @@
+//! Example programs of plc-vars live in `src/bin`.
