@@ -1,1 +1,31 @@
-#![no_std]
+//! Declaration rules of plc-vars, free of dependencies so that the derive macro (at expansion),
+//! `plc-core` (at compile time of the user's program) and `plc-io` (at run time) apply exactly the
+//! same rules.
+//!
+//! - [`IecType`]: the IEC 61131-3 elementary types and their Rust equivalents (seed 000's table).
+//! - [`widening`]: seed 001's implicit widening matrices.
+//! - [`names`]: seed 003's naming rules.
+//! - [`link`]: `ethercat.<device>.<entry>` hardware links.
+//! - [`address`]: IEC 61131-3 direct addresses such as `%IX100.4` (seed 004).
+//! - [`capacity`]: the limits on strings and arrays.
+//! - [`layout`]: the layout hash that lets a reader detect a changed declaration.
+//!
+//! ```
+//! use plc_rules::{IecType, widening::can_widen};
+//! let t: IecType = "i16".parse().unwrap();
+//! assert_eq!(t, IecType::Int);
+//! assert!(can_widen(t, IecType::Dint));
+//! ```
+#![cfg_attr(not(any(feature = "std", test)), no_std)]
+#![deny(missing_docs)]
+
+pub mod address;
+pub mod capacity;
+mod iec_type;
+pub mod layout;
+pub mod link;
+pub mod names;
+pub mod widening;
+
+pub use address::{AddressError, Area, IecAddress, Size};
+pub use iec_type::{IecType, TypeFamily, UnknownType};

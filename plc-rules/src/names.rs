@@ -1,0 +1,181 @@
+//! Seed 003's naming rules for variables (and link identifiers).
+//!
+//! A name begins with a letter or an underscore, followed by letters, digits or underscores
+//! (ASCII), has no two consecutive underscores, is not a reserved keyword, an IEC type name, or
+//! the name of a standard function or function block, and is compared case-insensitively.
+//!
+//! ```
+//! use plc_rules::names::{check_name, NameError};
+//! assert_eq!(check_name("ls_centering_neg"), Ok(()));
+//! assert_eq!(check_name("motor__speed"), Err(NameError::DoubleUnderscore));
+//! assert_eq!(check_name("ton"), Err(NameError::Reserved("TON")));
+//! assert!(plc_rules::names::same_name("Speed", "SPEED"));
+//! ```
+
+use core::fmt;
+
+/// Why a name breaks seed 003's rules.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NameError {
+    /// The name is empty.
+    Empty,
+    /// The name starts with a digit.
+    StartsWithDigit,
+    /// The name holds a character other than an ASCII letter, digit or underscore.
+    InvalidChar(char),
+    /// The name holds two consecutive underscores.
+    DoubleUnderscore,
+    /// The name is a keyword, a type name or a standard function or function block (the
+    /// reserved word, in upper case).
+    Reserved(&'static str),
+}
+
+impl fmt::Display for NameError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NameError::Empty => f.write_str("a name must not be empty"),
+            NameError::StartsWithDigit => {
+                f.write_str("a name must begin with a letter or an underscore, not a digit")
+            }
+            NameError::InvalidChar(c) => write!(
+                f,
+                "`{}` is not allowed in a name: use ASCII letters, digits and underscores",
+                c.escape_default()
+            ),
+            NameError::DoubleUnderscore => {
+                f.write_str("a name must not contain two consecutive underscores")
+            }
+            NameError::Reserved(word) => write!(
+                f,
+                "`{word}` is reserved in IEC 61131-3 (a keyword, type, or standard function or \
+                 function block): choose another name"
+            ),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for NameError {}
+
+/// Keywords of the IEC 61131-3 languages (ST, IL, SFC, declarations).
+pub const KEYWORDS: &[&str] = &[
+    "ACTION", "END_ACTION", "ARRAY", "OF", "AT", "CASE", "ELSE", "END_CASE", "CONFIGURATION",
+    "END_CONFIGURATION", "CONSTANT", "EN", "ENO", "EXIT", "FALSE", "F_EDGE", "FOR", "TO", "BY",
+    "DO", "END_FOR", "FUNCTION", "END_FUNCTION", "FUNCTION_BLOCK", "END_FUNCTION_BLOCK", "IF",
+    "THEN", "ELSIF", "END_IF", "INITIAL_STEP", "END_STEP", "NOT", "MOD", "AND", "OR", "XOR",
+    "PROGRAM", "WITH", "END_PROGRAM", "R_EDGE", "READ_ONLY", "READ_WRITE", "REPEAT", "UNTIL",
+    "END_REPEAT", "RESOURCE", "ON", "END_RESOURCE", "RETAIN", "NON_RETAIN", "RETURN", "STEP",
+    "STRUCT", "END_STRUCT", "TASK", "TRANSITION", "FROM", "END_TRANSITION", "TRUE", "TYPE",
+    "END_TYPE", "VAR", "END_VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP",
+    "VAR_EXTERNAL", "VAR_ACCESS", "VAR_CONFIG", "VAR_GLOBAL", "WHILE", "END_WHILE", "JMP", "CAL",
+    "RET", "LD", "LDN", "ST", "STN", "S", "R", "ANDN", "ORN", "XORN", "CALC", "CALCN", "RETC",
+    "RETCN", "JMPC", "JMPCN", "PRIORITY", "SINGLE", "INTERVAL", "NIL", "REF", "REF_TO", "THIS",
+    "SUPER", "METHOD", "END_METHOD", "INTERFACE", "END_INTERFACE", "EXTENDS", "IMPLEMENTS",
+];
+
+/// Elementary and generic type names.
+pub const TYPE_NAMES: &[&str] = &[
+    "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "REAL", "LREAL",
+    "TIME", "LTIME", "DATE", "LDATE", "TIME_OF_DAY", "TOD", "LTOD", "DATE_AND_TIME", "DT", "LDT",
+    "STRING", "WSTRING", "CHAR", "WCHAR", "BYTE", "WORD", "DWORD", "LWORD", "ANY", "ANY_DERIVED",
+    "ANY_ELEMENTARY", "ANY_MAGNITUDE", "ANY_NUM", "ANY_REAL", "ANY_INT", "ANY_BIT", "ANY_STRING",
+    "ANY_DATE", "ANY_SIGNED", "ANY_UNSIGNED", "ANY_DURATION", "ANY_CHAR", "ANY_CHARS",
+];
+
+/// Standard functions and function blocks (IEC 61131-3 tables 22-36 and 43-46). Conversion
+/// functions (`<TYPE>_TO_<TYPE>`, `TRUNC`, `BCD_TO_*`) are recognised by pattern as well.
+pub const STANDARD_FUNCTIONS: &[&str] = &[
+    "ABS", "SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "ADD",
+    "MUL", "SUB", "DIV", "EXPT", "MOVE", "SHL", "SHR", "ROR", "ROL", "SEL", "MAX", "MIN", "LIMIT",
+    "MUX", "GT", "GE", "EQ", "LE", "LT", "NE", "LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT",
+    "DELETE", "REPLACE", "FIND", "TRUNC", "SR", "RS", "SEMA", "R_TRIG", "F_TRIG", "CTU", "CTD",
+    "CTUD", "CTU_INT", "CTD_INT", "CTUD_INT", "CTU_DINT", "CTD_DINT", "CTUD_DINT", "CTU_LINT",
+    "CTD_LINT", "CTUD_LINT", "CTU_UDINT", "CTD_UDINT", "CTUD_UDINT", "CTU_ULINT", "CTD_ULINT",
+    "CTUD_ULINT", "TP", "TON", "TOF", "LTP", "LTON", "LTOF", "RTC", "ADD_TIME", "SUB_TIME",
+    "MUL_TIME", "DIV_TIME", "CONCAT_DATE_TOD", "SPLIT_DATE", "SPLIT_TOD", "SPLIT_DT", "DAY_OF_WEEK",
+];
+
+/// Checks one name against seed 003's rules.
+pub fn check_name(name: &str) -> Result<(), NameError> {
+    let first = name.chars().next().ok_or(NameError::Empty)?;
+    if first.is_ascii_digit() {
+        return Err(NameError::StartsWithDigit);
+    }
+    if let Some(c) = name.chars().find(|c| !(c.is_ascii_alphanumeric() || *c == '_')) {
+        return Err(NameError::InvalidChar(c));
+    }
+    if name.contains("__") {
+        return Err(NameError::DoubleUnderscore);
+    }
+    match reserved_word(name) {
+        Some(word) => Err(NameError::Reserved(word)),
+        None => Ok(()),
+    }
+}
+
+/// The reserved word `name` equals (case-insensitively), if any.
+pub fn reserved_word(name: &str) -> Option<&'static str> {
+    let lists = [KEYWORDS, TYPE_NAMES, STANDARD_FUNCTIONS];
+    if let Some(word) = lists
+        .iter()
+        .flat_map(|l| l.iter())
+        .find(|w| w.eq_ignore_ascii_case(name))
+    {
+        return Some(word);
+    }
+    conversion_function(name)
+}
+
+/// Recognises the standard conversion functions `<TYPE>_TO_<TYPE>` and `<TYPE>_BCD_TO_<TYPE>`.
+fn conversion_function(name: &str) -> Option<&'static str> {
+    let upper_eq = |a: &str, b: &str| a.eq_ignore_ascii_case(b);
+    let bytes = name.as_bytes();
+    // Byte-wise search: `_TO_` is ASCII, so both split points are character boundaries.
+    let split = (0..bytes.len().saturating_sub(3))
+        .find(|&i| bytes[i..i + 4].eq_ignore_ascii_case(b"_TO_"))?;
+    let (from, to) = (&name[..split], &name[split + 4..]);
+    let is_type = |t: &str| {
+        let t = t
+            .strip_suffix("_BCD")
+            .or_else(|| t.strip_suffix("_bcd"))
+            .unwrap_or(t);
+        upper_eq(t, "BCD") || TYPE_NAMES.iter().any(|w| upper_eq(w, t))
+    };
+    (is_type(from) && is_type(to)).then_some("<TYPE>_TO_<TYPE>")
+}
+
+/// Whether two names are the same name (seed 003: naming is case insensitive).
+pub fn same_name(a: &str, b: &str) -> bool {
+    a.eq_ignore_ascii_case(b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn seed_000_and_003_style_names_are_accepted() {
+        for ok in ["ls_centering_neg", "_hidden", "x1", "Impact67_0_digital_inputs", "a_b_c_"] {
+            assert_eq!(check_name(ok), Ok(()), "{ok}");
+        }
+    }
+
+    #[test]
+    fn each_rule_is_reported() {
+        assert_eq!(check_name(""), Err(NameError::Empty));
+        assert_eq!(check_name("1abc"), Err(NameError::StartsWithDigit));
+        assert_eq!(check_name("a-b"), Err(NameError::InvalidChar('-')));
+        assert_eq!(check_name("größe"), Err(NameError::InvalidChar('ö')));
+        assert_eq!(check_name("a__b"), Err(NameError::DoubleUnderscore));
+        assert_eq!(check_name("End_Var"), Err(NameError::Reserved("END_VAR")));
+        assert_eq!(check_name("dint"), Err(NameError::Reserved("DINT")));
+        assert_eq!(check_name("abs"), Err(NameError::Reserved("ABS")));
+        assert_eq!(check_name("r_trig"), Err(NameError::Reserved("R_TRIG")));
+        assert_eq!(check_name("Ton"), Err(NameError::Reserved("TON")));
+        assert!(matches!(check_name("INT_TO_REAL"), Err(NameError::Reserved(_))));
+        assert!(matches!(check_name("word_bcd_to_int"), Err(NameError::Reserved(_))));
+        // Names that merely contain a reserved word stay legal.
+        assert_eq!(check_name("ton_preset"), Ok(()));
+        assert_eq!(check_name("speed_to_motor"), Ok(()));
+    }
+}
