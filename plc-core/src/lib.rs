@@ -1,1 +1,59 @@
-#![no_std]
+//! Runtime types of plc-vars: declare the variables of a PLC-style control program as a plain
+//! Rust struct, and get a fixed shared-memory layout, bit packing, metadata and compile-time
+//! checked declarations from `#[derive(GlobalMemory)]`.
+//!
+//! ```
+//! use plc_core::{FixedString, GlobalMemory};
+//!
+//! #[derive(GlobalMemory, Debug, Clone)]
+//! pub struct Gm {
+//!     /// Digital inputs of the IO module
+//!     #[plc(link = "ethercat.impact67_0.digital_inputs", direction = "input")]
+//!     pub impact67_0_digital_inputs: u16,
+//!     #[plc(source = "impact67_0_digital_inputs", bit = 0)]
+//!     pub ls_centering_neg: bool,
+//!     #[plc(initial = "TEST-001", description = "Test identifier")]
+//!     pub info_test_id: FixedString<64>,
+//!     #[plc(nonvolatile, initial = 12.5)]
+//!     pub press_home_offset_mm: f64,
+//! }
+//!
+//! let mut gm = Gm::default();
+//! assert_eq!(gm.info_test_id, "TEST-001");
+//! gm.impact67_0_digital_inputs = 1;
+//! gm.unpack_bits();
+//! assert!(gm.ls_centering_neg);
+//! assert_eq!(Gm::VARIABLES[3].initial, Some("12.5"));
+//! ```
+//!
+//! Crate features: `std` (default; error types implement `std::error::Error`), `derive`
+//! (default; re-exports `#[derive(GlobalMemory)]`), `serde` (serde for `FixedString`,
+//! `IecType`, `Access`, `Direction`). Without default features the crate is `no_std` and needs
+//! no allocator.
+#![cfg_attr(not(any(feature = "std", test)), no_std)]
+#![deny(missing_docs)]
+
+pub mod convert;
+mod fixed_string;
+mod global_memory;
+mod plc_type;
+mod process_image;
+mod value;
+
+#[doc(hidden)]
+#[path = "private.rs"]
+#[allow(missing_docs)]
+pub mod __private;
+
+pub use fixed_string::{FixedString, Truncated};
+pub use global_memory::{
+    Access, BitMapping, Direction, GlobalMemory, SetError, VarInfo, layout_hash,
+};
+pub use plc_rules::{AddressError, Area, IecAddress, IecType, Size, TypeFamily, UnknownType};
+pub use plc_type::{BitSource, ElementError, PlcScalar, PlcType};
+pub use process_image::{ByteOrder, ProcessImage, ProcessImageError, ProcessValue};
+pub use value::{Value, ValueError};
+
+/// `#[derive(GlobalMemory)]`: see [`GlobalMemory`] and the crate documentation.
+#[cfg(feature = "derive")]
+pub use plc_derive::GlobalMemory;

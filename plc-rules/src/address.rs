@@ -136,7 +136,7 @@ impl IecAddress {
 
     /// Whether the byte offset is a multiple of the item's size (seed 004's alignment table).
     pub const fn is_aligned(&self) -> bool {
-        self.byte as usize % self.size.bytes() == 0
+        (self.byte as usize).is_multiple_of(self.size.bytes())
     }
 
     /// Whether two addresses in the same area share a bit.
@@ -181,7 +181,7 @@ pub enum AddressErrorKind {
 }
 
 /// The error of parsing an [`IecAddress`]: the text and what is wrong with it.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct AddressError {
     text: AddressText,
     /// What is wrong.
@@ -338,7 +338,13 @@ impl FromStr for IecAddress {
 
 impl fmt::Display for IecAddress {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "%{}{}{}", self.area.letter(), self.size.letter(), self.byte)?;
+        write!(
+            f,
+            "%{}{}{}",
+            self.area.letter(),
+            self.size.letter(),
+            self.byte
+        )?;
         match self.bit {
             Some(bit) => write!(f, ".{bit}"),
             None => Ok(()),
@@ -357,7 +363,10 @@ mod tests {
     #[test]
     fn seed_004_examples_parse() {
         let a: IecAddress = "%IX100.4".parse().unwrap();
-        assert_eq!((a.area, a.size, a.byte, a.bit), (Area::Input, Size::Bit, 100, Some(4)));
+        assert_eq!(
+            (a.area, a.size, a.byte, a.bit),
+            (Area::Input, Size::Bit, 100, Some(4))
+        );
         let b: IecAddress = "%IB8".parse().unwrap();
         assert_eq!((b.size, b.byte, b.bit), (Size::Byte, 8, None));
         let w: IecAddress = "%IW16".parse().unwrap();

@@ -366,7 +366,10 @@ mod tests {
     #[test]
     fn integer_ranges_follow_the_width_and_sign() {
         assert_eq!(IecType::Ulint.int_range(), Some((0, u64::MAX as i128)));
-        assert_eq!(IecType::Lint.int_range(), Some((i64::MIN as i128, i64::MAX as i128)));
+        assert_eq!(
+            IecType::Lint.int_range(),
+            Some((i64::MIN as i128, i64::MAX as i128))
+        );
         assert_eq!(IecType::Word.int_range(), Some((0, 65535)));
         assert_eq!(IecType::Bool.int_range(), None);
     }

@@ -92,19 +92,36 @@ mod tests {
     #[test]
     fn fnv1a_of_known_bytes_matches_the_reference_value() {
         // FNV-1a 64 of "a" is 0xaf63dc4c8601ec8c (reference value of the algorithm).
-        assert_eq!(LayoutHasher(FNV_OFFSET).bytes(b"a").finish(), 0xaf63_dc4c_8601_ec8c);
+        assert_eq!(
+            LayoutHasher(FNV_OFFSET).bytes(b"a").finish(),
+            0xaf63_dc4c_8601_ec8c
+        );
     }
 
     #[test]
     fn every_field_of_a_variable_changes_the_hash() {
-        let base = LayoutHasher::new().var("a", "INT", 0, 2, &[], None).finish();
+        let base = LayoutHasher::new()
+            .var("a", "INT", 0, 2, &[], None)
+            .finish();
         let variants = [
-            LayoutHasher::new().var("b", "INT", 0, 2, &[], None).finish(),
-            LayoutHasher::new().var("a", "UINT", 0, 2, &[], None).finish(),
-            LayoutHasher::new().var("a", "INT", 1, 2, &[], None).finish(),
-            LayoutHasher::new().var("a", "INT", 0, 4, &[], None).finish(),
-            LayoutHasher::new().var("a", "INT", 0, 2, &[1], None).finish(),
-            LayoutHasher::new().var("a", "INT", 0, 2, &[], Some((0, 0))).finish(),
+            LayoutHasher::new()
+                .var("b", "INT", 0, 2, &[], None)
+                .finish(),
+            LayoutHasher::new()
+                .var("a", "UINT", 0, 2, &[], None)
+                .finish(),
+            LayoutHasher::new()
+                .var("a", "INT", 1, 2, &[], None)
+                .finish(),
+            LayoutHasher::new()
+                .var("a", "INT", 0, 4, &[], None)
+                .finish(),
+            LayoutHasher::new()
+                .var("a", "INT", 0, 2, &[1], None)
+                .finish(),
+            LayoutHasher::new()
+                .var("a", "INT", 0, 2, &[], Some((0, 0)))
+                .finish(),
         ];
         for v in variants {
             assert_ne!(v, base);

@@ -96,7 +96,10 @@ mod tests {
 
     #[test]
     fn seed_000_links_parse() {
-        for l in ["ethercat.el2004.output1", "ethercat.impact67_0.digital_outputs"] {
+        for l in [
+            "ethercat.el2004.output1",
+            "ethercat.impact67_0.digital_outputs",
+        ] {
             assert_eq!(Link::parse(l).unwrap().to_string(), l);
         }
     }

@@ -42,7 +42,8 @@ pub const REAL_ORDER: [IecType; 2] = [Real, Lreal];
 /// Seed 001, "Implicit integer widening matrix" (`=` written as Yes).
 pub const INTEGER_MATRIX: [[bool; 8]; 8] = [
     //      SINT INT DINT LINT USINT UINT UDINT ULINT
-    /* SINT  */ [Y, Y, Y, Y, N, N, N, N],
+    /* SINT  */
+    [Y, Y, Y, Y, N, N, N, N],
     /* INT   */ [N, Y, Y, Y, N, N, N, N],
     /* DINT  */ [N, N, Y, Y, N, N, N, N],
     /* LINT  */ [N, N, N, Y, N, N, N, N],
@@ -77,7 +78,8 @@ pub const BIT_STRING_MATRIX: [[bool; 4]; 4] = [
 /// Seed 001, "Cross-family widening: bit-string to integer" (needs the option).
 pub const CROSS_FAMILY_MATRIX: [[bool; 8]; 4] = [
     //      SINT INT DINT LINT USINT UINT UDINT ULINT
-    /* BYTE  */ [N, Y, Y, Y, N, Y, Y, Y],
+    /* BYTE  */
+    [N, Y, Y, Y, N, Y, Y, Y],
     /* WORD  */ [N, N, Y, Y, N, N, Y, Y],
     /* DWORD */ [N, N, N, Y, N, N, N, Y],
     /* LWORD */ [N, N, N, N, N, N, N, N],
@@ -96,7 +98,13 @@ const fn position(order: &[IecType], t: IecType) -> Option<usize> {
 
 /// Whether a value of `from` may implicitly become a `to` (seed 001, cross-family off).
 pub const fn can_widen(from: IecType, to: IecType) -> bool {
-    can_widen_with(from, to, WideningOptions { cross_family: false })
+    can_widen_with(
+        from,
+        to,
+        WideningOptions {
+            cross_family: false,
+        },
+    )
 }
 
 /// Whether a value of `from` may implicitly become a `to`, with the given options.
@@ -168,7 +176,11 @@ mod tests {
             let from: IecType = words.next().unwrap().parse().unwrap();
             for (cell, &to) in words.zip(columns) {
                 let expected = cell != "No";
-                assert_eq!(can_widen_with(from, to, options), expected, "{from} -> {to}");
+                assert_eq!(
+                    can_widen_with(from, to, options),
+                    expected,
+                    "{from} -> {to}"
+                );
                 cells += 1;
             }
         }
@@ -199,7 +211,10 @@ mod tests {
         for t in IecType::ALL {
             assert!(can_widen(t, t), "{t} to itself");
             if t != Bool {
-                assert!(!can_widen(Bool, t) && !can_widen(t, Bool), "BOOL never widens: {t}");
+                assert!(
+                    !can_widen(Bool, t) && !can_widen(t, Bool),
+                    "BOOL never widens: {t}"
+                );
             }
         }
         assert!(can_widen(Real, Lreal));
@@ -210,7 +225,10 @@ mod tests {
             }
             for b in BIT_STRING_ORDER {
                 let on = WideningOptions { cross_family: true };
-                assert!(!can_widen_with(i, b, on), "integer to bit string is never implicit");
+                assert!(
+                    !can_widen_with(i, b, on),
+                    "integer to bit string is never implicit"
+                );
             }
         }
         for b in BIT_STRING_ORDER {

@@ -1,0 +1,345 @@
+//! The `GlobalMemory` trait that `#[derive(GlobalMemory)]` implements, and the metadata it
+//! publishes about every variable.
+
+use crate::{IecType, ProcessImage, ProcessImageError, Value, ValueError};
+use core::fmt;
+use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
+
+/// Whether tools may write a variable.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Access {
+    /// Tools may write it (through the mailbox, `plc set`), subject to its direction.
+    ReadWrite,
+    /// `#[plc(read_only)]`: tools may only read it (seed 003: "Read Only").
+    ReadOnly,
+}
+
+/// Where a variable's value comes from, which decides who may write it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum Direction {
+    /// Written by the hardware each cycle (`%I`, an input PDO entry); tools may not write it.
+    Input,
+    /// Written by the program and sent to the hardware (`%Q`, an output PDO entry).
+    Output,
+    /// A request from outside (HMI setpoints, commands) that the program reads.
+    Command,
+    /// A report from the program to the outside; tools may not write it.
+    Status,
+    /// The program's own variable (the default).
+    Internal,
+}
+
+impl Direction {
+    /// The name used in `#[plc(direction = "...")]` and in JSON.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Direction::Input => "input",
+            Direction::Output => "output",
+            Direction::Command => "command",
+            Direction::Status => "status",
+            Direction::Internal => "internal",
+        }
+    }
+
+    /// Parses a direction name.
+    pub fn from_name(name: &str) -> Option<Direction> {
+        [
+            Direction::Input,
+            Direction::Output,
+            Direction::Command,
+            Direction::Status,
+            Direction::Internal,
+        ]
+        .into_iter()
+        .find(|d| d.name() == name)
+    }
+
+    /// Whether tools may write a variable of this direction (not inputs, not status).
+    pub const fn writable_from_outside(self) -> bool {
+        !matches!(self, Direction::Input | Direction::Status)
+    }
+}
+
+impl fmt::Display for Direction {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+/// A bool mapped onto one bit of an integer variable (seed 000: `source` and `bit`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct BitMapping {
+    /// Index of the source variable in [`GlobalMemory::VARIABLES`].
+    pub source: usize,
+    /// Bit in the source, 0 = least significant.
+    pub bit: u8,
+}
+
+/// Everything a tool needs to know about one variable: its name, type, place in the image,
+/// links and attributes. The derive builds one per field, in declaration order.
+///
+/// ```
+/// use plc_core::{GlobalMemory, Direction};
+/// #[derive(GlobalMemory, Debug, Clone)]
+/// struct Gm {
+///     /// Press force in kN
+///     #[plc(direction = "input", at = "%ID0")]
+///     force: f32,
+///     #[plc(initial = 12, read_only)]
+///     count: u16,
+/// }
+/// let v = &Gm::VARIABLES[0];
+/// assert_eq!((v.name, v.iec_type.name(), v.offset, v.size), ("force", "REAL", 0, 4));
+/// assert_eq!((v.description, v.address, v.direction), ("Press force in kN", Some("%ID0"), Direction::Input));
+/// assert_eq!(Gm::VARIABLES[1].initial, Some("12"));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct VarInfo {
+    /// Symbol name: `#[plc(name = "...")]` or the field name.
+    pub name: &'static str,
+    /// IEC type (for arrays: of one element).
+    pub iec_type: IecType,
+    /// The field's Rust type as written, e.g. `"[[f32; 4]; 3]"`.
+    pub rust_type: &'static str,
+    /// Byte offset in the image.
+    pub offset: usize,
+    /// Bytes in the image (all elements of an array).
+    pub size: usize,
+    /// Array dimensions, outermost first; empty for a scalar.
+    pub dims: &'static [usize],
+    /// The source word, for a bit-mapped bool.
+    pub bit: Option<BitMapping>,
+    /// `link = "ethercat.<device>.<entry>"`.
+    pub link: Option<&'static str>,
+    /// `at = "%IW4"`, as written.
+    pub address: Option<&'static str>,
+    /// `description = "..."` or the doc comment; `""` if none.
+    pub description: &'static str,
+    /// The initial value as JSON text (`12.5`, `true`, `"TEST-001"`), if declared.
+    pub initial: Option<&'static str>,
+    /// `nonvolatile` (alias `retain`): survives restarts.
+    pub nonvolatile: bool,
+    /// Whether tools may write it.
+    pub access: Access,
+    /// Where its value comes from.
+    pub direction: Direction,
+}
+
+impl VarInfo {
+    /// Number of elements: the product of the dimensions, 1 for a scalar.
+    pub const fn elements(&self) -> usize {
+        let mut n = 1;
+        let mut i = 0;
+        while i < self.dims.len() {
+            n *= self.dims[i];
+            i += 1;
+        }
+        n
+    }
+
+    /// Bytes of one element.
+    pub const fn element_size(&self) -> usize {
+        self.size / self.elements()
+    }
+
+    /// Capacity in bytes of a `STRING` element (0 for other types).
+    pub const fn string_capacity(&self) -> usize {
+        match self.iec_type {
+            IecType::String => self.element_size(),
+            _ => 0,
+        }
+    }
+
+    /// Whether tools may write it: read-write and neither an input nor a status.
+    pub const fn writable_from_outside(&self) -> bool {
+        matches!(self.access, Access::ReadWrite) && self.direction.writable_from_outside()
+    }
+
+    /// Builds a `VarInfo` from its parts; for the derive (`__private`), not for users.
+    #[doc(hidden)]
+    pub const fn __from_parts(p: crate::__private::VarInfoParts) -> Self {
+        VarInfo {
+            name: p.name,
+            iec_type: p.iec_type,
+            rust_type: p.rust_type,
+            offset: p.offset,
+            size: p.size,
+            dims: p.dims,
+            bit: p.bit,
+            link: p.link,
+            address: p.address,
+            description: p.description,
+            initial: p.initial,
+            nonvolatile: p.nonvolatile,
+            access: p.access,
+            direction: p.direction,
+        }
+    }
+}
+
+/// The layout hash of a variable list (see [`plc_rules::layout`]); the derive sets
+/// [`GlobalMemory::LAYOUT_HASH`] to this, computed at compile time.
+pub const fn layout_hash(vars: &[VarInfo]) -> u64 {
+    let mut h = plc_rules::layout::LayoutHasher::new();
+    let mut i = 0;
+    while i < vars.len() {
+        let v = &vars[i];
+        let bit = match v.bit {
+            Some(b) => Some((b.source, b.bit)),
+            None => None,
+        };
+        h = h.var(v.name, v.iec_type.name(), v.offset, v.size, v.dims, bit);
+        i += 1;
+    }
+    h.finish()
+}
+
+/// Why [`GlobalMemory::set`] refused a value. Nothing was changed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SetError {
+    /// No variable has this index.
+    UnknownIndex {
+        /// The index given.
+        index: usize,
+    },
+    /// The element index is beyond the array.
+    ElementOutOfRange {
+        /// The variable.
+        name: &'static str,
+        /// The element index given.
+        element: usize,
+        /// The number of elements.
+        len: usize,
+    },
+    /// The value does not fit the variable.
+    Value {
+        /// The variable.
+        name: &'static str,
+        /// What is wrong.
+        error: ValueError,
+    },
+}
+
+impl fmt::Display for SetError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SetError::UnknownIndex { index } => write!(f, "no variable has index {index}"),
+            SetError::ElementOutOfRange { name, element, len } => write!(
+                f,
+                "`{name}` has {len} elements: element {element} is out of range 0..{len}"
+            ),
+            SetError::Value { name, error } => write!(f, "`{name}`: {error}"),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for SetError {}
+
+/// The variables of a control program: implemented by `#[derive(GlobalMemory)]` on a struct
+/// with named fields.
+///
+/// The derive also implements `Default` from the `initial` values (then packs bit-mapped bools
+/// into their source words), so do not derive `Default` yourself.
+///
+/// ```
+/// use plc_core::{GlobalMemory, Value};
+/// #[derive(GlobalMemory, Debug, Clone, PartialEq)]
+/// pub struct Gm {
+///     #[plc(link = "ethercat.impact67_0.digital_inputs", direction = "input")]
+///     pub impact67_0_digital_inputs: u16,
+///     #[plc(source = "impact67_0_digital_inputs", bit = 1)]
+///     pub ls_centering_pos: bool,
+///     #[plc(initial = 1500, direction = "command")]
+///     pub speed: i32,
+/// }
+/// let mut gm = Gm::default();
+/// gm.impact67_0_digital_inputs = 0b10;
+/// gm.unpack_bits();
+/// assert!(gm.ls_centering_pos);
+/// let i = Gm::index_of("SPEED").unwrap();
+/// gm.set(i, 0, Value::Int(1200)).unwrap();
+/// assert_eq!(gm.get(i, 0), Value::Int(1200));
+/// assert_eq!(Gm::from_image(&gm.to_image()), gm);
+/// ```
+pub trait GlobalMemory: Sized {
+    /// The shared-memory image: `#[repr(C)]`, alignment 1, no padding, fields in declaration
+    /// order; bools as `u8`, numbers little endian, strings `FixedString<N>`.
+    type Image: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy;
+
+    /// One entry per field, in declaration order.
+    const VARIABLES: &'static [VarInfo];
+
+    /// [`layout_hash`] of [`VARIABLES`](Self::VARIABLES).
+    const LAYOUT_HASH: u64;
+
+    /// Copies each bit-mapped bool out of its source word (seed 000: after reading inputs).
+    fn unpack_bits(&mut self);
+
+    /// Copies each bit-mapped bool into its source word, keeping unmapped bits (seed 000:
+    /// before writing outputs).
+    fn pack_bits(&mut self);
+
+    /// The image of the current values.
+    fn to_image(&self) -> Self::Image;
+
+    /// Values from an image (any byte of a bool that is not 0 is `true`).
+    fn from_image(image: &Self::Image) -> Self;
+
+    /// Copies all values of `image` into `self` without building a new struct (the cycle's path).
+    fn load_image(&mut self, image: &Self::Image) {
+        *self = Self::from_image(image);
+    }
+
+    /// Writes the image of the current values into `image` (the cycle's path).
+    fn store_image(&self, image: &mut Self::Image) {
+        *image = self.to_image();
+    }
+
+    /// Index in [`VARIABLES`](Self::VARIABLES) of the variable with this symbol name, compared
+    /// case-insensitively (seed 003).
+    fn index_of(name: &str) -> Option<usize> {
+        Self::VARIABLES
+            .iter()
+            .position(|v| v.name.eq_ignore_ascii_case(name))
+    }
+
+    /// The value of element `element` (row-major; 0 for a scalar) of variable `index`, or `None`
+    /// if either index is out of range.
+    fn try_get(&self, index: usize, element: usize) -> Option<Value>;
+
+    /// The value of element `element` of variable `index`.
+    ///
+    /// # Panics
+    /// If `index` or `element` is out of range, like slice indexing; see
+    /// [`try_get`](Self::try_get).
+    fn get(&self, index: usize, element: usize) -> Value {
+        match self.try_get(index, element) {
+            Some(v) => v,
+            None => panic!("GlobalMemory::get: no variable {index} element {element}"),
+        }
+    }
+
+    /// Sets element `element` of variable `index`, checking kind, range and string capacity.
+    /// A bit-mapped bool also updates its source word's bit, and a source word also updates its
+    /// bit-mapped bools. Access and direction are not checked here: they are enforced where
+    /// writes come from outside (the mailbox, `plc set`).
+    fn set(&mut self, index: usize, element: usize, value: Value) -> Result<(), SetError>;
+
+    /// Reads every `at = "%I.."` variable from an input process image.
+    fn read_inputs<B: AsRef<[u8]>>(
+        &mut self,
+        inputs: &ProcessImage<B>,
+    ) -> Result<(), ProcessImageError>;
+
+    /// Writes every `at = "%Q.."` variable into an output process image.
+    fn write_outputs<B: AsRef<[u8]> + AsMut<[u8]>>(
+        &self,
+        outputs: &mut ProcessImage<B>,
+    ) -> Result<(), ProcessImageError>;
+}

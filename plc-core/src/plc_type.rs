@@ -1,0 +1,359 @@
+//! `PlcType`: the Rust types a variable may have, and how each is stored in the image.
+//!
+//! The derive relies on this trait instead of reading type names, so a field declared through a
+//! type alias (`type Word = u16;`) is checked and laid out exactly like one written `u16`.
+
+use crate::{FixedString, IecType, Value, ValueError};
+use zerocopy::byteorder::little_endian as le;
+use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
+
+/// Why an element could not be set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ElementError {
+    /// The element index is beyond the array.
+    OutOfRange {
+        /// The number of elements.
+        len: usize,
+    },
+    /// The value does not fit.
+    Value(ValueError),
+}
+
+mod sealed {
+    pub trait Sealed {}
+}
+
+/// A supported variable type: `bool`, `u8`..`u64`, `i8`..`i64`, `f32`, `f64`, `FixedString<N>`,
+/// or an array of these (the derive limits arrays to 3 dimensions and 65,535 items, seed 003).
+///
+/// ```
+/// use plc_core::{PlcType, IecType};
+/// assert_eq!(<[[f32; 4]; 3] as PlcType>::IEC_TYPE, IecType::Real);
+/// assert_eq!(<[[f32; 4]; 3] as PlcType>::DIMS, &[3, 4]);
+/// assert_eq!(<[[f32; 4]; 3] as PlcType>::ELEMENTS, 12);
+/// ```
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` is not a supported PLC variable type",
+    label = "not a PLC variable type",
+    note = "use bool, u8, u16, u32, u64, i8, i16, i32, i64, f32, f64, plc_core::FixedString<N>, \
+            or an array of these with up to 3 dimensions"
+)]
+pub trait PlcType: Copy + sealed::Sealed + 'static {
+    /// IEC type of one element, as the Rust type maps it (a `u16` is `UINT`).
+    const IEC_TYPE: IecType;
+    /// Number of array dimensions, 0 for a scalar.
+    const RANK: usize;
+    /// Array dimensions, outermost first; empty for a scalar.
+    const DIMS: &'static [usize];
+    /// Number of elements, 1 for a scalar.
+    const ELEMENTS: usize;
+    /// String capacity of one element in bytes, 0 for other types.
+    const STRING_CAPACITY: usize;
+    /// How the value is stored in the image: alignment 1, little endian, no padding.
+    type Repr: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy;
+    /// The stored form.
+    fn to_repr(&self) -> Self::Repr;
+    /// The value back from its stored form (a bool is `true` for any byte but 0).
+    fn from_repr(repr: &Self::Repr) -> Self;
+    /// Element `element` (row-major) as a [`Value`], `None` if out of range.
+    fn get_element(&self, element: usize) -> Option<Value>;
+    /// Sets element `element` from a [`Value`], checked against `ty` (the declared IEC type,
+    /// which may be a bit string of the same width). Nothing changes on error.
+    fn set_element(
+        &mut self,
+        element: usize,
+        value: Value,
+        ty: IecType,
+    ) -> Result<(), ElementError>;
+}
+
+/// A scalar (non-array) variable type.
+pub trait PlcScalar: PlcType {
+    /// The value as a [`Value`].
+    fn to_value(&self) -> Value;
+    /// The typed value from a [`Value`] already checked with [`Value::fit`].
+    fn from_fitted(value: Value) -> Self;
+}
+
+macro_rules! scalar {
+    ($($t:ty => $iec:ident, $repr:ty, $variant:ident, $as:ty;)*) => {$(
+        impl sealed::Sealed for $t {}
+        impl PlcType for $t {
+            const IEC_TYPE: IecType = IecType::$iec;
+            const RANK: usize = 0;
+            const DIMS: &'static [usize] = &[];
+            const ELEMENTS: usize = 1;
+            const STRING_CAPACITY: usize = 0;
+            type Repr = $repr;
+            #[inline(always)]
+            fn to_repr(&self) -> $repr {
+                <$repr>::from(*self)
+            }
+            #[inline(always)]
+            fn from_repr(repr: &$repr) -> Self {
+                <$t>::from(*repr)
+            }
+            fn get_element(&self, element: usize) -> Option<Value> {
+                (element == 0).then(|| self.to_value())
+            }
+            fn set_element(&mut self, element: usize, value: Value, ty: IecType)
+                -> Result<(), ElementError> {
+                if element != 0 {
+                    return Err(ElementError::OutOfRange { len: 1 });
+                }
+                let fitted = value.fit(ty, 0).map_err(ElementError::Value)?;
+                *self = Self::from_fitted(fitted);
+                Ok(())
+            }
+        }
+        impl PlcScalar for $t {
+            #[inline]
+            fn to_value(&self) -> Value {
+                Value::$variant(*self as $as)
+            }
+            #[inline]
+            fn from_fitted(value: Value) -> Self {
+                match value {
+                    Value::Int(v) => v as $t,
+                    Value::UInt(v) => v as $t,
+                    Value::Real(v) => v as $t,
+                    _ => <$t>::default(),
+                }
+            }
+        }
+    )*};
+}
+
+scalar! {
+    i8 => Sint, i8, Int, i64;
+    i16 => Int, le::I16, Int, i64;
+    i32 => Dint, le::I32, Int, i64;
+    i64 => Lint, le::I64, Int, i64;
+    u8 => Usint, u8, UInt, u64;
+    u16 => Uint, le::U16, UInt, u64;
+    u32 => Udint, le::U32, UInt, u64;
+    u64 => Ulint, le::U64, UInt, u64;
+    f32 => Real, le::F32, Real, f64;
+    f64 => Lreal, le::F64, Real, f64;
+}
+
+impl sealed::Sealed for bool {}
+impl PlcType for bool {
+    const IEC_TYPE: IecType = IecType::Bool;
+    const RANK: usize = 0;
+    const DIMS: &'static [usize] = &[];
+    const ELEMENTS: usize = 1;
+    const STRING_CAPACITY: usize = 0;
+    type Repr = u8;
+    #[inline(always)]
+    fn to_repr(&self) -> u8 {
+        *self as u8
+    }
+    #[inline(always)]
+    fn from_repr(repr: &u8) -> Self {
+        *repr != 0
+    }
+    fn get_element(&self, element: usize) -> Option<Value> {
+        (element == 0).then_some(Value::Bool(*self))
+    }
+    fn set_element(
+        &mut self,
+        element: usize,
+        value: Value,
+        ty: IecType,
+    ) -> Result<(), ElementError> {
+        if element != 0 {
+            return Err(ElementError::OutOfRange { len: 1 });
+        }
+        match value.fit(ty, 0).map_err(ElementError::Value)? {
+            Value::Bool(b) => *self = b,
+            _ => unreachable!("fit returns a Bool for BOOL"),
+        }
+        Ok(())
+    }
+}
+impl PlcScalar for bool {
+    fn to_value(&self) -> Value {
+        Value::Bool(*self)
+    }
+    fn from_fitted(value: Value) -> Self {
+        matches!(value, Value::Bool(true))
+    }
+}
+
+impl<const N: usize> sealed::Sealed for FixedString<N> {}
+impl<const N: usize> PlcType for FixedString<N> {
+    const IEC_TYPE: IecType = IecType::String;
+    const RANK: usize = 0;
+    const DIMS: &'static [usize] = &[];
+    const ELEMENTS: usize = 1;
+    const STRING_CAPACITY: usize = N;
+    type Repr = FixedString<N>;
+    #[inline(always)]
+    fn to_repr(&self) -> Self {
+        *self
+    }
+    #[inline(always)]
+    fn from_repr(repr: &Self) -> Self {
+        *repr
+    }
+    fn get_element(&self, element: usize) -> Option<Value> {
+        (element == 0).then(|| self.to_value())
+    }
+    fn set_element(
+        &mut self,
+        element: usize,
+        value: Value,
+        ty: IecType,
+    ) -> Result<(), ElementError> {
+        if element != 0 {
+            return Err(ElementError::OutOfRange { len: 1 });
+        }
+        let fitted = value.fit(ty, N).map_err(ElementError::Value)?;
+        *self = Self::from_fitted(fitted);
+        Ok(())
+    }
+}
+impl<const N: usize> PlcScalar for FixedString<N> {
+    fn to_value(&self) -> Value {
+        Value::Text(FixedString::from_str_truncate(self.as_str()))
+    }
+    fn from_fitted(value: Value) -> Self {
+        match value {
+            Value::Text(t) => FixedString::from_str_truncate(t.as_str()),
+            _ => FixedString::new(),
+        }
+    }
+}
+
+impl<T: PlcType, const N: usize> sealed::Sealed for [T; N] {}
+impl<T: PlcType, const N: usize> PlcType for [T; N] {
+    const IEC_TYPE: IecType = T::IEC_TYPE;
+    const RANK: usize = T::RANK + 1;
+    const DIMS: &'static [usize] = {
+        // Dimensions beyond the third are cut here; the derive rejects such arrays with a
+        // spanned error (seed 003: at most 3 dimensions).
+        const fn dim<T: PlcType>(i: usize) -> usize {
+            if i < T::DIMS.len() { T::DIMS[i] } else { 0 }
+        }
+        match T::RANK {
+            0 => &[N],
+            1 => &[N, dim::<T>(0)],
+            _ => &[N, dim::<T>(0), dim::<T>(1)],
+        }
+    };
+    const ELEMENTS: usize = N * T::ELEMENTS;
+    const STRING_CAPACITY: usize = T::STRING_CAPACITY;
+    type Repr = [T::Repr; N];
+    #[inline(always)]
+    fn to_repr(&self) -> Self::Repr {
+        core::array::from_fn(|i| self[i].to_repr())
+    }
+    #[inline(always)]
+    fn from_repr(repr: &Self::Repr) -> Self {
+        core::array::from_fn(|i| T::from_repr(&repr[i]))
+    }
+    fn get_element(&self, element: usize) -> Option<Value> {
+        let inner = T::ELEMENTS;
+        self.get(element / inner)?.get_element(element % inner)
+    }
+    fn set_element(
+        &mut self,
+        element: usize,
+        value: Value,
+        ty: IecType,
+    ) -> Result<(), ElementError> {
+        let inner = T::ELEMENTS;
+        let len = Self::ELEMENTS;
+        let Some(item) = self.get_mut(element / inner) else {
+            return Err(ElementError::OutOfRange { len });
+        };
+        item.set_element(element % inner, value, ty)
+            .map_err(|e| match e {
+                ElementError::OutOfRange { .. } => ElementError::OutOfRange { len },
+                other => other,
+            })
+    }
+}
+
+/// An integer type that can be the source word of bit-mapped bools (seed 000: `u8`..`u64`,
+/// `i8`..`i64`).
+#[diagnostic::on_unimplemented(
+    message = "`{Self}` cannot be the source of bit-mapped bools",
+    label = "not an integer",
+    note = "a `source` must be an integer: u8, u16, u32, u64, i8, i16, i32 or i64 (seed 000)"
+)]
+pub trait BitSource: PlcScalar {
+    /// Width in bits.
+    const BITS: u32;
+    /// Bit `n` of the value.
+    fn bit(self, n: u32) -> bool;
+    /// The value with bit `n` set to `v`, other bits unchanged (branch free).
+    fn with_bit(self, n: u32, v: bool) -> Self;
+}
+
+macro_rules! bit_source {
+    ($($t:ty),*) => {$(
+        impl BitSource for $t {
+            const BITS: u32 = <$t>::BITS;
+            #[inline(always)]
+            fn bit(self, n: u32) -> bool {
+                (self >> n) & 1 != 0
+            }
+            #[inline(always)]
+            fn with_bit(self, n: u32, v: bool) -> Self {
+                (self & !(1 << n)) | ((v as $t) << n)
+            }
+        }
+    )*};
+}
+bit_source!(u8, u16, u32, u64, i8, i16, i32, i64);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn arrays_report_dims_and_elements() {
+        type A = [[[u8; 2]; 3]; 4];
+        assert_eq!(A::DIMS, &[4, 3, 2]);
+        assert_eq!((A::RANK, A::ELEMENTS), (3, 24));
+        assert_eq!(<u8 as PlcType>::DIMS, &[] as &[usize]);
+        assert_eq!(<[FixedString<8>; 2]>::STRING_CAPACITY, 8);
+    }
+
+    #[test]
+    fn row_major_elements() {
+        let mut a = [[0u16; 3]; 2];
+        a.set_element(4, Value::UInt(9), IecType::Uint).unwrap();
+        assert_eq!(a[1][1], 9);
+        assert_eq!(a.get_element(4), Some(Value::UInt(9)));
+        assert_eq!(a.get_element(6), None);
+        assert_eq!(
+            a.set_element(6, Value::UInt(1), IecType::Uint),
+            Err(ElementError::OutOfRange { len: 6 })
+        );
+        assert!(matches!(
+            a.set_element(0, Value::Int(-1), IecType::Uint),
+            Err(ElementError::Value(_))
+        ));
+        assert_eq!(a[0][0], 0);
+    }
+
+    #[test]
+    fn repr_is_little_endian_and_unaligned() {
+        let r = 0x1234u16.to_repr();
+        assert_eq!(r.as_bytes(), &[0x34, 0x12]);
+        assert_eq!(core::mem::align_of::<<[f64; 3] as PlcType>::Repr>(), 1);
+        assert!(bool::from_repr(&7));
+        assert_eq!(f64::from_repr(&(-2.5f64).to_repr()), -2.5);
+    }
+
+    #[test]
+    fn bit_source_keeps_other_bits() {
+        assert_eq!(0b1010u8.with_bit(0, true), 0b1011);
+        assert_eq!(0b1010u8.with_bit(1, false), 0b1000);
+        assert!((-1i16).bit(15));
+        assert_eq!(0i64.with_bit(63, true), i64::MIN);
+    }
+}
