@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Runs every test of the workspace. Some tests drive real system tools: `plc watch` runs in
+# tmux, and the simulated EtherCAT bus is also tested over a veth pair (iproute2). Install them
+# when missing and we may (root, or passwordless sudo); tests that still lack them say so and skip.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+need=()
+command -v tmux >/dev/null 2>&1 || need+=(tmux)
+command -v ip >/dev/null 2>&1 || need+=(iproute2)
+if ((${#need[@]})); then
+  as_root=()
+  [[ $(id -u) == 0 ]] || as_root=(sudo -n)
+  if command -v apt-get >/dev/null 2>&1 && { [[ $(id -u) == 0 ]] || sudo -n true 2>/dev/null; }; then
+    echo "scripts/test.sh: installing ${need[*]}"
+    "${as_root[@]}" apt-get update -qq >/dev/null || true
+    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null \
+      || echo "scripts/test.sh: could not install ${need[*]}; the tests that need them will skip"
+  else
+    echo "scripts/test.sh: ${need[*]} missing and no way to install; the tests that need them will skip"
+  fi
+fi
+
+cargo test --workspace "$@"
