@@ -1,1 +1,3 @@
 //! Placeholder: the runtime lands with its issue.
+#[cfg(feature = "ethercat")]
+pub mod ethercat;

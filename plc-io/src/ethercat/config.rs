@@ -1,0 +1,530 @@
+//! The bus description: which SubDevices sit on the ring, in which order, under which names,
+//! and what their process data looks like.
+//!
+//! ethercrab 0.7 tells the names of neither PDOs nor PDO entries (ethercrab issues #215/#228),
+//! and ESI files repeat names ("Output" eight times), so the description names every entry
+//! itself, as a configurator would. The file is TOML or JSON; see [`BusConfig`].
+
+use super::MAX_PDI;
+use super::MAX_SUBDEVICES;
+use plc_core::{IecType, TypeFamily};
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::path::Path;
+
+/// A bus description: the SubDevices in ring order (position 0 is the one next to the
+/// MainDevice).
+///
+/// TOML (numbers may be hexadecimal; `revision` is optional, and when given must match):
+///
+/// ```
+/// use plc_io::ethercat::BusConfig;
+/// let bus = BusConfig::from_toml_str(r#"
+///     [[devices]]
+///     name = "coupler"
+///     identity = { vendor = 0x2, product = 0x044c2c52 }
+///
+///     [[devices]]
+///     name = "door"
+///     identity = { vendor = 0x2, product = 0x03ec3052, revision = 0x00130000 }
+///     entries = [
+///         { name = "closed", direction = "input", bits = 1, type = "BOOL" },
+///         { name = "spare", direction = "input", bits = 3, type = "BYTE" },
+///     ]
+/// "#).unwrap();
+/// assert_eq!(bus.devices[1].entries[1].bits, 3);
+/// ```
+///
+/// JSON has no hexadecimal numbers, so identity values may also be strings such as
+/// `"0x044c2c52"`:
+///
+/// ```
+/// use plc_io::ethercat::BusConfig;
+/// let bus = BusConfig::from_json_str(r#"{ "devices": [
+///     { "name": "coupler", "identity": { "vendor": 2, "product": "0x044c2c52" } }
+/// ] }"#).unwrap();
+/// assert_eq!(bus.devices[0].identity.product, 0x044c_2c52);
+/// ```
+///
+/// Every problem of a description is reported at once ([`ConfigError`]): names that are not
+/// identifiers or repeat, an entry wider than its type, a bus beyond the caps
+/// ([`MAX_SUBDEVICES`], [`MAX_PDI`]).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BusConfig {
+    /// The SubDevices in ring order.
+    pub devices: Vec<DeviceConfig>,
+}
+
+/// One SubDevice of the ring.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DeviceConfig {
+    /// The name links use: `ethercat.<name>.<entry>` (an identifier, unique on the bus).
+    pub name: String,
+    /// What the SubDevice at this position must report before the bus goes to OP.
+    pub identity: Identity,
+    /// Free text for people (e.g. the order number and where the terminal sits).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub description: String,
+    /// The PDO entries in the order of the SubDevice's PDO assignment, inputs and outputs
+    /// mixed as they come (each direction is laid out on its own). Empty for a coupler.
+    #[serde(default)]
+    pub entries: Vec<PdoEntry>,
+}
+
+/// The identity a SubDevice reports from its EEPROM (SII words 0x08..0x0D).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Identity {
+    /// Vendor id (Beckhoff: 2).
+    #[serde(with = "hex_u32")]
+    pub vendor: u32,
+    /// Product code (EL1004: 0x03ec3052).
+    #[serde(with = "hex_u32")]
+    pub product: u32,
+    /// Revision; `None` accepts any revision.
+    #[serde(default, with = "hex_u32_opt", skip_serializing_if = "Option::is_none")]
+    pub revision: Option<u32>,
+}
+
+impl fmt::Display for Identity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "vendor {:#x}, product {:#010x}",
+            self.vendor, self.product
+        )?;
+        match self.revision {
+            Some(r) => write!(f, ", revision {r:#010x}"),
+            None => f.write_str(", any revision"),
+        }
+    }
+}
+
+/// Which way an entry's data flows, seen from the MainDevice.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PdoDirection {
+    /// From the SubDevice to the program (TxPDO, an SM of type "inputs").
+    Input,
+    /// From the program to the SubDevice (RxPDO, an SM of type "outputs").
+    Output,
+}
+
+impl PdoDirection {
+    /// `"input"` or `"output"`.
+    pub const fn name(self) -> &'static str {
+        match self {
+            PdoDirection::Input => "input",
+            PdoDirection::Output => "output",
+        }
+    }
+}
+
+impl fmt::Display for PdoDirection {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+/// One PDO entry, or several consecutive 1-bit entries grouped under one name.
+///
+/// Entries of one direction are packed bit after bit in the order given, within their
+/// SyncManager (`sm`, default 0), as ethercrab lays out the PDO assignment; each SyncManager's
+/// data starts on a byte. Bit 0 of a multi-bit entry is its first bit in the process data, so
+/// an entry `digital_inputs` of 4 bits over an EL1004's four 1-bit channels has channel 1 in
+/// bit 0 and channel 4 in bit 3.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PdoEntry {
+    /// The name links use (an identifier, unique within the device).
+    pub name: String,
+    /// Input or output.
+    pub direction: PdoDirection,
+    /// Bits in the process data: 1 for `BOOL`; up to the type's width for unsigned integers and
+    /// bit strings (the value is zero-extended; an output drops the bits above); exactly the
+    /// width for signed integers and reals.
+    pub bits: u32,
+    /// IEC type of the value, e.g. `"BOOL"`, `"UINT"`, `"WORD"`, `"INT"`, `"REAL"`.
+    #[serde(rename = "type")]
+    pub iec_type: String,
+    /// SyncManager index, for SubDevices whose entries of one direction span several
+    /// SyncManagers whose sizes are not whole bytes. Default 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub sm: u8,
+}
+
+fn is_zero(v: &u8) -> bool {
+    *v == 0
+}
+
+impl PdoEntry {
+    /// A 1-bit `BOOL` entry.
+    pub fn bool(name: &str, direction: PdoDirection) -> Self {
+        PdoEntry::new(name, direction, 1, IecType::Bool)
+    }
+
+    /// An entry of `bits` bits of type `iec_type` in SyncManager 0.
+    pub fn new(name: &str, direction: PdoDirection, bits: u32, iec_type: IecType) -> Self {
+        PdoEntry {
+            name: name.to_owned(),
+            direction,
+            bits,
+            iec_type: iec_type.name().to_owned(),
+            sm: 0,
+        }
+    }
+
+    /// The IEC type, if the `type` text names one.
+    pub fn iec(&self) -> Option<IecType> {
+        self.iec_type.parse().ok()
+    }
+}
+
+/// Why a bus description was refused: every problem found, one per line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ConfigError {
+    /// Where the description came from (a file name, or "bus description").
+    pub source: String,
+    /// The problems, each a sentence that says what to change.
+    pub problems: Vec<String>,
+}
+
+impl fmt::Display for ConfigError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: ", self.source)?;
+        if let [one] = self.problems.as_slice() {
+            return f.write_str(one);
+        }
+        write!(f, "{} problems:", self.problems.len())?;
+        for p in &self.problems {
+            write!(f, "\n  - {p}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ConfigError {}
+
+impl BusConfig {
+    /// Parses and checks a TOML description.
+    pub fn from_toml_str(text: &str) -> Result<Self, ConfigError> {
+        let bus: BusConfig = toml::from_str(text).map_err(|e| ConfigError {
+            source: "bus description".into(),
+            problems: vec![format!("not a valid TOML bus description: {e}")],
+        })?;
+        bus.validate()?;
+        Ok(bus)
+    }
+
+    /// Parses and checks a JSON description.
+    pub fn from_json_str(text: &str) -> Result<Self, ConfigError> {
+        let bus: BusConfig = serde_json::from_str(text).map_err(|e| ConfigError {
+            source: "bus description".into(),
+            problems: vec![format!("not a valid JSON bus description: {e}")],
+        })?;
+        bus.validate()?;
+        Ok(bus)
+    }
+
+    /// Reads a description from a file: JSON if the name ends in `.json`, TOML otherwise.
+    /// Errors name the file.
+    pub fn load(path: impl AsRef<Path>) -> Result<Self, ConfigError> {
+        let path = path.as_ref();
+        let name = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| ConfigError {
+            source: name.clone(),
+            problems: vec![format!("cannot read the bus description: {e}")],
+        })?;
+        let json = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("json"));
+        let parsed = if json {
+            Self::from_json_str(&text)
+        } else {
+            Self::from_toml_str(&text)
+        };
+        parsed.map_err(|mut e| {
+            e.source = name;
+            e
+        })
+    }
+
+    /// The description as TOML text (what [`from_toml_str`](Self::from_toml_str) reads back).
+    pub fn to_toml_string(&self) -> String {
+        // Serializing plain strings, numbers and arrays of tables cannot fail.
+        toml::to_string_pretty(self).unwrap_or_default()
+    }
+
+    /// The device named `name`, with its ring position.
+    pub fn device(&self, name: &str) -> Option<(usize, &DeviceConfig)> {
+        self.devices
+            .iter()
+            .enumerate()
+            .find(|(_, d)| d.name == name)
+    }
+
+    /// Checks the description; every problem at once. The parsers call it; call it yourself for
+    /// a description built in code.
+    pub fn validate(&self) -> Result<(), ConfigError> {
+        let mut problems = Vec::new();
+        if self.devices.is_empty() {
+            problems.push(
+                "the bus has no devices: list the SubDevices in ring order under `devices`".into(),
+            );
+        }
+        if self.devices.len() > MAX_SUBDEVICES {
+            problems.push(format!(
+                "the bus has {} devices, more than the {MAX_SUBDEVICES} plc-io is built for \
+                 (ethercrab's MAX_SUBDEVICES): split the machine over two buses or raise \
+                 `plc_io::ethercat::MAX_SUBDEVICES`",
+                self.devices.len()
+            ));
+        }
+        for (pos, d) in self.devices.iter().enumerate() {
+            if !plc_rules::link::is_identifier(&d.name) {
+                problems.push(format!(
+                    "device {pos}: name `{}` is not an identifier (letters, digits, underscores, \
+                     not starting with a digit), so no link can name it: rename it, e.g. `el1004_0`",
+                    d.name
+                ));
+            }
+            if let Some(first) = self.devices[..pos]
+                .iter()
+                .position(|o| o.name.eq_ignore_ascii_case(&d.name))
+            {
+                problems.push(format!(
+                    "device {pos}: name `{}` is already used by device {first}: give each \
+                     device its own name",
+                    d.name
+                ));
+            }
+            for (i, e) in d.entries.iter().enumerate() {
+                check_entry(pos, d, i, e, &mut problems);
+            }
+        }
+        let pdi: usize = self
+            .devices
+            .iter()
+            .map(|d| {
+                super::layout::device_bytes(d, PdoDirection::Input)
+                    + super::layout::device_bytes(d, PdoDirection::Output)
+            })
+            .sum();
+        if pdi > MAX_PDI {
+            problems.push(format!(
+                "the process data of this bus takes {pdi} bytes, more than the {MAX_PDI} plc-io \
+                 is built for (ethercrab's MAX_PDI): raise `plc_io::ethercat::MAX_PDI`"
+            ));
+        }
+        if problems.is_empty() {
+            Ok(())
+        } else {
+            Err(ConfigError {
+                source: "bus description".into(),
+                problems,
+            })
+        }
+    }
+}
+
+fn check_entry(pos: usize, d: &DeviceConfig, i: usize, e: &PdoEntry, problems: &mut Vec<String>) {
+    let at = format!("device {pos} (`{}`), entry `{}`", d.name, e.name);
+    if !plc_rules::link::is_identifier(&e.name) {
+        problems.push(format!(
+            "{at}: the name is not an identifier (letters, digits, underscores, not starting \
+             with a digit): rename it, e.g. `output1`"
+        ));
+    }
+    if d.entries[..i]
+        .iter()
+        .any(|o| o.name.eq_ignore_ascii_case(&e.name))
+    {
+        problems.push(format!(
+            "{at}: the name is used twice in this device: ESI files repeat names such as \
+             \"Output\"; give each entry its own, e.g. `output1`, `output2`"
+        ));
+    }
+    let Some(ty) = e.iec() else {
+        problems.push(format!(
+            "{at}: `{}` is not an IEC type: use BOOL, SINT, INT, DINT, LINT, USINT, UINT, \
+             UDINT, ULINT, REAL, LREAL, BYTE, WORD, DWORD or LWORD",
+            e.iec_type
+        ));
+        return;
+    };
+    let width = ty.bits();
+    let ok = match ty.family() {
+        TypeFamily::String => {
+            problems.push(format!(
+                "{at}: STRING is not a process data type: use an integer, real or bit-string type"
+            ));
+            return;
+        }
+        TypeFamily::Bool => e.bits == 1,
+        TypeFamily::UnsignedInt | TypeFamily::BitString => (1..=width).contains(&e.bits),
+        TypeFamily::SignedInt | TypeFamily::Real => e.bits == width,
+    };
+    if !ok {
+        let rule = match ty.family() {
+            TypeFamily::Bool => "a BOOL entry has 1 bit".to_owned(),
+            TypeFamily::UnsignedInt | TypeFamily::BitString => {
+                format!("a {ty} entry has 1 to {width} bits")
+            }
+            _ => format!("a {ty} entry has exactly {width} bits"),
+        };
+        problems.push(format!(
+            "{at}: {} bits do not fit type {ty} ({rule}): fix `bits` or `type`",
+            e.bits
+        ));
+    }
+}
+
+/// A u32 written as a number or as a string `"0x..."`/decimal (JSON lacks hex numbers).
+mod hex_u32 {
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    pub(super) enum NumOrText {
+        Num(u64),
+        Text(String),
+    }
+
+    pub(super) fn convert<E: serde::de::Error>(v: NumOrText) -> Result<u32, E> {
+        let n = match v {
+            NumOrText::Num(n) => n,
+            NumOrText::Text(t) => {
+                let t = t.trim();
+                let parsed = match t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+                    Some(hex) => u64::from_str_radix(&hex.replace('_', ""), 16),
+                    None => t.replace('_', "").parse(),
+                };
+                parsed.map_err(|_| {
+                    E::custom(format!(
+                        "`{t}` is not a number: write e.g. 2, \"0x044c2c52\" or \"1154\""
+                    ))
+                })?
+            }
+        };
+        u32::try_from(n).map_err(|_| E::custom(format!("{n} does not fit 32 bits")))
+    }
+
+    pub fn serialize<S: Serializer>(v: &u32, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_u32(*v)
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<u32, D::Error> {
+        convert(NumOrText::deserialize(d)?)
+    }
+}
+
+mod hex_u32_opt {
+    use super::hex_u32::{NumOrText, convert};
+    use serde::{Deserialize, Deserializer, Serializer};
+
+    pub fn serialize<S: Serializer>(v: &Option<u32>, s: S) -> Result<S::Ok, S::Error> {
+        match v {
+            Some(v) => s.serialize_u32(*v),
+            None => s.serialize_none(),
+        }
+    }
+
+    pub fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Option<u32>, D::Error> {
+        Option::<NumOrText>::deserialize(d)?
+            .map(convert)
+            .transpose()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_problem_of_a_description_is_listed() {
+        let err = BusConfig::from_toml_str(
+            r#"
+            [[devices]]
+            name = "1bad"
+            identity = { vendor = 2, product = 1 }
+            entries = [
+                { name = "a", direction = "input", bits = 2, type = "BOOL" },
+                { name = "A", direction = "input", bits = 1, type = "BOOL" },
+                { name = "s", direction = "output", bits = 8, type = "STRING" },
+                { name = "i", direction = "output", bits = 8, type = "INT" },
+                { name = "x", direction = "output", bits = 8, type = "QWORD" },
+            ]
+            [[devices]]
+            name = "ok"
+            identity = { vendor = 2, product = 1 }
+            [[devices]]
+            name = "OK"
+            identity = { vendor = 2, product = 1 }
+            "#,
+        )
+        .unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), 7, "{text}");
+        for needle in [
+            "`1bad` is not an identifier",
+            "2 bits do not fit type BOOL",
+            "used twice",
+            "STRING is not a process data type",
+            "a INT entry has exactly 16 bits",
+            "`QWORD` is not an IEC type",
+            "already used by device 1",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in {text}");
+        }
+    }
+
+    #[test]
+    fn json_identity_accepts_hex_strings_and_numbers() {
+        let bus = BusConfig::from_json_str(
+            r#"{"devices":[{"name":"a","identity":{"vendor":"0x2","product":1154,"revision":"0x00120000"}}]}"#,
+        )
+        .unwrap();
+        assert_eq!(
+            bus.devices[0].identity,
+            Identity {
+                vendor: 2,
+                product: 1154,
+                revision: Some(0x0012_0000)
+            }
+        );
+        let err = BusConfig::from_json_str(
+            r#"{"devices":[{"name":"a","identity":{"vendor":"two","product":1}}]}"#,
+        )
+        .unwrap_err();
+        assert!(err.to_string().contains("`two` is not a number"), "{err}");
+    }
+
+    #[test]
+    fn toml_round_trips() {
+        let bus = BusConfig {
+            devices: vec![
+                crate::ethercat::devices::ek1100("coupler"),
+                crate::ethercat::devices::el1004("inputs").grouped(
+                    PdoDirection::Input,
+                    "digital_inputs",
+                    IecType::Uint,
+                ),
+            ],
+        };
+        let text = bus.to_toml_string();
+        assert_eq!(BusConfig::from_toml_str(&text).unwrap(), bus, "{text}");
+    }
+
+    #[test]
+    fn a_bus_beyond_the_caps_is_refused() {
+        let bus = BusConfig {
+            devices: (0..MAX_SUBDEVICES + 1)
+                .map(|i| crate::ethercat::devices::el2889(&format!("do{i}")))
+                .collect(),
+        };
+        let err = bus.validate().unwrap_err().to_string();
+        assert!(err.contains("more than the 16"), "{err}");
+    }
+}

@@ -1,0 +1,140 @@
+//! Ready descriptions of Beckhoff terminals, the ones the simulated bus (`ethercat-sim`) models.
+//!
+//! Identities are vendor 2 (Beckhoff) and the product codes of the real terminals; the
+//! revision is left open (`None`), since terminals of one product ship in several revisions.
+//! Channel entries are named `input1..inputN` / `output1..outputN` after the terminal's channel
+//! numbers (ESI names them all "Input"/"Output"). [`DeviceConfig::grouped`] merges the channels
+//! of one direction into one word, as seed 000's impact67 `digital_inputs`.
+//!
+//! ```
+//! use plc_io::ethercat::{devices, BusConfig, PdoDirection};
+//! use plc_core::IecType;
+//! let bus = BusConfig {
+//!     devices: vec![
+//!         devices::ek1100("coupler"),
+//!         devices::el1004("di").grouped(PdoDirection::Input, "digital_inputs", IecType::Uint),
+//!         devices::el2889("dout"),
+//!     ],
+//! };
+//! bus.validate().unwrap();
+//! assert_eq!(bus.devices[1].entries[0].bits, 4);
+//! assert_eq!(bus.devices[2].entries[15].name, "output16");
+//! ```
+
+use super::config::{DeviceConfig, Identity, PdoDirection, PdoEntry};
+use plc_core::IecType;
+
+/// Beckhoff's EtherCAT vendor id.
+pub const BECKHOFF: u32 = 0x0000_0002;
+
+/// Product code of the EK1100 coupler.
+pub const EK1100: u32 = 0x044c_2c52;
+/// Product code of the EL1004 (4 digital inputs).
+pub const EL1004: u32 = 0x03ec_3052;
+/// Product code of the EL2004 (4 digital outputs).
+pub const EL2004: u32 = 0x07d4_3052;
+/// Product code of the EL2828 (8 digital outputs).
+pub const EL2828: u32 = 0x0b0c_3052;
+/// Product code of the EL2889 (16 digital outputs).
+pub const EL2889: u32 = 0x0b49_3052;
+
+fn beckhoff(name: &str, product: u32, description: &str, entries: Vec<PdoEntry>) -> DeviceConfig {
+    DeviceConfig {
+        name: name.to_owned(),
+        identity: Identity {
+            vendor: BECKHOFF,
+            product,
+            revision: None,
+        },
+        description: description.to_owned(),
+        entries,
+    }
+}
+
+fn channels(
+    prefix: &str,
+    n: usize,
+    direction: PdoDirection,
+    sm: impl Fn(usize) -> u8,
+) -> Vec<PdoEntry> {
+    (1..=n)
+        .map(|i| PdoEntry {
+            sm: sm(i),
+            ..PdoEntry::bool(&format!("{prefix}{i}"), direction)
+        })
+        .collect()
+}
+
+/// EK1100 EtherCAT coupler: no process data.
+pub fn ek1100(name: &str) -> DeviceConfig {
+    beckhoff(name, EK1100, "EK1100 EtherCAT coupler", Vec::new())
+}
+
+/// EL1004, 4 digital inputs 24 V: entries `input1..input4`, 1-bit `BOOL`, SM0.
+pub fn el1004(name: &str) -> DeviceConfig {
+    beckhoff(
+        name,
+        EL1004,
+        "EL1004 4-channel digital input 24 V",
+        channels("input", 4, PdoDirection::Input, |_| 0),
+    )
+}
+
+/// EL2004, 4 digital outputs 24 V: entries `output1..output4`, 1-bit `BOOL`, SM0.
+pub fn el2004(name: &str) -> DeviceConfig {
+    beckhoff(
+        name,
+        EL2004,
+        "EL2004 4-channel digital output 24 V",
+        channels("output", 4, PdoDirection::Output, |_| 0),
+    )
+}
+
+/// EL2828, 8 digital outputs 24 V 2 A: entries `output1..output8`, 1-bit `BOOL`, SM0.
+pub fn el2828(name: &str) -> DeviceConfig {
+    beckhoff(
+        name,
+        EL2828,
+        "EL2828 8-channel digital output 24 V 2 A",
+        channels("output", 8, PdoDirection::Output, |_| 0),
+    )
+}
+
+/// EL2889, 16 digital outputs 24 V ground switching: entries `output1..output16`, 1-bit
+/// `BOOL`; channels 1-8 in SM0, 9-16 in SM1 (as its SII says).
+pub fn el2889(name: &str) -> DeviceConfig {
+    beckhoff(
+        name,
+        EL2889,
+        "EL2889 16-channel digital output 24 V",
+        channels("output", 16, PdoDirection::Output, |i| u8::from(i > 8)),
+    )
+}
+
+impl DeviceConfig {
+    /// Replaces every entry of `direction` by one entry `name` of type `iec_type` spanning all
+    /// of them (their total bits, the first channel in bit 0), e.g. an EL2889's 16 outputs as
+    /// one `UINT` word `digital_outputs`. The SyncManager is the first entry's; grouping
+    /// entries of several SyncManagers whose sizes are whole bytes (as the EL2889's) keeps the
+    /// layout. Check the result with [`BusConfig::validate`](super::BusConfig::validate): the
+    /// type must be wide enough.
+    pub fn grouped(mut self, direction: PdoDirection, name: &str, iec_type: IecType) -> Self {
+        let bits: u32 = self
+            .entries
+            .iter()
+            .filter(|e| e.direction == direction)
+            .map(|e| e.bits)
+            .sum();
+        let Some(first) = self.entries.iter().position(|e| e.direction == direction) else {
+            return self;
+        };
+        let sm = self.entries[first].sm;
+        let group = PdoEntry {
+            sm,
+            ..PdoEntry::new(name, direction, bits, iec_type)
+        };
+        self.entries.retain(|e| e.direction != direction);
+        self.entries.insert(first.min(self.entries.len()), group);
+        self
+    }
+}

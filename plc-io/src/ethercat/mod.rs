@@ -1,0 +1,67 @@
+//! EtherCAT I/O for a `GlobalMemory` struct, through [ethercrab](https://docs.rs/ethercrab/0.7).
+//!
+//! Three steps, each its own file:
+//!
+//! 1. [`BusConfig`] (`config`): the bus description, a TOML or JSON file listing the SubDevices
+//!    in ring order with the names links use, their expected identity and their PDO entries.
+//!    [`devices`] has ready descriptions of the Beckhoff terminals the simulated bus models.
+//! 2. [`layout`] and [`resolve`]: each entry's bit range in its SubDevice's process data, and
+//!    each `#[plc(link = "ethercat.<device>.<entry>")]` of the struct checked against it
+//!    (existence, direction, seed 001 widening, one writer per output). All problems are
+//!    reported together, before anything is sent to the bus.
+//! 3. [`EtherCatBackend`] (`backend`): an ethercrab MainDevice with one group brought to OP
+//!    after the identities and process data sizes are checked; each `exchange` is one `tx_rx`
+//!    with a working-counter check. The transport is a raw socket on a NIC
+//!    ([`Transport::Interface`]) or anything that drives ethercrab's `PduTx`/`PduRx`, such as
+//!    the in-process simulated bus of `ethercat-sim` ([`Transport::custom`]).
+//!
+//! ```
+//! use plc_io::ethercat::{devices, layout::BusLayout, resolve, BusConfig, PdoDirection};
+//! use plc_core::IecType;
+//!
+//! let bus = BusConfig {
+//!     devices: vec![
+//!         devices::ek1100("coupler"),
+//!         devices::el1004("impact67_0").grouped(PdoDirection::Input, "digital_inputs", IecType::Uint),
+//!     ],
+//! };
+//! bus.validate()?;
+//! let layout = BusLayout::new(&bus);
+//! let entry = layout.entry("impact67_0", "digital_inputs").unwrap();
+//! assert_eq!((entry.bit_offset, entry.bits, entry.iec_type), (0, 4, IecType::Uint));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Multi-bit entries over 1-bit channels: an entry of N bits covers the next N bits of the
+//! process data, so grouping four consecutive 1-bit channels into one 4-bit `UINT` entry gives
+//! a word whose bit 0 is the first channel. Declare the word in the struct (e.g. `u16`) and map
+//! bools onto its bits with `source`/`bit`, as seed 000 does for an impact67 module.
+#![deny(missing_docs)]
+
+mod backend;
+pub mod config;
+pub mod devices;
+pub mod layout;
+pub mod resolve;
+
+pub use backend::{
+    BusState, BusStatus, DriverFn, DriverGuard, EtherCatBackend, EtherCatError, InputsOnFault,
+    Options, Transport,
+};
+pub use config::{BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry};
+pub use layout::{BusLayout, LayoutError};
+pub use resolve::{Binding, ResolveError};
+
+/// Most SubDevices on one bus (ethercrab's const-generic `MAX_SUBDEVICES`). A larger
+/// description is refused with a clear error.
+pub const MAX_SUBDEVICES: usize = 16;
+
+/// Most bytes of process data, inputs and outputs together (ethercrab's const-generic
+/// `MAX_PDI`). A larger description is refused with a clear error.
+pub const MAX_PDI: usize = 1024;
+
+/// Frames ethercrab may have in flight.
+const MAX_FRAMES: usize = 16;
+
+/// Bytes of one frame's PDU data (a standard Ethernet frame holds 1500).
+const MAX_PDU_DATA: usize = ethercrab::PduStorage::element_size(1100);

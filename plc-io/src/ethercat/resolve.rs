@@ -1,0 +1,375 @@
+//! Link resolution: every `link = "ethercat.<device>.<entry>"` of a `GlobalMemory` type turned
+//! into a place in a SubDevice's process data, with every problem reported at once.
+//!
+//! Rules:
+//! - the device and the entry must exist in the bus description;
+//! - directions: an input entry feeds a variable declared `direction = "input"`, an output
+//!   entry is fed by one declared `direction = "output"`; a linked variable left `internal`
+//!   (the default, e.g. from a seed 000 JSON list, which has no directions) takes the entry's
+//!   direction. `command` and `status` variables cannot be linked.
+//! - types: an input widens from the entry's type to the variable's, an output from the
+//!   variable's type to the entry's, as [`plc_core::convert::can_widen`] allows (seed 001);
+//! - one variable per output entry (two writers would fight); any number per input entry;
+//! - only scalar variables, not strings or arrays.
+
+use super::config::PdoDirection;
+use super::layout::{BusLayout, EntryLayout};
+use plc_core::convert::can_widen;
+use plc_core::{Direction, GlobalMemory, IecType, VarInfo};
+use plc_rules::link::Link;
+use std::fmt;
+
+/// One resolved link: a variable and the process data it moves to or from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Binding {
+    /// Index of the variable in `VARIABLES`.
+    pub var: usize,
+    /// The variable's name.
+    pub var_name: &'static str,
+    /// The variable's IEC type.
+    pub var_type: IecType,
+    /// The link text.
+    pub link: &'static str,
+    /// Where the entry sits.
+    pub entry: EntryLayout,
+}
+
+/// One problem with one variable's link.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LinkProblem {
+    /// The variable.
+    pub variable: &'static str,
+    /// Its link.
+    pub link: &'static str,
+    /// What is wrong and what to do.
+    pub message: String,
+}
+
+/// The links of a `GlobalMemory` type do not fit the bus description: every problem.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ResolveError {
+    /// One per problem, in declaration order.
+    pub problems: Vec<LinkProblem>,
+}
+
+impl fmt::Display for ResolveError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} link problem{} (nothing was sent to the bus):",
+            self.problems.len(),
+            if self.problems.len() == 1 { "" } else { "s" }
+        )?;
+        for p in &self.problems {
+            write!(
+                f,
+                "\n  - `{}` (link `{}`): {}",
+                p.variable, p.link, p.message
+            )?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for ResolveError {}
+
+/// Resolves the links of `T` against a bus layout.
+pub fn resolve<T: GlobalMemory>(layout: &BusLayout) -> Result<Vec<Binding>, ResolveError> {
+    resolve_vars(T::VARIABLES, layout)
+}
+
+/// Resolves the links of a variable list (what [`resolve`] does for `T::VARIABLES`).
+pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>, ResolveError> {
+    let mut bindings: Vec<Binding> = Vec::new();
+    let mut problems = Vec::new();
+    for (index, v) in vars.iter().enumerate() {
+        let Some(link) = v.link else { continue };
+        let mut problem = |message: String| {
+            problems.push(LinkProblem {
+                variable: v.name,
+                link,
+                message,
+            })
+        };
+        let parsed = match Link::parse(link) {
+            Ok(l) => l,
+            Err(e) => {
+                problem(e.to_string());
+                continue;
+            }
+        };
+        let Some(pos) = layout.names.iter().position(|n| n == parsed.device) else {
+            problem(format!(
+                "the bus has no device `{}`: use one of {} or add the device to the bus \
+                 description",
+                parsed.device,
+                list(layout.names.iter().map(String::as_str))
+            ));
+            continue;
+        };
+        let Some(entry) = layout.entry(parsed.device, parsed.entry) else {
+            let names: Vec<&str> = layout
+                .entries
+                .iter()
+                .filter(|e| e.device == pos)
+                .map(|e| e.name.as_str())
+                .collect();
+            problem(if names.is_empty() {
+                format!(
+                    "device `{}` has no process data (a coupler?): link an entry of an I/O \
+                     terminal",
+                    parsed.device
+                )
+            } else {
+                format!(
+                    "device `{}` has no entry `{}`: use one of {}",
+                    parsed.device,
+                    parsed.entry,
+                    list(names.iter().copied())
+                )
+            });
+            continue;
+        };
+        if !v.dims.is_empty() || v.iec_type == IecType::String {
+            problem(format!(
+                "only scalar numbers and bools can be linked, this is a {}{}: link a scalar \
+                 variable",
+                v.iec_type,
+                if v.dims.is_empty() { "" } else { " array" }
+            ));
+            continue;
+        }
+        let mut ok = true;
+        let dir_ok = matches!(
+            (entry.direction, v.direction),
+            (PdoDirection::Input, Direction::Input | Direction::Internal)
+                | (
+                    PdoDirection::Output,
+                    Direction::Output | Direction::Internal
+                )
+        );
+        if !dir_ok {
+            ok = false;
+            problem(format!(
+                "`{}` is an {} entry, but the variable is declared `direction = \"{}\"`: \
+                 declare `direction = \"{}\"` or link an {} entry",
+                parsed.entry,
+                entry.direction,
+                v.direction,
+                entry.direction,
+                if entry.direction == PdoDirection::Input {
+                    "output"
+                } else {
+                    "input"
+                }
+            ));
+        }
+        let (from, to) = match entry.direction {
+            PdoDirection::Input => (entry.iec_type, v.iec_type),
+            PdoDirection::Output => (v.iec_type, entry.iec_type),
+        };
+        if !can_widen(from, to) {
+            ok = false;
+            let suggestion = match entry.iec_type {
+                IecType::Bool => "declare it `bool`".to_owned(),
+                t => format!(
+                    "declare it `{}` (or a type it widens {} implicitly)",
+                    t.rust_name(),
+                    if entry.direction == PdoDirection::Input {
+                        "to"
+                    } else {
+                        "from"
+                    }
+                ),
+            };
+            problem(format!(
+                "the variable is {} and the {} entry is {} ({} bit{}); {} does not widen \
+                 implicitly to {} (IEC 61131-3, seed 001): {suggestion}",
+                v.iec_type,
+                entry.direction,
+                entry.iec_type,
+                entry.bits,
+                if entry.bits == 1 { "" } else { "s" },
+                from,
+                to
+            ));
+        }
+        if entry.direction == PdoDirection::Output
+            && let Some(other) = bindings
+                .iter()
+                .find(|b| b.entry.device == entry.device && b.entry.entry == entry.entry)
+        {
+            ok = false;
+            problem(format!(
+                "`{}` is written to this output entry already: an output has one writer; \
+                 link one variable and copy or bit-map the others from it in the program",
+                other.var_name
+            ));
+        }
+        if ok {
+            bindings.push(Binding {
+                var: index,
+                var_name: v.name,
+                var_type: v.iec_type,
+                link,
+                entry: entry.clone(),
+            });
+        }
+    }
+    if problems.is_empty() {
+        Ok(bindings)
+    } else {
+        Err(ResolveError { problems })
+    }
+}
+
+fn list<'a>(names: impl Iterator<Item = &'a str>) -> String {
+    let names: Vec<String> = names.map(|n| format!("`{n}`")).collect();
+    if names.is_empty() {
+        "(none)".into()
+    } else {
+        names.join(", ")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ethercat::{BusConfig, devices};
+    use plc_core::__private::{VarInfoParts, var_info};
+    use plc_core::Access;
+
+    fn var(name: &'static str, ty: IecType, dir: Direction, link: &'static str) -> VarInfo {
+        var_info(VarInfoParts {
+            name,
+            iec_type: ty,
+            rust_type: ty.rust_name(),
+            offset: 0,
+            size: ty.image_size().max(1),
+            dims: &[],
+            bit: None,
+            link: Some(link),
+            address: None,
+            description: "",
+            initial: None,
+            nonvolatile: false,
+            access: Access::ReadWrite,
+            direction: dir,
+        })
+    }
+
+    fn layout() -> BusLayout {
+        BusLayout::new(&BusConfig {
+            devices: vec![
+                devices::ek1100("coupler"),
+                devices::el1004("di"),
+                devices::el2889("dq").grouped(PdoDirection::Output, "word", IecType::Uint),
+            ],
+        })
+    }
+
+    #[test]
+    fn good_links_resolve_and_inputs_may_be_shared() {
+        let vars = [
+            var("a", IecType::Bool, Direction::Input, "ethercat.di.input2"),
+            var(
+                "b",
+                IecType::Bool,
+                Direction::Internal,
+                "ethercat.di.input2",
+            ),
+            var("w", IecType::Udint, Direction::Output, "ethercat.dq.word"),
+        ];
+        // UDINT does not widen to UINT: the output word must be u16 or narrower.
+        assert!(resolve_vars(&vars, &layout()).is_err());
+        let vars = [
+            var("a", IecType::Bool, Direction::Input, "ethercat.di.input2"),
+            var(
+                "b",
+                IecType::Bool,
+                Direction::Internal,
+                "ethercat.di.input2",
+            ),
+            var("w", IecType::Usint, Direction::Output, "ethercat.dq.word"),
+        ];
+        let b = resolve_vars(&vars, &layout()).unwrap();
+        assert_eq!(b.len(), 3);
+        assert_eq!(b[0].entry.bit_offset, 1);
+        assert_eq!(b[2].entry.bits, 16);
+    }
+
+    #[test]
+    fn every_problem_is_listed_with_the_variable_and_what_to_do() {
+        let vars = [
+            var(
+                "no_dev",
+                IecType::Bool,
+                Direction::Input,
+                "ethercat.nope.input1",
+            ),
+            var(
+                "no_entry",
+                IecType::Bool,
+                Direction::Input,
+                "ethercat.di.input9",
+            ),
+            var(
+                "coupler_io",
+                IecType::Bool,
+                Direction::Input,
+                "ethercat.coupler.x",
+            ),
+            var(
+                "wrong_dir",
+                IecType::Bool,
+                Direction::Output,
+                "ethercat.di.input1",
+            ),
+            var(
+                "wrong_type",
+                IecType::Usint,
+                Direction::Input,
+                "ethercat.di.input1",
+            ),
+            var(
+                "narrow",
+                IecType::Dint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+            var(
+                "first",
+                IecType::Uint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+            var(
+                "second",
+                IecType::Uint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+            var(
+                "cmd",
+                IecType::Bool,
+                Direction::Command,
+                "ethercat.di.input1",
+            ),
+        ];
+        let err = resolve_vars(&vars, &layout()).unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), 8, "{text}");
+        for needle in [
+            "`no_dev` (link `ethercat.nope.input1`): the bus has no device `nope`: use one of `coupler`, `di`, `dq`",
+            "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9`: use one of `input1`, `input2`, `input3`, `input4`",
+            "`coupler_io` (link `ethercat.coupler.x`): device `coupler` has no process data",
+            "`wrong_dir` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"output\"`",
+            "`wrong_type` (link `ethercat.di.input1`): the variable is USINT and the input entry is BOOL (1 bit); BOOL does not widen implicitly to USINT",
+            "`narrow` (link `ethercat.dq.word`): the variable is DINT and the output entry is UINT (16 bits); DINT does not widen implicitly to UINT",
+            "`second` (link `ethercat.dq.word`): `first` is written to this output entry already",
+            "`cmd` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"command\"`",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+}
