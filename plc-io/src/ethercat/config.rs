@@ -60,7 +60,12 @@ pub struct BusConfig {
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DeviceConfig {
-    /// The name links use: `ethercat.<name>.<entry>` (an identifier, unique on the bus).
+    /// The name links use: `ethercat.<name>.<entry>` (an identifier).
+    ///
+    /// Consecutive SubDevices may share a name: they then form one module whose entries are
+    /// the union of theirs (entry names unique across them). This is how an I/O block that is
+    /// one device in the wiring diagram but several SubDevices on the ring (or a stand-in made
+    /// of an input and an output terminal) keeps one name in the links.
     pub name: String,
     /// What the SubDevice at this position must report before the bus goes to OP.
     pub identity: Identity,
@@ -257,12 +262,16 @@ impl BusConfig {
         toml::to_string_pretty(self).unwrap_or_default()
     }
 
-    /// The device named `name`, with its ring position.
-    pub fn device(&self, name: &str) -> Option<(usize, &DeviceConfig)> {
+    /// The devices named `name` (one, or the consecutive parts of a module), with their ring
+    /// positions.
+    pub fn devices_named<'a>(
+        &'a self,
+        name: &'a str,
+    ) -> impl Iterator<Item = (usize, &'a DeviceConfig)> + 'a {
         self.devices
             .iter()
             .enumerate()
-            .find(|(_, d)| d.name == name)
+            .filter(move |(_, d)| d.name == name)
     }
 
     /// Checks the description; every problem at once. The parsers call it; call it yourself for
@@ -290,18 +299,29 @@ impl BusConfig {
                     d.name
                 ));
             }
-            if let Some(first) = self.devices[..pos]
+            // A name given to consecutive SubDevices makes them one module (see `DeviceConfig::name`).
+            let module_start = self.devices[..pos]
+                .iter()
+                .rposition(|o| !o.name.eq_ignore_ascii_case(&d.name))
+                .map_or(0, |p| p + 1);
+            if let Some(first) = self.devices[..module_start]
                 .iter()
                 .position(|o| o.name.eq_ignore_ascii_case(&d.name))
             {
                 problems.push(format!(
-                    "device {pos}: name `{}` is already used by device {first}: give each \
-                     device its own name",
+                    "device {pos}: name `{}` is already used by device {first}, and the devices                      between them have other names: give each device its own name (only                      consecutive devices may share a name, as parts of one module)",
                     d.name
                 ));
             }
             for (i, e) in d.entries.iter().enumerate() {
-                check_entry(pos, d, i, e, &mut problems);
+                check_entry(
+                    pos,
+                    &self.devices[module_start..pos],
+                    d,
+                    i,
+                    e,
+                    &mut problems,
+                );
             }
         }
         let pdi: usize = self
@@ -329,7 +349,14 @@ impl BusConfig {
     }
 }
 
-fn check_entry(pos: usize, d: &DeviceConfig, i: usize, e: &PdoEntry, problems: &mut Vec<String>) {
+fn check_entry(
+    pos: usize,
+    module_before: &[DeviceConfig],
+    d: &DeviceConfig,
+    i: usize,
+    e: &PdoEntry,
+    problems: &mut Vec<String>,
+) {
     let at = format!("device {pos} (`{}`), entry `{}`", d.name, e.name);
     if !plc_rules::link::is_identifier(&e.name) {
         problems.push(format!(
@@ -337,13 +364,16 @@ fn check_entry(pos: usize, d: &DeviceConfig, i: usize, e: &PdoEntry, problems: &
              with a digit): rename it, e.g. `output1`"
         ));
     }
-    if d.entries[..i]
+    if module_before
         .iter()
+        .flat_map(|o| &o.entries)
+        .chain(&d.entries[..i])
         .any(|o| o.name.eq_ignore_ascii_case(&e.name))
     {
         problems.push(format!(
             "{at}: the name is used twice in this device: ESI files repeat names such as \
-             \"Output\"; give each entry its own, e.g. `output1`, `output2`"
+             \"Output\"; give each entry its own, e.g. `output1`, `output2` (devices sharing \
+             a name share one set of entry names)"
         ));
     }
     let Some(ty) = e.iec() else {
@@ -462,11 +492,14 @@ mod tests {
             [[devices]]
             name = "OK"
             identity = { vendor = 2, product = 1 }
+            [[devices]]
+            name = "1bad"
+            identity = { vendor = 2, product = 1 }
             "#,
         )
         .unwrap_err();
         let text = err.to_string();
-        assert_eq!(err.problems.len(), 7, "{text}");
+        assert_eq!(err.problems.len(), 8, "{text}");
         for needle in [
             "`1bad` is not an identifier",
             "2 bits do not fit type BOOL",
@@ -474,7 +507,7 @@ mod tests {
             "STRING is not a process data type",
             "a INT entry has exactly 16 bits",
             "`QWORD` is not an IEC type",
-            "already used by device 1",
+            "already used by device 0",
         ] {
             assert!(text.contains(needle), "missing {needle:?} in {text}");
         }

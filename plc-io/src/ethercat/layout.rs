@@ -123,12 +123,12 @@ impl BusLayout {
         }
     }
 
-    /// The entry `entry` of the device `device`, by the names links use.
+    /// The entry `entry` of the device (or module of consecutive devices) `device`, by the
+    /// names links use.
     pub fn entry(&self, device: &str, entry: &str) -> Option<&EntryLayout> {
-        let pos = self.names.iter().position(|n| n == device)?;
         self.entries
             .iter()
-            .find(|e| e.device == pos && e.name == entry)
+            .find(|e| self.names[e.device] == device && e.name == entry)
     }
 
     /// Checks the computed slice sizes against the ones ethercrab reports after reaching

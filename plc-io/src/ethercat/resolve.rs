@@ -98,20 +98,20 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
                 continue;
             }
         };
-        let Some(pos) = layout.names.iter().position(|n| n == parsed.device) else {
+        if !layout.names.iter().any(|n| n == parsed.device) {
             problem(format!(
                 "the bus has no device `{}`: use one of {} or add the device to the bus \
                  description",
                 parsed.device,
-                list(layout.names.iter().map(String::as_str))
+                list(unique(&layout.names))
             ));
             continue;
-        };
+        }
         let Some(entry) = layout.entry(parsed.device, parsed.entry) else {
             let names: Vec<&str> = layout
                 .entries
                 .iter()
-                .filter(|e| e.device == pos)
+                .filter(|e| layout.names[e.device] == parsed.device)
                 .map(|e| e.name.as_str())
                 .collect();
             problem(if names.is_empty() {
@@ -221,6 +221,14 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
     } else {
         Err(ResolveError { problems })
     }
+}
+
+fn unique(names: &[String]) -> impl Iterator<Item = &str> {
+    names
+        .iter()
+        .enumerate()
+        .filter(|(i, n)| *i == 0 || names[i - 1] != **n)
+        .map(|(_, n)| n.as_str())
 }
 
 fn list<'a>(names: impl Iterator<Item = &'a str>) -> String {
@@ -371,5 +379,41 @@ mod tests {
         ] {
             assert!(text.contains(needle), "missing {needle:?} in\n{text}");
         }
+    }
+
+    #[test]
+    fn consecutive_devices_sharing_a_name_form_one_module() {
+        let bus = BusConfig {
+            devices: vec![
+                devices::ek1100("coupler"),
+                devices::el1004("impact67_0").grouped(
+                    PdoDirection::Input,
+                    "digital_inputs",
+                    IecType::Uint,
+                ),
+                devices::el2889("impact67_0").grouped(
+                    PdoDirection::Output,
+                    "digital_outputs",
+                    IecType::Uint,
+                ),
+            ],
+        };
+        bus.validate().unwrap();
+        let vars = [
+            var(
+                "i",
+                IecType::Uint,
+                Direction::Input,
+                "ethercat.impact67_0.digital_inputs",
+            ),
+            var(
+                "o",
+                IecType::Uint,
+                Direction::Output,
+                "ethercat.impact67_0.digital_outputs",
+            ),
+        ];
+        let b = resolve_vars(&vars, &BusLayout::new(&bus)).unwrap();
+        assert_eq!((b[0].entry.device, b[1].entry.device), (1, 2));
     }
 }
