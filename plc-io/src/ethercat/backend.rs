@@ -11,7 +11,9 @@ use ethercrab::{
     DefaultLock, MainDevice, MainDeviceConfig, PduRx, PduStorage, PduTx, SubDeviceGroup,
     SubDeviceState, Timeouts,
 };
-use futures_lite::future::block_on;
+// async-io's block_on drives the timer reactor ethercrab's timeouts use on this thread, instead
+// of waking the fallback "async-io" thread every cycle.
+use async_io::block_on;
 use plc_core::{GlobalMemory, IecType, TypeFamily, Value};
 use std::fmt;
 use std::marker::PhantomData;
