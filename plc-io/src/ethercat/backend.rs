@@ -278,6 +278,9 @@ impl Running {
 /// answers correctly again. `fault` zeroes the outputs and drops to SAFE-OP (a panicking
 /// program); `stop` zeroes the outputs and returns to INIT.
 ///
+/// The methods are those of DESIGN.md's `IoBackend<T>` (`start`, `exchange`, `stop`, plus
+/// `fault` for the panic path); the trait impl joins them when `plc_io::Runtime` lands.
+///
 /// Each started backend leaks ethercrab's frame storage (about 20 KiB): ethercrab needs it
 /// `'static`, and a stopped bus may still see late frames.
 pub struct EtherCatBackend<T> {
