@@ -69,9 +69,67 @@ pub fn with_bit<S: BitSource>(source: S, bit: u32, value: bool) -> S {
     source.with_bit(bit, value)
 }
 
-/// Compile-time facts about a field type, for the derive's spanned `const` assertions.
+/// Sets every element of a field to its declared initial value (the derive's `Default`; the
+/// value was checked at compile time, so an error cannot happen here).
+pub fn set_initial<T: PlcType>(field: &mut T, ty: IecType, value: Value) {
+    for element in 0..T::ELEMENTS {
+        let _ = field.set_element(element, value, ty);
+    }
+}
+
+// Compile-time facts about a field type, for the derive's spanned `const` assertions on types
+// only the compiler knows (aliases).
+
+/// Whether a source field type is an integer scalar.
 pub const fn is_integer<T: PlcType>() -> bool {
     T::IEC_TYPE.is_integer() && T::RANK == 0
+}
+
+/// Whether a field type is a scalar `bool`.
+pub const fn is_bool<T: PlcType>() -> bool {
+    matches!(T::IEC_TYPE, IecType::Bool) && T::RANK == 0
+}
+
+/// Whether a field type has at most 3 dimensions and 65,535 items, and a string capacity of
+/// 1..=255 (seed 003).
+pub const fn shape_fits<T: PlcType>() -> bool {
+    let string_ok = !matches!(T::IEC_TYPE, IecType::String)
+        || plc_rules::capacity::is_valid_string_capacity(T::STRING_CAPACITY);
+    T::RANK <= plc_rules::capacity::MAX_ARRAY_DIMS
+        && T::ELEMENTS <= plc_rules::capacity::MAX_ARRAY_ITEMS
+        && string_ok
+}
+
+/// Whether a field type fits a located address of `bits` bits (1 = X, a bool).
+pub const fn located_fits<T: PlcType>(bits: u32) -> bool {
+    T::RANK == 0 && !matches!(T::IEC_TYPE, IecType::String) && T::IEC_TYPE.bits() == bits
+}
+
+/// Whether `initial = true/false` fits.
+pub const fn initial_bool_fits<T: PlcType>() -> bool {
+    matches!(T::IEC_TYPE, IecType::Bool)
+}
+
+/// Whether an integer `initial` fits (integers by range; reals take bare integers, seed 001).
+pub const fn initial_int_fits<T: PlcType>(v: i128) -> bool {
+    match T::IEC_TYPE.int_range() {
+        Some((lo, hi)) => v >= lo && v <= hi,
+        None => T::IEC_TYPE.is_real(),
+    }
+}
+
+/// Whether a real `initial` fits.
+pub const fn initial_real_fits<T: PlcType>(v: f64) -> bool {
+    match T::IEC_TYPE {
+        IecType::Real => !v.is_finite() || (v <= f32::MAX as f64 && v >= -(f32::MAX as f64)),
+        IecType::Lreal => true,
+        _ => false,
+    }
+}
+
+/// Whether a string `initial` of `len` bytes fits.
+pub const fn initial_str_fits<T: PlcType>(len: usize) -> bool {
+    matches!(T::IEC_TYPE, IecType::String) && len <= T::STRING_CAPACITY
 }
 
 /// The width of a scalar field type in bits (0 for strings and arrays).
@@ -89,11 +147,25 @@ pub const fn storage_matches<T: PlcType>(declared: IecType) -> bool {
     declared.same_storage(T::IEC_TYPE)
 }
 
-/// Reads a located variable (`at = "%I.."`) from a process image.
+/// Reads a located variable (`at = "%I.."`) with the declaration's byte order and alignment.
 #[inline]
 pub fn read_located<T: ProcessValue, B: AsRef<[u8]>>(
     image: &crate::ProcessImage<B>,
     address: &crate::IecAddress,
+    order: crate::ByteOrder,
+    unaligned: bool,
 ) -> Result<T, crate::ProcessImageError> {
-    image.read(address)
+    image.read_with(address, order, unaligned)
+}
+
+/// Writes a located variable (`at = "%Q.."`) with the declaration's byte order and alignment.
+#[inline]
+pub fn write_located<T: ProcessValue, B: AsRef<[u8]> + AsMut<[u8]>>(
+    image: &mut crate::ProcessImage<B>,
+    address: &crate::IecAddress,
+    value: T,
+    order: crate::ByteOrder,
+    unaligned: bool,
+) -> Result<(), crate::ProcessImageError> {
+    image.write_with(address, value, order, unaligned)
 }

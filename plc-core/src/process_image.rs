@@ -214,14 +214,18 @@ impl<B: AsRef<[u8]>> ProcessImage<B> {
     }
 
     #[inline(always)]
-    fn check<T: ProcessValue>(&self, address: &IecAddress) -> Result<(), ProcessImageError> {
+    fn check<T: ProcessValue>(
+        &self,
+        address: &IecAddress,
+        unaligned: bool,
+    ) -> Result<(), ProcessImageError> {
         if address.size != T::SIZE {
             return Err(ProcessImageError::SizeMismatch {
                 address: *address,
                 expected: T::SIZE,
             });
         }
-        if !self.unaligned && !address.is_aligned() {
+        if !unaligned && !address.is_aligned() {
             return Err(ProcessImageError::Misaligned { address: *address });
         }
         let len = self.buf.as_ref().len();
@@ -237,9 +241,21 @@ impl<B: AsRef<[u8]>> ProcessImage<B> {
     /// Reads the item at `address` as a `T` whose width matches the address size.
     #[inline]
     pub fn read<T: ProcessValue>(&self, address: &IecAddress) -> Result<T, ProcessImageError> {
-        self.check::<T>(address)?;
+        self.read_with(address, self.order, self.unaligned)
+    }
+
+    /// Reads with a given byte order and alignment rule instead of the image's own (the
+    /// derive's located variables carry them in their declaration).
+    #[inline]
+    pub fn read_with<T: ProcessValue>(
+        &self,
+        address: &IecAddress,
+        order: ByteOrder,
+        unaligned: bool,
+    ) -> Result<T, ProcessImageError> {
+        self.check::<T>(address, unaligned)?;
         let bytes = &self.buf.as_ref()[address.byte as usize..];
-        Ok(T::decode(bytes, address.bit.unwrap_or(0), self.order))
+        Ok(T::decode(bytes, address.bit.unwrap_or(0), order))
     }
 
     /// Parses `address` and reads it.
@@ -261,8 +277,19 @@ impl<B: AsRef<[u8]> + AsMut<[u8]>> ProcessImage<B> {
         address: &IecAddress,
         value: T,
     ) -> Result<(), ProcessImageError> {
-        self.check::<T>(address)?;
-        let order = self.order;
+        self.write_with(address, value, self.order, self.unaligned)
+    }
+
+    /// Writes with a given byte order and alignment rule instead of the image's own.
+    #[inline]
+    pub fn write_with<T: ProcessValue>(
+        &mut self,
+        address: &IecAddress,
+        value: T,
+        order: ByteOrder,
+        unaligned: bool,
+    ) -> Result<(), ProcessImageError> {
+        self.check::<T>(address, unaligned)?;
         let bytes = &mut self.buf.as_mut()[address.byte as usize..];
         value.encode(bytes, address.bit.unwrap_or(0), order);
         Ok(())

@@ -1,8 +1,25 @@
-//! `#[derive(GlobalMemory)]`: placeholder until the derive lands.
+//! `#[derive(GlobalMemory)]` for plc-vars: turns a struct of PLC variables into a fixed
+//! shared-memory layout with bit packing, metadata and compile-time checked declarations.
+//!
+//! Use it through `plc_core`, which re-exports it; see `plc_core::GlobalMemory` and the crate
+//! README for the `#[plc(...)]` attribute reference.
+#![deny(missing_docs)]
+
+mod ast;
+mod attr;
+mod check;
+mod ctxt;
+mod expand;
+mod initial;
+mod types;
+
 use proc_macro::TokenStream;
 
-/// Derives `plc_core::GlobalMemory`.
+/// Implements `plc_core::GlobalMemory` (and `Default`, from the `initial` values) for a struct
+/// with named fields. Every mistake in the `#[plc(...)]` attributes is a compile error under the
+/// offending token, all of a struct's mistakes at once.
 #[proc_macro_derive(GlobalMemory, attributes(plc))]
-pub fn derive_global_memory(_input: TokenStream) -> TokenStream {
-    TokenStream::new()
+pub fn derive_global_memory(input: TokenStream) -> TokenStream {
+    let input = syn::parse_macro_input!(input as syn::DeriveInput);
+    expand::derive(&input).into()
 }

@@ -1,0 +1,64 @@
+//! `try_get` / `set` by variable index: what tools and the mailbox use. `set` keeps a
+//! bit-mapped bool and its source word consistent in both directions.
+
+use super::{mapped_onto, private};
+use crate::ast::Container;
+use proc_macro2::TokenStream;
+use quote::quote;
+
+pub fn expand(c: &Container) -> TokenStream {
+    let p = private(c);
+    let krate = &c.krate;
+    let gets = c.vars.iter().enumerate().map(|(i, v)| {
+        let (ident, ty) = (v.ident, v.ty);
+        quote!(#i => <#ty as #p::PlcType>::get_element(&self.#ident, element),)
+    });
+    let sets = c.vars.iter().enumerate().map(|(i, v)| {
+        let (ident, name) = (v.ident, &v.symbol.value);
+        // After the value changed: a bool updates its bit, a source word its bools.
+        let to_source = v.mapped_to.map(|(s, bit)| {
+            let src = c.vars[s].ident;
+            let bit = bit as u32;
+            quote!(self.#src = #p::with_bit(self.#src, #bit, self.#ident);)
+        });
+        let to_bools = mapped_onto(c, i).map(|(b, bit)| {
+            let b = b.ident;
+            let bit = bit as u32;
+            quote!(self.#b = #p::get_bit(self.#ident, #bit);)
+        });
+        quote! {
+            #i => {
+                #p::set_field(
+                    &mut self.#ident,
+                    #name,
+                    <Self as #krate::GlobalMemory>::VARIABLES[#i].iec_type,
+                    element,
+                    value,
+                )?;
+                #to_source
+                #(#to_bools)*
+                ::core::result::Result::Ok(())
+            }
+        }
+    });
+    quote! {
+        fn try_get(&self, index: usize, element: usize) -> ::core::option::Option<#krate::Value> {
+            match index {
+                #(#gets)*
+                _ => ::core::option::Option::None,
+            }
+        }
+
+        fn set(
+            &mut self,
+            index: usize,
+            element: usize,
+            value: #krate::Value,
+        ) -> ::core::result::Result<(), #krate::SetError> {
+            match index {
+                #(#sets)*
+                _ => ::core::result::Result::Err(#krate::SetError::UnknownIndex { index }),
+            }
+        }
+    }
+}

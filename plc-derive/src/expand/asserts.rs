@@ -1,0 +1,99 @@
+//! Checks that need the real type of a field, for types the tokens do not show (aliases such
+//! as `type Word = u16;`). Each is its own spanned `const` assertion so every one fires, with a
+//! message computed here (a const panic cannot format values).
+
+use super::private;
+use crate::ast::{Container, Var};
+use crate::types::SynType;
+use plc_rules::address::Size;
+use proc_macro2::{Span, TokenStream};
+use quote::quote_spanned;
+
+fn assert(span: Span, cond: TokenStream, message: String) -> TokenStream {
+    quote_spanned!(span=> const _: () = ::core::assert!(#cond, #message);)
+}
+
+pub fn expand(c: &Container) -> TokenStream {
+    let p = private(c);
+    let mut out = TokenStream::new();
+    for v in &c.vars {
+        let ty = v.ty;
+        let name = v.field_name();
+        if v.syn_type == SynType::Unknown {
+            out.extend(assert(
+                v.ty_span(),
+                quote_spanned!(v.ty_span()=> #p::shape_fits::<#ty>()),
+                format!(
+                    "the type of `{name}` must have at most 3 dimensions and 65535 items, and \
+                     strings a capacity of 1..=255 bytes (seed 003)"
+                ),
+            ));
+            unknown_type_checks(c, v, &mut out);
+        }
+        // The bit must be within the source's width; only the compiler knows an alias's width.
+        if let (Some((s, bit)), Some(b)) = (v.mapped_to, &v.bit) {
+            let src = &c.vars[s];
+            if src.syn_type == SynType::Unknown {
+                let sty = src.ty;
+                out.extend(assert(
+                    b.span,
+                    quote_spanned!(b.span=> (#bit as u32) < #p::scalar_bits::<#sty>()),
+                    format!(
+                        "bit {bit} is out of range for the type of `{}`",
+                        src.field_name()
+                    ),
+                ));
+            }
+        }
+    }
+    out
+}
+
+fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
+    let p = private(c);
+    let ty = v.ty;
+    let name = v.field_name();
+    if v.mapped_to.is_some() {
+        out.extend(assert(
+            v.ty_span(),
+            quote_spanned!(v.ty_span()=> #p::is_bool::<#ty>()),
+            format!("`{name}` is mapped to a bit, so its type must be bool (seed 000)"),
+        ));
+    }
+    if let Some(at) = &v.at {
+        let bits = at.value.size.bits();
+        let what = match at.value.size {
+            Size::Bit => "a bit: the type of `{name}` must be bool".replace("{name}", &name),
+            _ => format!("{bits} bits wide: the type of `{name}` must have {bits} bits"),
+        };
+        out.extend(assert(
+            at.span,
+            quote_spanned!(at.span=> #p::located_fits::<#ty>(#bits)),
+            format!("`{}` is {what}", v.at_text.as_deref().unwrap_or_default()),
+        ));
+    }
+    if let Some(t) = &v.iec_type {
+        let iec = super::metadata::iec_variant(c, t.value);
+        out.extend(assert(
+            t.span,
+            quote_spanned!(t.span=> #p::storage_matches::<#ty>(#iec)),
+            format!(
+                "`iec_type = \"{}\"` does not fit the type of `{name}`: {} needs {}",
+                t.value,
+                t.value,
+                t.value.rust_name()
+            ),
+        ));
+    }
+    if let Some(init) = &v.initial {
+        out.extend(assert(
+            init.span,
+            init.fits_tokens(&c.krate, ty),
+            format!(
+                "initial value {} does not fit the type of `{name}` (wrong kind, out of range, or \
+                 too long)",
+                init.json()
+            ),
+        ));
+    }
+}

@@ -1,0 +1,63 @@
+//! The image struct and the conversions between it and the user's struct.
+
+use super::{image_ident, private};
+use crate::ast::Container;
+use proc_macro2::TokenStream;
+use quote::quote;
+
+/// `#[repr(C)]`, alignment 1 (every field's `Repr` is `Unaligned`), so no padding and the
+/// same offsets in every process that compiles the same declaration.
+pub fn image_struct(c: &Container) -> TokenStream {
+    let p = private(c);
+    let image = image_ident();
+    let zerocopy_path = format!("{}::zerocopy", p.to_string().replace(' ', ""));
+    let fields = c.vars.iter().map(|v| {
+        let (ident, ty) = (v.ident, v.ty);
+        quote!(pub #ident: <#ty as #p::PlcType>::Repr)
+    });
+    quote! {
+        #[repr(C)]
+        #[derive(
+            ::core::clone::Clone,
+            ::core::marker::Copy,
+            #p::zerocopy::FromBytes,
+            #p::zerocopy::IntoBytes,
+            #p::zerocopy::KnownLayout,
+            #p::zerocopy::Immutable,
+            #p::zerocopy::Unaligned
+        )]
+        #[zerocopy(crate = #zerocopy_path)]
+        #[doc(hidden)]
+        pub struct #image {
+            #(#fields,)*
+        }
+    }
+}
+
+pub fn expand(c: &Container) -> TokenStream {
+    let p = private(c);
+    let image = image_ident();
+    let idents: Vec<_> = c.vars.iter().map(|v| v.ident).collect();
+    let tys: Vec<_> = c.vars.iter().map(|v| v.ty).collect();
+    quote! {
+        #[inline]
+        fn to_image(&self) -> #image {
+            #image { #(#idents: <#tys as #p::PlcType>::to_repr(&self.#idents),)* }
+        }
+
+        #[inline]
+        fn from_image(image: &#image) -> Self {
+            Self { #(#idents: <#tys as #p::PlcType>::from_repr(&image.#idents),)* }
+        }
+
+        #[inline]
+        fn load_image(&mut self, image: &#image) {
+            #(self.#idents = <#tys as #p::PlcType>::from_repr(&image.#idents);)*
+        }
+
+        #[inline]
+        fn store_image(&self, image: &mut #image) {
+            #(image.#idents = <#tys as #p::PlcType>::to_repr(&self.#idents);)*
+        }
+    }
+}
