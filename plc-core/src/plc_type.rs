@@ -65,6 +65,92 @@ pub trait PlcType: Copy + sealed::Sealed + 'static {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError>;
+
+    // The derive's bit mapping and located access go through these total methods (no-ops or
+    // errors for types they do not apply to), so a wrong type behind an alias is reported by
+    // exactly one spanned `const` assertion instead of a cascade of unmet trait bounds.
+
+    /// Bit `n` of an integer; `false` for other types.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __bit(self, n: u32) -> bool {
+        let _ = n;
+        false
+    }
+    /// The integer with bit `n` set to `v`; other types unchanged.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __with_bit(self, n: u32, v: bool) -> Self {
+        let _ = (n, v);
+        self
+    }
+    /// A bool's value; `false` for other types.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __to_bit(self) -> bool {
+        false
+    }
+    /// Sets a bool; other types unchanged.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __set_from_bit(&mut self, bit: bool) {
+        let _ = bit;
+    }
+    /// Reads a located scalar from a process image; an error for strings and arrays.
+    #[doc(hidden)]
+    fn __read_located<B: AsRef<[u8]>>(
+        &mut self,
+        image: &crate::ProcessImage<B>,
+        address: &crate::IecAddress,
+        order: crate::ByteOrder,
+        unaligned: bool,
+    ) -> Result<(), crate::ProcessImageError> {
+        let _ = (image, order, unaligned);
+        Err(crate::ProcessImageError::SizeMismatch {
+            address: *address,
+            expected: address.size,
+        })
+    }
+    /// Writes a located scalar into a process image; an error for strings and arrays.
+    #[doc(hidden)]
+    fn __write_located<B: AsRef<[u8]> + AsMut<[u8]>>(
+        self,
+        image: &mut crate::ProcessImage<B>,
+        address: &crate::IecAddress,
+        order: crate::ByteOrder,
+        unaligned: bool,
+    ) -> Result<(), crate::ProcessImageError> {
+        let _ = (image, order, unaligned);
+        Err(crate::ProcessImageError::SizeMismatch {
+            address: *address,
+            expected: address.size,
+        })
+    }
+}
+
+/// Located access for the scalars that a process image address can hold.
+macro_rules! located {
+    () => {
+        fn __read_located<B: AsRef<[u8]>>(
+            &mut self,
+            image: &crate::ProcessImage<B>,
+            address: &crate::IecAddress,
+            order: crate::ByteOrder,
+            unaligned: bool,
+        ) -> Result<(), crate::ProcessImageError> {
+            *self = image.read_with(address, order, unaligned)?;
+            Ok(())
+        }
+        fn __write_located<B: AsRef<[u8]> + AsMut<[u8]>>(
+            self,
+            image: &mut crate::ProcessImage<B>,
+            address: &crate::IecAddress,
+            order: crate::ByteOrder,
+            unaligned: bool,
+        ) -> Result<(), crate::ProcessImageError> {
+            image.write_with(address, self, order, unaligned)
+        }
+    };
 }
 
 /// A scalar (non-array) variable type.
@@ -76,7 +162,7 @@ pub trait PlcScalar: PlcType {
 }
 
 macro_rules! scalar {
-    ($($t:ty => $iec:ident, $repr:ty, $variant:ident, $as:ty;)*) => {$(
+    ($($kind:ident $t:ty => $iec:ident, $repr:ty, $variant:ident, $as:ty;)*) => {$(
         impl sealed::Sealed for $t {}
         impl PlcType for $t {
             const IEC_TYPE: IecType = IecType::$iec;
@@ -105,6 +191,8 @@ macro_rules! scalar {
                 *self = Self::from_fitted(fitted);
                 Ok(())
             }
+            located!();
+            bits!($kind $t);
         }
         impl PlcScalar for $t {
             #[inline]
@@ -124,17 +212,32 @@ macro_rules! scalar {
     )*};
 }
 
+/// Bit access for integers; nothing for floats.
+macro_rules! bits {
+    (float $t:ty) => {};
+    (int $t:ty) => {
+        #[inline(always)]
+        fn __bit(self, n: u32) -> bool {
+            (self >> n) & 1 != 0
+        }
+        #[inline(always)]
+        fn __with_bit(self, n: u32, v: bool) -> Self {
+            (self & !(1 << n)) | ((v as $t) << n)
+        }
+    };
+}
+
 scalar! {
-    i8 => Sint, i8, Int, i64;
-    i16 => Int, le::I16, Int, i64;
-    i32 => Dint, le::I32, Int, i64;
-    i64 => Lint, le::I64, Int, i64;
-    u8 => Usint, u8, UInt, u64;
-    u16 => Uint, le::U16, UInt, u64;
-    u32 => Udint, le::U32, UInt, u64;
-    u64 => Ulint, le::U64, UInt, u64;
-    f32 => Real, le::F32, Real, f64;
-    f64 => Lreal, le::F64, Real, f64;
+    int i8 => Sint, i8, Int, i64;
+    int i16 => Int, le::I16, Int, i64;
+    int i32 => Dint, le::I32, Int, i64;
+    int i64 => Lint, le::I64, Int, i64;
+    int u8 => Usint, u8, UInt, u64;
+    int u16 => Uint, le::U16, UInt, u64;
+    int u32 => Udint, le::U32, UInt, u64;
+    int u64 => Ulint, le::U64, UInt, u64;
+    float f32 => Real, le::F32, Real, f64;
+    float f64 => Lreal, le::F64, Real, f64;
 }
 
 impl sealed::Sealed for bool {}
@@ -171,6 +274,15 @@ impl PlcType for bool {
         }
         Ok(())
     }
+    #[inline(always)]
+    fn __to_bit(self) -> bool {
+        self
+    }
+    #[inline(always)]
+    fn __set_from_bit(&mut self, bit: bool) {
+        *self = bit;
+    }
+    located!();
 }
 impl PlcScalar for bool {
     fn to_value(&self) -> Value {
@@ -298,11 +410,11 @@ macro_rules! bit_source {
             const BITS: u32 = <$t>::BITS;
             #[inline(always)]
             fn bit(self, n: u32) -> bool {
-                (self >> n) & 1 != 0
+                self.__bit(n)
             }
             #[inline(always)]
             fn with_bit(self, n: u32, v: bool) -> Self {
-                (self & !(1 << n)) | ((v as $t) << n)
+                self.__with_bit(n, v)
             }
         }
     )*};

@@ -57,16 +57,28 @@ pub fn set_field<T: PlcType>(
     })
 }
 
-/// Bit `bit` of a source word.
+/// Bit `bit` of a source word (through `PlcType` so no other bound is needed).
 #[inline(always)]
-pub fn get_bit<S: BitSource>(source: S, bit: u32) -> bool {
-    source.bit(bit)
+pub fn get_bit<S: PlcType>(source: S, bit: u32) -> bool {
+    source.__bit(bit)
 }
 
 /// A source word with bit `bit` set to `value`.
 #[inline(always)]
-pub fn with_bit<S: BitSource>(source: S, bit: u32, value: bool) -> S {
-    source.with_bit(bit, value)
+pub fn with_bit<S: PlcType>(source: S, bit: u32, value: bool) -> S {
+    source.__with_bit(bit, value)
+}
+
+/// A bit-mapped bool's value.
+#[inline(always)]
+pub fn to_bit<T: PlcType>(value: T) -> bool {
+    value.__to_bit()
+}
+
+/// Sets a bit-mapped bool.
+#[inline(always)]
+pub fn set_from_bit<T: PlcType>(field: &mut T, bit: bool) {
+    field.__set_from_bit(bit)
 }
 
 /// Sets every element of a field to its declared initial value (the derive's `Default`; the
@@ -149,23 +161,24 @@ pub const fn storage_matches<T: PlcType>(declared: IecType) -> bool {
 
 /// Reads a located variable (`at = "%I.."`) with the declaration's byte order and alignment.
 #[inline]
-pub fn read_located<T: ProcessValue, B: AsRef<[u8]>>(
+pub fn read_located<T: PlcType, B: AsRef<[u8]>>(
+    field: &mut T,
     image: &crate::ProcessImage<B>,
     address: &crate::IecAddress,
     order: crate::ByteOrder,
     unaligned: bool,
-) -> Result<T, crate::ProcessImageError> {
-    image.read_with(address, order, unaligned)
+) -> Result<(), crate::ProcessImageError> {
+    field.__read_located(image, address, order, unaligned)
 }
 
 /// Writes a located variable (`at = "%Q.."`) with the declaration's byte order and alignment.
 #[inline]
-pub fn write_located<T: ProcessValue, B: AsRef<[u8]> + AsMut<[u8]>>(
+pub fn write_located<T: PlcType, B: AsRef<[u8]> + AsMut<[u8]>>(
+    field: T,
     image: &mut crate::ProcessImage<B>,
     address: &crate::IecAddress,
-    value: T,
     order: crate::ByteOrder,
     unaligned: bool,
 ) -> Result<(), crate::ProcessImageError> {
-    image.write_with(address, value, order, unaligned)
+    field.__write_located(image, address, order, unaligned)
 }

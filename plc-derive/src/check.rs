@@ -180,12 +180,11 @@ fn addresses(c: &Container, cx: &mut Ctxt) {
                 cx.error(
                     at.span,
                     format!(
-                        "`{text}` is a {}-bit {} but `{}` is {} ({} bits): write `%{}{}{}`",
-                        a.size.bits(),
-                        size_name(a.size),
+                        "`{text}` is {} but `{}` is {} ({}): write `%{}{}{}`",
+                        size_phrase(a.size),
                         v.field_name(),
                         v.ty_text(),
-                        size.bits(),
+                        bits_text(size.bits()),
                         a.area.letter(),
                         size.letter(),
                         if size == Size::Bit {
@@ -226,6 +225,23 @@ fn addresses(c: &Container, cx: &mut Ctxt) {
                 format!("`{}` is located here", first.field_name()),
             );
         }
+    }
+}
+
+/// "a bit", "an 8-bit byte", "a 16-bit word", ...
+fn size_phrase(s: Size) -> String {
+    match s {
+        Size::Bit => "a bit".to_string(),
+        Size::Byte => "an 8-bit byte".to_string(),
+        other => format!("a {}-bit {}", other.bits(), size_name(other)),
+    }
+}
+
+fn bits_text(bits: u32) -> String {
+    if bits == 1 {
+        "1 bit".into()
+    } else {
+        format!("{bits} bits")
     }
 }
 
@@ -305,17 +321,14 @@ fn initial_and_iec_type(c: &Container, cx: &mut Ctxt) {
             cx.error(
                 t.span,
                 format!(
-                    "`iec_type = \"{}\"` does not fit `{}`: {} is {} bits but {} is {}; use {hint}",
+                    "`iec_type = \"{}\"` does not fit `{}` ({}): {} is stored as {}; use {hint}, \
+                     or change the field to {}",
                     t.value,
                     v.field_name(),
-                    t.value,
-                    t.value.bits(),
                     k.element_name(),
-                    if k.iec == IecType::String {
-                        "a string".to_string()
-                    } else {
-                        format!("{} bits ({})", k.iec.bits(), k.iec)
-                    }
+                    t.value,
+                    t.value.rust_name(),
+                    t.value.rust_name()
                 ),
             );
         }

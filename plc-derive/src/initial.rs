@@ -89,7 +89,7 @@ impl Initial {
             }
             (InitialValue::Float(v), TypeFamily::Real) => {
                 (iec == IecType::Real && v.is_finite() && v.abs() > f32::MAX as f64)
-                    .then(|| format!("initial value {v} is out of range for `{field}` (f32)"))
+                    .then(|| format!("initial value {v:e} is out of range for `{field}` (f32)"))
             }
             (InitialValue::Float(_), _) if iec.is_integer() => {
                 Some(kind("a whole number (real to integer is never implicit)"))

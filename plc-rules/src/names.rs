@@ -37,10 +37,14 @@ impl fmt::Display for NameError {
             NameError::StartsWithDigit => {
                 f.write_str("a name must begin with a letter or an underscore, not a digit")
             }
-            NameError::InvalidChar(c) => write!(
+            NameError::InvalidChar(c) if c.is_control() || c.is_whitespace() => write!(
                 f,
                 "`{}` is not allowed in a name: use ASCII letters, digits and underscores",
                 c.escape_default()
+            ),
+            NameError::InvalidChar(c) => write!(
+                f,
+                "`{c}` is not allowed in a name: use ASCII letters, digits and underscores"
             ),
             NameError::DoubleUnderscore => {
                 f.write_str("a name must not contain two consecutive underscores")

@@ -19,12 +19,12 @@ pub fn expand(c: &Container) -> TokenStream {
         let to_source = v.mapped_to.map(|(s, bit)| {
             let src = c.vars[s].ident;
             let bit = bit as u32;
-            quote!(self.#src = #p::with_bit(self.#src, #bit, self.#ident);)
+            quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#ident));)
         });
         let to_bools = mapped_onto(c, i).map(|(b, bit)| {
             let b = b.ident;
             let bit = bit as u32;
-            quote!(self.#b = #p::get_bit(self.#ident, #bit);)
+            quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#ident, #bit));)
         });
         quote! {
             #i => {

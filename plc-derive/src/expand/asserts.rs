@@ -35,6 +35,16 @@ pub fn expand(c: &Container) -> TokenStream {
             let src = &c.vars[s];
             if src.syn_type == SynType::Unknown {
                 let sty = src.ty;
+                let at_source = v.source.as_ref().map_or(b.span, |s| s.span);
+                out.extend(assert(
+                    at_source,
+                    quote_spanned!(at_source=> #p::is_integer::<#sty>()),
+                    format!(
+                        "the source `{}` must be an integer (u8, u16, u32, u64, i8, i16, i32 or \
+                         i64, seed 000), but its type is not",
+                        src.field_name()
+                    ),
+                ));
                 out.extend(assert(
                     b.span,
                     quote_spanned!(b.span=> (#bit as u32) < #p::scalar_bits::<#sty>()),

@@ -16,8 +16,8 @@ pub fn expand(c: &Container) -> TokenStream {
         };
         let (b, src) = (v.ident, c.vars[s].ident);
         let bit = bit as u32;
-        unpack.push(quote!(self.#b = #p::get_bit(self.#src, #bit);));
-        pack.push(quote!(self.#src = #p::with_bit(self.#src, #bit, self.#b);));
+        unpack.push(quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#src, #bit));));
+        pack.push(quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#b));));
     }
     quote! {
         #[inline]

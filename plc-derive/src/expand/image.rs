@@ -2,8 +2,24 @@
 
 use super::{image_ident, private};
 use crate::ast::Container;
-use proc_macro2::TokenStream;
+use proc_macro2::{Group, Span, TokenStream, TokenTree};
 use quote::quote;
+
+/// `tokens` with every span set to `span`.
+fn respan(tokens: TokenStream, span: Span) -> TokenStream {
+    tokens
+        .into_iter()
+        .map(|mut t| {
+            if let TokenTree::Group(g) = &t {
+                let mut inner = Group::new(g.delimiter(), respan(g.stream(), span));
+                inner.set_span(span);
+                return TokenTree::Group(inner);
+            }
+            t.set_span(span);
+            t
+        })
+        .collect()
+}
 
 /// `#[repr(C)]`, alignment 1 (every field's `Repr` is `Unaligned`), so no padding and the
 /// same offsets in every process that compiles the same declaration.
@@ -13,7 +29,9 @@ pub fn image_struct(c: &Container) -> TokenStream {
     let zerocopy_path = format!("{}::zerocopy", p.to_string().replace(' ', ""));
     let fields = c.vars.iter().map(|v| {
         let (ident, ty) = (v.ident, v.ty);
-        quote!(pub #ident: <#ty as #p::PlcType>::Repr)
+        // Under the user's type: an unsupported type behind an alias is reported there.
+        let repr = respan(quote!(<#ty as #p::PlcType>::Repr), v.ty_span());
+        quote!(pub #ident: #repr)
     });
     quote! {
         #[repr(C)]

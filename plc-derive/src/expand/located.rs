@@ -42,14 +42,14 @@ pub fn expand(c: &Container) -> TokenStream {
     let mut writes = Vec::new();
     for v in &c.vars {
         let Some(at) = &v.at else { continue };
-        let (ident, ty) = (v.ident, v.ty);
+        let ident = v.ident;
         let addr = address(c, &at.value);
         match at.value.area {
             Area::Input => reads.push(quote! {
-                self.#ident = #p::read_located::<#ty, B>(inputs, &#addr, #order, #unaligned)?;
+                #p::read_located(&mut self.#ident, inputs, &#addr, #order, #unaligned)?;
             }),
             _ => writes.push(quote! {
-                #p::write_located::<#ty, B>(outputs, &#addr, self.#ident, #order, #unaligned)?;
+                #p::write_located(self.#ident, outputs, &#addr, #order, #unaligned)?;
             }),
         }
     }

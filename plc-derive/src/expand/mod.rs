@@ -15,7 +15,7 @@ use crate::ast::{self, Container, Var};
 use crate::check;
 use crate::ctxt::Ctxt;
 use proc_macro2::TokenStream;
-use quote::{quote, quote_spanned};
+use quote::quote;
 use syn::DeriveInput;
 
 /// Name of the image struct inside the `const _` block. It shadows nothing the user can see
@@ -52,7 +52,6 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let ident = c.ident;
     let krate = &c.krate;
     let image_ident = image_ident();
-    let bounds = where_bounds(&c);
     let default = default::expand(&c);
     let image_struct = image::image_struct(&c);
     quote! {
@@ -61,7 +60,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             #asserts
 
             #[automatically_derived]
-            impl #krate::GlobalMemory for #ident where #(#bounds,)* {
+            impl #krate::GlobalMemory for #ident {
                 type Image = #image_ident;
                 #(#body)*
             }
@@ -79,38 +78,6 @@ pub fn private(c: &Container) -> TokenStream {
 
 pub fn image_ident() -> syn::Ident {
     syn::Ident::new(IMAGE, proc_macro2::Span::call_site())
-}
-
-/// Bounds on the impl, each under the user's token, so an unsupported type is reported once
-/// where it is written (zerocopy-derive's per-field bounds).
-fn where_bounds(c: &Container) -> Vec<TokenStream> {
-    let p = private(c);
-    let mut out = Vec::new();
-    for v in &c.vars {
-        let ty = v.ty;
-        out.push(quote_spanned!(v.ty_span()=> #ty: #p::PlcType));
-        if let Some(at) = &v.at {
-            out.push(quote_spanned!(at.span=> #ty: #p::ProcessValue));
-        }
-    }
-    for (s, span) in sources(c) {
-        let ty = c.vars[s].ty;
-        out.push(quote_spanned!(span=> #ty: #p::BitSource));
-    }
-    out
-}
-
-/// Each source word once, with the span of its first `source = "..."`.
-pub fn sources(c: &Container) -> Vec<(usize, proc_macro2::Span)> {
-    let mut out: Vec<(usize, proc_macro2::Span)> = Vec::new();
-    for v in &c.vars {
-        if let (Some((s, _)), Some(src)) = (v.mapped_to, &v.source)
-            && !out.iter().any(|(o, _)| *o == s)
-        {
-            out.push((s, src.span));
-        }
-    }
-    out
 }
 
 /// The bools mapped onto source `s`, with their bits.

@@ -1,0 +1,32 @@
+use plc_core::{FixedString, GlobalMemory, IecType};
+
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct Gm {
+    a: bool,
+    b: i8,
+    c: i16,
+    d: i32,
+    e: i64,
+    f: u8,
+    g: u16,
+    h: u32,
+    i: u64,
+    j: f32,
+    k: f64,
+    #[plc(iec_type = "BYTE")]
+    l: u8,
+    #[plc(iec_type = "WORD")]
+    m: u16,
+    #[plc(iec_type = "DWORD")]
+    n: u32,
+    #[plc(iec_type = "LWORD")]
+    o: u64,
+    p: FixedString<1>,
+    q: FixedString<255>,
+}
+
+fn main() {
+    let types: Vec<IecType> = Gm::VARIABLES.iter().map(|v| v.iec_type).collect();
+    assert_eq!(types[..16], IecType::ALL);
+    assert_eq!(types[16], IecType::String);
+}

@@ -1,0 +1,6 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm;
+
+fn main() {}

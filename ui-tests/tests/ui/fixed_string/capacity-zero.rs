@@ -1,0 +1,6 @@
+// Seed 000: a string's capacity is 1..=255 bytes.
+use plc_core::FixedString;
+
+fn main() {
+    let _s = FixedString::<0>::new();
+}

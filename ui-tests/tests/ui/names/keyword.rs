@@ -1,0 +1,9 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm {
+    #[plc(name = "END_VAR")]
+    end: bool,
+}
+
+fn main() {}

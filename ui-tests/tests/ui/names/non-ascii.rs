@@ -1,0 +1,8 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm {
+    größe: i32,
+}
+
+fn main() {}

@@ -1,0 +1,10 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm {
+    ton: bool,
+    r_trig: bool,
+    abs: f32,
+}
+
+fn main() {}

@@ -1,0 +1,8 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm {
+    dint: i32,
+}
+
+fn main() {}

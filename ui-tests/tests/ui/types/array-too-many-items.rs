@@ -1,0 +1,8 @@
+use plc_core::GlobalMemory;
+
+#[derive(GlobalMemory)]
+pub struct Gm {
+    samples: [[f32; 256]; 257],
+}
+
+fn main() {}

@@ -1,0 +1,6 @@
+// DINT does not widen to REAL: a 32-bit integer does not fit the 24-bit mantissa (seed 001).
+use plc_core::convert::Widen;
+
+fn main() {
+    let _r: f32 = 100_000i32.widen();
+}
