@@ -1,6 +1,9 @@
 //! What `#[derive(GlobalMemory)]` generates, pinned: layout, metadata, bit packing, get/set,
 //! `Default`, located variables, and round trips over random values.
 
+// Tests set one field after `Default` on purpose: that is how a program writes its variables.
+#![allow(clippy::field_reassign_with_default)]
+
 use plc_core::{
     Access, Direction, FixedString, GlobalMemory, IecType, ProcessImage, SetError, Value,
     ValueError,
