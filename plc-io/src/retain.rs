@@ -1,0 +1,464 @@
+//! Nonvolatile (retained) variables: values that survive restarts, and edits of the
+//! declaration.
+//!
+//! The file is one header line with a CRC-32 of the body, then the body: JSON with each
+//! nonvolatile variable's name, IEC type and values. It is replaced atomically (temporary file,
+//! fsync, rename, fsync of the directory), so after a crash at any point it holds the old or
+//! the new content, never a mix. Saving happens on a background thread from a copy, never in
+//! the cycle.
+//!
+//! Loading matches variables by name (case-insensitive): new variables keep their `initial`,
+//! removed or renamed ones are reported, a changed type is converted only where seed 001's
+//! widening allows it (`can_widen`), otherwise reported and the initial value kept. A corrupt
+//! or truncated file is an error naming it, and the file is left untouched.
+//!
+//! ```
+//! use plc_core::GlobalMemory;
+//! use plc_io::retain::RetainStore;
+//!
+//! #[derive(GlobalMemory, Debug, Clone)]
+//! struct Gm {
+//!     #[plc(nonvolatile, initial = 12.5)]
+//!     home_offset_mm: f64,
+//! }
+//!
+//! let dir = std::env::temp_dir().join(format!("retain-doc-{}", std::process::id()));
+//! std::fs::create_dir_all(&dir).unwrap();
+//! let store = RetainStore::new(dir.join("press.retain"));
+//! let mut gm = Gm::default();
+//! gm.home_offset_mm = 3.25;
+//! store.save(&gm).unwrap();
+//!
+//! let mut fresh = Gm::default();
+//! let report = store.load(&mut fresh).unwrap();
+//! assert_eq!(fresh.home_offset_mm, 3.25);
+//! assert_eq!(report.restored, ["home_offset_mm"]);
+//! # std::fs::remove_dir_all(&dir).unwrap();
+//! ```
+
+use plc_core::convert::can_widen;
+use plc_core::{FixedString, GlobalMemory, IecType, Value};
+use serde::{Deserialize, Serialize};
+use std::fmt;
+use std::fs::{self, File};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{self, RecvTimeoutError};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+const HEADER: &str = "plc-vars retain v1 crc32=";
+
+/// Why the retain file could not be used.
+#[derive(Debug)]
+pub enum RetainError {
+    /// The file is damaged (bad checksum, truncated, not JSON). It was left as it is.
+    Corrupt {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        why: String,
+    },
+    /// Reading or writing failed.
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The OS error.
+        error: std::io::Error,
+    },
+}
+
+impl fmt::Display for RetainError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            RetainError::Corrupt { path, why } => write!(
+                f,
+                "retain file {} is damaged ({why}); it was left untouched: restore it from a \
+                 backup, or move it away to start from the initial values",
+                path.display()
+            ),
+            RetainError::Io { path, error } => {
+                write!(f, "retain file {}: {error}", path.display())
+            }
+        }
+    }
+}
+
+impl std::error::Error for RetainError {}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Stored {
+    name: String,
+    #[serde(rename = "type")]
+    iec_type: IecType,
+    values: Vec<serde_json::Value>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Body {
+    variables: Vec<Stored>,
+}
+
+/// What loading did, variable by variable.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RetainReport {
+    /// Restored as saved.
+    pub restored: Vec<String>,
+    /// Restored with a widening conversion: name, saved type, declared type.
+    pub converted: Vec<(String, IecType, IecType)>,
+    /// Nonvolatile now but not in the file: kept their initial value.
+    pub new: Vec<String>,
+    /// In the file but no longer declared (removed or renamed): ignored.
+    pub removed: Vec<String>,
+    /// In the file but not restorable (type narrowed, other kind, other size): name and why;
+    /// they kept their initial value.
+    pub reset: Vec<(String, String)>,
+}
+
+impl RetainReport {
+    /// Writes the report's warnings to stderr (removed and reset variables).
+    pub fn log(&self, path: &Path) {
+        for name in &self.removed {
+            eprintln!(
+                "retain {}: `{name}` is no longer a nonvolatile variable (removed or renamed); \
+                 its saved value is ignored",
+                path.display()
+            );
+        }
+        for (name, why) in &self.reset {
+            eprintln!(
+                "retain {}: `{name}` keeps its initial value: {why}",
+                path.display()
+            );
+        }
+    }
+}
+
+fn to_json(v: &Value) -> serde_json::Value {
+    match *v {
+        Value::Bool(b) => b.into(),
+        Value::Int(i) => i.into(),
+        Value::UInt(u) => u.into(),
+        Value::Real(r) if r.is_finite() => r.into(),
+        Value::Real(r) => r.to_string().into(),
+        Value::Text(t) => t.as_str().into(),
+    }
+}
+
+fn from_json(v: &serde_json::Value) -> Option<Value> {
+    Some(match v {
+        serde_json::Value::Bool(b) => Value::Bool(*b),
+        serde_json::Value::Number(n) => {
+            if let Some(u) = n.as_u64() {
+                Value::UInt(u)
+            } else if let Some(i) = n.as_i64() {
+                Value::Int(i)
+            } else {
+                Value::Real(n.as_f64()?)
+            }
+        }
+        serde_json::Value::String(s) => match s.parse::<f64>() {
+            Ok(r) if !r.is_finite() => Value::Real(r),
+            _ => {
+                let mut t = FixedString::<255>::new();
+                t.try_set(s).ok()?;
+                Value::Text(t)
+            }
+        },
+        _ => return None,
+    })
+}
+
+/// Converts a saved value of type `from` for a variable now of type `to`, by seed 001's
+/// widening (integer to wider integer, to real, REAL to LREAL). Other changes return `None`.
+fn widen(value: Value, from: IecType, to: IecType) -> Option<Value> {
+    if from == to {
+        return Some(value);
+    }
+    if !can_widen(from, to) {
+        return None;
+    }
+    Some(match (value, to.is_real()) {
+        (Value::Int(i), true) => Value::Real(i as f64),
+        (Value::UInt(u), true) => Value::Real(u as f64),
+        (v, _) => v,
+    })
+}
+
+/// The retain file of a program.
+#[derive(Clone, Debug)]
+pub struct RetainStore {
+    path: PathBuf,
+}
+
+impl RetainStore {
+    /// The store at `path` (created at the first save).
+    pub fn new(path: impl Into<PathBuf>) -> Self {
+        RetainStore { path: path.into() }
+    }
+
+    /// The file.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    fn body_of<T: GlobalMemory>(gm: &T) -> Body {
+        Body {
+            variables: T::VARIABLES
+                .iter()
+                .enumerate()
+                .filter(|(_, v)| v.nonvolatile)
+                .map(|(i, v)| Stored {
+                    name: v.name.to_string(),
+                    iec_type: v.iec_type,
+                    values: (0..v.elements())
+                        .filter_map(|e| gm.try_get(i, e))
+                        .map(|x| to_json(&x))
+                        .collect(),
+                })
+                .collect(),
+        }
+    }
+
+    /// Saves the nonvolatile variables of `gm`, atomically.
+    pub fn save<T: GlobalMemory>(&self, gm: &T) -> Result<(), RetainError> {
+        let body = serde_json::to_vec_pretty(&Self::body_of(gm)).map_err(|e| RetainError::Io {
+            path: self.path.clone(),
+            error: std::io::Error::other(e),
+        })?;
+        self.write_atomically(&body)
+    }
+
+    fn write_atomically(&self, body: &[u8]) -> Result<(), RetainError> {
+        let io = |error| RetainError::Io {
+            path: self.path.clone(),
+            error,
+        };
+        let crc = crc32fast::hash(body);
+        let tmp = self
+            .path
+            .with_extension(format!("tmp.{}", std::process::id()));
+        {
+            let mut f = File::create(&tmp).map_err(io)?;
+            f.write_all(format!("{HEADER}{crc:08x}\n").as_bytes())
+                .and_then(|()| f.write_all(body))
+                .and_then(|()| f.sync_all())
+                .map_err(io)?;
+        }
+        fault_point(1);
+        fs::rename(&tmp, &self.path).map_err(io)?;
+        fault_point(2);
+        let dir = match self.path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        File::open(dir).and_then(|d| d.sync_all()).map_err(io)?;
+        Ok(())
+    }
+
+    fn read_body(&self) -> Result<Option<Body>, RetainError> {
+        let data = match fs::read(&self.path) {
+            Ok(d) => d,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+            Err(error) => {
+                return Err(RetainError::Io {
+                    path: self.path.clone(),
+                    error,
+                });
+            }
+        };
+        let corrupt = |why: &str| RetainError::Corrupt {
+            path: self.path.clone(),
+            why: why.to_string(),
+        };
+        let newline = data
+            .iter()
+            .position(|&b| b == b'\n')
+            .ok_or_else(|| corrupt("no header line"))?;
+        let header = std::str::from_utf8(&data[..newline]).map_err(|_| corrupt("bad header"))?;
+        let crc = header
+            .strip_prefix(HEADER)
+            .and_then(|h| u32::from_str_radix(h, 16).ok())
+            .ok_or_else(|| corrupt("not a plc-vars retain file"))?;
+        let body = &data[newline + 1..];
+        if crc32fast::hash(body) != crc {
+            return Err(corrupt("checksum mismatch: truncated or modified"));
+        }
+        serde_json::from_slice(body)
+            .map(Some)
+            .map_err(|e| corrupt(&e.to_string()))
+    }
+
+    /// Loads saved values into `gm`'s nonvolatile variables (others are untouched). A missing
+    /// file is not an error: every nonvolatile variable is then reported new.
+    pub fn load<T: GlobalMemory>(&self, gm: &mut T) -> Result<RetainReport, RetainError> {
+        let body = self.read_body()?.unwrap_or(Body { variables: vec![] });
+        let mut report = RetainReport::default();
+        for stored in &body.variables {
+            if !T::VARIABLES
+                .iter()
+                .any(|v| v.nonvolatile && v.name.eq_ignore_ascii_case(&stored.name))
+            {
+                report.removed.push(stored.name.clone());
+            }
+        }
+        for (i, v) in T::VARIABLES.iter().enumerate() {
+            if !v.nonvolatile {
+                continue;
+            }
+            let Some(stored) = body
+                .variables
+                .iter()
+                .find(|s| s.name.eq_ignore_ascii_case(v.name))
+            else {
+                report.new.push(v.name.to_string());
+                continue;
+            };
+            if stored.values.len() != v.elements() {
+                report.reset.push((
+                    v.name.to_string(),
+                    format!(
+                        "it had {} elements, now {}",
+                        stored.values.len(),
+                        v.elements()
+                    ),
+                ));
+                continue;
+            }
+            let values: Option<Vec<Value>> = stored
+                .values
+                .iter()
+                .map(|j| from_json(j).and_then(|x| widen(x, stored.iec_type, v.iec_type)))
+                .collect();
+            let Some(values) = values else {
+                report.reset.push((
+                    v.name.to_string(),
+                    format!(
+                        "its type changed from {} to {}, which is no implicit widening",
+                        stored.iec_type, v.iec_type
+                    ),
+                ));
+                continue;
+            };
+            // Check every element first: a variable is restored whole or not at all.
+            let mut trial = (0..v.elements()).filter_map(|e| gm.try_get(i, e));
+            let before: Vec<Value> = trial.by_ref().collect();
+            let mut failed = None;
+            for (e, x) in values.iter().enumerate() {
+                if let Err(err) = gm.set(i, e, *x) {
+                    failed = Some(err.to_string());
+                    break;
+                }
+            }
+            if let Some(why) = failed {
+                for (e, x) in before.iter().enumerate() {
+                    let _ = gm.set(i, e, *x);
+                }
+                report.reset.push((v.name.to_string(), why));
+            } else if stored.iec_type != v.iec_type {
+                report
+                    .converted
+                    .push((v.name.to_string(), stored.iec_type, v.iec_type));
+            } else {
+                report.restored.push(v.name.to_string());
+            }
+        }
+        Ok(report)
+    }
+}
+
+/// Test hook: when the environment variable `PLC_RETAIN_FAULT` names a step (1: after the
+/// temporary file is written, 2: after the rename), the process aborts there, as a power cut
+/// would stop it.
+fn fault_point(step: u8) {
+    if std::env::var("PLC_RETAIN_FAULT").is_ok_and(|s| s == step.to_string()) {
+        std::process::abort();
+    }
+}
+
+/// Saves retained values on a background thread: at most once per interval, only when they
+/// changed, and a last time when finished.
+pub struct RetainWriter<I: Send + 'static> {
+    tx: Option<mpsc::Sender<Option<I>>>,
+    thread: Option<JoinHandle<()>>,
+}
+
+impl<I: Copy + Send + 'static> RetainWriter<I> {
+    /// Starts the writer for a program of type `T` (whose image type is `I`).
+    pub fn spawn<T>(store: RetainStore, interval: Duration) -> RetainWriter<T::Image>
+    where
+        T: GlobalMemory<Image = I>,
+    {
+        let (tx, rx) = mpsc::channel::<Option<I>>();
+        let thread = std::thread::Builder::new()
+            .name("plc-retain".into())
+            .spawn(move || {
+                let mut pending: Option<I> = None;
+                let mut last_save = Instant::now() - interval;
+                let save = |image: &I| {
+                    if let Err(e) = store.save(&T::from_image(image)) {
+                        eprintln!("{e}");
+                    }
+                };
+                loop {
+                    let wait = if pending.is_some() {
+                        interval.saturating_sub(last_save.elapsed())
+                    } else {
+                        Duration::from_secs(3600)
+                    };
+                    match rx.recv_timeout(wait) {
+                        Ok(Some(image)) => pending = Some(image),
+                        Ok(None) | Err(RecvTimeoutError::Disconnected) => {
+                            if let Some(image) = pending.take() {
+                                save(&image);
+                            }
+                            return;
+                        }
+                        Err(RecvTimeoutError::Timeout) => {}
+                    }
+                    if pending.is_some() && last_save.elapsed() >= interval {
+                        if let Some(image) = pending.take() {
+                            save(&image);
+                        }
+                        last_save = Instant::now();
+                    }
+                }
+            })
+            .ok();
+        RetainWriter {
+            tx: Some(tx),
+            thread,
+        }
+    }
+
+    /// Hands over a copy of the image whose nonvolatile values changed (never blocks).
+    pub fn offer(&self, image: I) {
+        if let Some(tx) = &self.tx {
+            let _ = tx.send(Some(image));
+        }
+    }
+
+    /// Saves `last` (or what is pending) and stops the thread.
+    pub fn finish(mut self, last: Option<I>) {
+        if let Some(tx) = self.tx.take() {
+            if let Some(image) = last {
+                let _ = tx.send(Some(image));
+            }
+            let _ = tx.send(None);
+        }
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}
+
+impl<I: Send + 'static> Drop for RetainWriter<I> {
+    fn drop(&mut self) {
+        if let Some(tx) = self.tx.take() {
+            let _ = tx.send(None);
+        }
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}

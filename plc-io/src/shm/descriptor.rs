@@ -1,0 +1,147 @@
+//! The layout descriptor: every variable's metadata as JSON inside the segment, so tools read
+//! and write a running program's variables without its Rust types.
+
+use plc_core::{Access, Direction, IecType, VarInfo};
+use plc_rules::layout::LayoutHasher;
+use serde::{Deserialize, Serialize};
+
+/// One variable, owned: the fields of [`plc_core::VarInfo`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VarDescriptor {
+    /// Symbol name.
+    pub name: String,
+    /// IEC type of one element.
+    pub iec_type: IecType,
+    /// The Rust type as written.
+    pub rust_type: String,
+    /// Byte offset in the image.
+    pub offset: usize,
+    /// Bytes in the image.
+    pub size: usize,
+    /// Array dimensions (empty for a scalar).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub dims: Vec<usize>,
+    /// Source variable index and bit, for a bit-mapped bool.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bit: Option<BitDescriptor>,
+    /// `ethercat.<device>.<entry>`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub link: Option<String>,
+    /// IEC address, e.g. `%IW4`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub address: Option<String>,
+    /// Description ("" if none).
+    #[serde(default)]
+    pub description: String,
+    /// Initial value as JSON text.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub initial: Option<String>,
+    /// Kept across restarts.
+    #[serde(default)]
+    pub nonvolatile: bool,
+    /// Read-write or read-only for tools.
+    pub access: Access,
+    /// Input, output, command, status or internal.
+    pub direction: Direction,
+}
+
+/// A bit-mapped bool's source.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct BitDescriptor {
+    /// Index of the source variable.
+    pub source: usize,
+    /// Bit in the source, 0 = least significant.
+    pub bit: u8,
+}
+
+impl VarDescriptor {
+    /// Number of elements (1 for a scalar).
+    pub fn elements(&self) -> usize {
+        self.dims.iter().product::<usize>().max(1)
+    }
+
+    /// Bytes of one element.
+    pub fn element_size(&self) -> usize {
+        self.size / self.elements()
+    }
+
+    /// Capacity of a string element in bytes (0 for other types).
+    pub fn string_capacity(&self) -> usize {
+        if self.iec_type == IecType::String {
+            self.element_size()
+        } else {
+            0
+        }
+    }
+
+    /// Whether tools may write it (read-write, neither input nor status).
+    pub fn writable_from_outside(&self) -> bool {
+        self.access == Access::ReadWrite && self.direction.writable_from_outside()
+    }
+}
+
+impl From<&VarInfo> for VarDescriptor {
+    fn from(v: &VarInfo) -> Self {
+        VarDescriptor {
+            name: v.name.to_string(),
+            iec_type: v.iec_type,
+            rust_type: v.rust_type.to_string(),
+            offset: v.offset,
+            size: v.size,
+            dims: v.dims.to_vec(),
+            bit: v.bit.map(|b| BitDescriptor {
+                source: b.source,
+                bit: b.bit,
+            }),
+            link: v.link.map(str::to_string),
+            address: v.address.map(str::to_string),
+            description: v.description.to_string(),
+            initial: v.initial.map(str::to_string),
+            nonvolatile: v.nonvolatile,
+            access: v.access,
+            direction: v.direction,
+        }
+    }
+}
+
+/// All variables of a program, as stored in its segment.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LayoutDescriptor {
+    /// Segment format version.
+    pub format_version: u32,
+    /// The layout hash the program was compiled with.
+    pub layout_hash: u64,
+    /// Size of the image in bytes.
+    pub image_size: usize,
+    /// The variables in declaration order.
+    pub variables: Vec<VarDescriptor>,
+}
+
+impl LayoutDescriptor {
+    /// The descriptor of a compiled `GlobalMemory` type.
+    pub fn of<T: plc_core::GlobalMemory>() -> Self {
+        LayoutDescriptor {
+            format_version: plc_rules::layout::FORMAT_VERSION,
+            layout_hash: T::LAYOUT_HASH,
+            image_size: core::mem::size_of::<T::Image>(),
+            variables: T::VARIABLES.iter().map(VarDescriptor::from).collect(),
+        }
+    }
+
+    /// The layout hash recomputed from the variables (plc_rules::layout's recipe).
+    pub fn computed_hash(&self) -> u64 {
+        let mut h = LayoutHasher::new();
+        for v in &self.variables {
+            let bit = v.bit.map(|b| (b.source, b.bit));
+            h = h.var(&v.name, v.iec_type.name(), v.offset, v.size, &v.dims, bit);
+        }
+        h.finish()
+    }
+
+    /// Index of a variable by name, case-insensitively (seed 003).
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        self.variables
+            .iter()
+            .position(|v| v.name.eq_ignore_ascii_case(name))
+    }
+}

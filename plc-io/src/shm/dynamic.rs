@@ -1,0 +1,83 @@
+//! `DynSegment`: a running program's variables for tools that do not have its Rust type.
+
+use super::ShmError;
+use super::codec;
+use super::descriptor::{LayoutDescriptor, VarDescriptor};
+use super::status::{OwnerState, Status};
+use super::view::View;
+use plc_core::Value;
+
+/// A segment attached through its stored descriptor (what `plc` uses).
+///
+/// ```no_run
+/// let seg = plc_io::shm::DynSegment::attach("tensile_tester")?;
+/// for v in &seg.descriptor().variables {
+///     println!("{} = {}", v.name, seg.read(&v.name)?);
+/// }
+/// seg.write("speed_setpoint", plc_core::Value::Real(1.5))?;
+/// # Ok::<(), plc_io::shm::ShmError>(())
+/// ```
+pub struct DynSegment {
+    view: View,
+}
+
+impl DynSegment {
+    /// Attaches to segment `name` (`press`, `plc.press` and `/dev/shm/plc.press` all work).
+    pub fn attach(name: &str) -> Result<Self, ShmError> {
+        Ok(DynSegment {
+            view: View::attach(name)?,
+        })
+    }
+
+    /// The segment's name.
+    pub fn name(&self) -> &str {
+        self.view.name()
+    }
+
+    /// Every variable's metadata.
+    pub fn descriptor(&self) -> &LayoutDescriptor {
+        &self.view.desc
+    }
+
+    /// The status block.
+    pub fn status(&self) -> Status {
+        self.view.status()
+    }
+
+    /// The owner's state: running, stalled, faulted, stopped or gone.
+    pub fn owner_state(&self) -> OwnerState {
+        self.view.owner_state()
+    }
+
+    /// A consistent copy of the whole image.
+    pub fn snapshot_bytes(&self) -> Result<Vec<u8>, ShmError> {
+        self.view.snapshot_bytes()
+    }
+
+    /// Element `element` of variable `index` in an image from [`snapshot_bytes`](Self::snapshot_bytes).
+    pub fn value_at(&self, image: &[u8], index: usize, element: usize) -> Option<Value> {
+        let var: &VarDescriptor = self.view.desc.variables.get(index)?;
+        codec::decode(image, var, element)
+    }
+
+    /// One variable's value (element 0 of an array).
+    pub fn read(&self, name: &str) -> Result<Value, ShmError> {
+        self.view.read_element(name, 0)
+    }
+
+    /// One element of a variable.
+    pub fn read_element(&self, name: &str, element: usize) -> Result<Value, ShmError> {
+        self.view.read_element(name, element)
+    }
+
+    /// Posts a write, checked as the owner's `set` would check it (and refused for read-only,
+    /// input and status variables).
+    pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
+        self.view.write_element(name, 0, value)
+    }
+
+    /// Posts a write of one array element.
+    pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+        self.view.write_element(name, element, value)
+    }
+}

@@ -1,0 +1,211 @@
+//! Errors of shared memory, each naming the segment or variable and what to do.
+
+use plc_core::{Direction, ValueError};
+use std::fmt;
+
+/// Why a shared-memory operation failed.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum ShmError {
+    /// The segment name has characters other than letters, digits, `_`, `-`, `.`.
+    BadName(String),
+    /// No segment of this name exists.
+    NotFound(String),
+    /// Another live process owns the segment.
+    OwnerAlive {
+        /// Segment.
+        name: String,
+        /// Its owner's pid (0 if unknown).
+        pid: u64,
+    },
+    /// The operating system refused.
+    Os {
+        /// Segment.
+        name: String,
+        /// What was attempted.
+        what: String,
+        /// The OS error.
+        error: String,
+    },
+    /// The segment is not a plc-vars segment of this format version.
+    Format {
+        /// Segment.
+        name: String,
+        /// What was found.
+        found: String,
+    },
+    /// The segment holds another declaration than this program was compiled with.
+    LayoutMismatch {
+        /// Segment.
+        name: String,
+        /// This program's layout hash.
+        expected: u64,
+        /// The segment's.
+        found: u64,
+    },
+    /// The segment is smaller than its header says.
+    TooSmall {
+        /// Segment.
+        name: String,
+        /// Its length.
+        len: usize,
+        /// The length needed.
+        needed: usize,
+    },
+    /// The segment's descriptor cannot be read.
+    Corrupt {
+        /// Segment.
+        name: String,
+        /// What is wrong.
+        why: String,
+    },
+    /// The owning program is gone (no live process holds the segment's lock).
+    OwnerGone(String),
+    /// A new owner took the segment over since this handle attached.
+    Replaced(String),
+    /// The owner stayed in the middle of a write for longer than a reader waits.
+    Stuck(String),
+    /// No variable of this name.
+    UnknownVariable {
+        /// Segment.
+        segment: String,
+        /// The name asked for.
+        variable: String,
+    },
+    /// The variable may not be written from outside.
+    NotWritable {
+        /// Variable.
+        variable: String,
+        /// Why: read-only, input or status.
+        reason: &'static str,
+    },
+    /// The value does not fit the variable.
+    Value {
+        /// Variable.
+        variable: String,
+        /// What is wrong.
+        error: ValueError,
+    },
+    /// The element is beyond the array.
+    ElementOutOfRange {
+        /// Variable.
+        variable: String,
+        /// The element asked for.
+        element: usize,
+        /// Elements of the variable.
+        len: usize,
+    },
+    /// The mailbox is full: the owner has not applied earlier writes yet.
+    MailboxFull(String),
+    /// The owner skipped this write because it was not committed in time.
+    WriteReclaimed(String),
+    /// Only the owner may do this.
+    NotOwner(String),
+}
+
+impl ShmError {
+    pub(crate) fn not_writable(variable: &str, read_only: bool, dir: Direction) -> ShmError {
+        let reason = if read_only {
+            "it is read-only"
+        } else if dir == Direction::Input {
+            "it is an input: the hardware writes it every cycle"
+        } else {
+            "it is a status variable: the program reports it"
+        };
+        ShmError::NotWritable {
+            variable: variable.to_string(),
+            reason,
+        }
+    }
+}
+
+impl fmt::Display for ShmError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ShmError::BadName(n) => write!(
+                f,
+                "invalid segment name `{n}`: use letters, digits, `_`, `-` and `.`"
+            ),
+            ShmError::NotFound(n) => write!(
+                f,
+                "no segment `{n}`: is the program running? (`plc list` shows the running segments)"
+            ),
+            ShmError::OwnerAlive { name, pid } => write!(
+                f,
+                "segment `{name}` is owned by a running process (pid {pid}): stop it first or \
+                 choose another segment name"
+            ),
+            ShmError::Os { name, what, error } => write!(f, "segment `{name}`: {what}: {error}"),
+            ShmError::Format { name, found } => write!(
+                f,
+                "segment `{name}` is not a plc-vars segment of format {}: {found}; rebuild the \
+                 tool and the program from the same plc-vars version",
+                plc_rules::layout::FORMAT_VERSION
+            ),
+            ShmError::LayoutMismatch {
+                name,
+                expected,
+                found,
+            } => write!(
+                f,
+                "segment `{name}` holds another variable layout (hash {found:016x}, this program \
+                 expects {expected:016x}): rebuild this program from the running program's \
+                 declaration, or use a tool that reads the descriptor (`plc`)"
+            ),
+            ShmError::TooSmall { name, len, needed } => write!(
+                f,
+                "segment `{name}` is {len} bytes but its header needs {needed}: it is damaged; \
+                 restart the program that owns it"
+            ),
+            ShmError::Corrupt { name, why } => write!(
+                f,
+                "segment `{name}` has an unreadable descriptor ({why}): restart the program that \
+                 owns it"
+            ),
+            ShmError::OwnerGone(n) => write!(
+                f,
+                "the program that owned segment `{n}` is gone; restart it (a new owner takes the \
+                 segment over)"
+            ),
+            ShmError::Replaced(n) => write!(
+                f,
+                "segment `{n}` was taken over by a new owner: attach again"
+            ),
+            ShmError::Stuck(n) => write!(
+                f,
+                "segment `{n}`: the owner stayed in the middle of a write (it may have died \
+                 while publishing); attach again once it is restarted"
+            ),
+            ShmError::UnknownVariable { segment, variable } => write!(
+                f,
+                "segment `{segment}` has no variable `{variable}` (`plc list {segment}` shows them)"
+            ),
+            ShmError::NotWritable { variable, reason } => {
+                write!(f, "`{variable}` cannot be written: {reason}")
+            }
+            ShmError::Value { variable, error } => write!(f, "`{variable}`: {error}"),
+            ShmError::ElementOutOfRange {
+                variable,
+                element,
+                len,
+            } => write!(
+                f,
+                "`{variable}` has {len} elements: element {element} is out of range 0..{len}"
+            ),
+            ShmError::MailboxFull(n) => write!(
+                f,
+                "the mailbox of segment `{n}` is full: the program has not applied earlier \
+                 writes yet (is it running?); try again"
+            ),
+            ShmError::WriteReclaimed(n) => write!(
+                f,
+                "segment `{n}`: the write took too long and was skipped by the owner; try again"
+            ),
+            ShmError::NotOwner(n) => {
+                write!(f, "only the program that created segment `{n}` may do this")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ShmError {}

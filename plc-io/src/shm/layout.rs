@@ -1,0 +1,142 @@
+//! Where everything is in a segment, and atomic access to the shared words.
+//!
+//! ```text
+//! 0     header   magic, format version, layout hash, image size, generation, seqlock
+//!                sequence, descriptor offset and length            (8 x u64)
+//! 64    status   owner pid, state, period, cycle count, cycle times, overruns, bus state
+//!                and flags, heartbeat, mailbox counters            (16 x u64)
+//! 192   image    T::Image, padded to 8 bytes
+//! ...   mailbox  head, tail, reclaimed, capacity (4 x u64), then SLOTS slots
+//! ...   descriptor, JSON
+//! ```
+//! Every shared word is a naturally aligned `u64` used only through `AtomicU64`.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// "PLCVARS1", little endian.
+pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS1");
+/// Written over the magic when a new owner replaces the segment: readers still mapping the old
+/// one learn to re-attach.
+pub const MAGIC_REPLACED: u64 = u64::from_le_bytes(*b"PLCGONE!");
+
+pub const H_MAGIC: usize = 0;
+pub const H_VERSION: usize = 8;
+pub const H_LAYOUT_HASH: usize = 16;
+pub const H_IMAGE_SIZE: usize = 24;
+pub const H_GENERATION: usize = 32;
+pub const H_SEQ: usize = 40;
+pub const H_DESC_OFFSET: usize = 48;
+pub const H_DESC_LEN: usize = 56;
+
+pub const STATUS: usize = 64;
+pub const S_PID: usize = STATUS;
+pub const S_STATE: usize = STATUS + 8;
+pub const S_PERIOD_NS: usize = STATUS + 16;
+pub const S_CYCLES: usize = STATUS + 24;
+pub const S_LAST_NS: usize = STATUS + 32;
+pub const S_MIN_NS: usize = STATUS + 40;
+pub const S_MAX_NS: usize = STATUS + 48;
+pub const S_MEAN_NS: usize = STATUS + 56;
+pub const S_OVERRUNS: usize = STATUS + 64;
+pub const S_BUS_STATE: usize = STATUS + 72;
+pub const S_BUS_FLAGS: usize = STATUS + 80;
+pub const S_HEARTBEAT_NS: usize = STATUS + 88;
+pub const S_MB_APPLIED: usize = STATUS + 96;
+pub const S_MB_REJECTED: usize = STATUS + 104;
+
+pub const IMAGE: usize = 192;
+
+/// Mailbox slots per segment (part of the format).
+pub const SLOTS: usize = 64;
+/// Bytes of one slot: sequence, index, element, kind, text length, number, text.
+pub const SLOT_SIZE: usize = 8 + 4 + 4 + 4 + 4 + 8 + 256;
+
+pub const fn pad8(n: usize) -> usize {
+    n.div_ceil(8) * 8
+}
+
+/// Offsets that depend on the image size.
+#[derive(Clone, Copy, Debug)]
+pub struct Offsets {
+    pub image_size: usize,
+    pub mailbox: usize,
+    pub slots: usize,
+    pub descriptor: usize,
+}
+
+impl Offsets {
+    pub const fn new(image_size: usize) -> Self {
+        let mailbox = IMAGE + pad8(image_size);
+        let slots = mailbox + 32;
+        let descriptor = slots + SLOTS * SLOT_SIZE;
+        Offsets {
+            image_size,
+            mailbox,
+            slots,
+            descriptor,
+        }
+    }
+
+    pub const fn mb_head(&self) -> usize {
+        self.mailbox
+    }
+    pub const fn mb_tail(&self) -> usize {
+        self.mailbox + 8
+    }
+    pub const fn mb_reclaimed(&self) -> usize {
+        self.mailbox + 16
+    }
+    pub const fn slot(&self, i: usize) -> usize {
+        self.slots + (i % SLOTS) * SLOT_SIZE
+    }
+}
+
+/// A mapped segment's base address; all access goes through atomics.
+#[derive(Clone, Copy, Debug)]
+pub struct Base {
+    ptr: *mut u8,
+    len: usize,
+}
+
+// SAFETY: `Base` is an address into a shared mapping that every user touches only through
+// atomic operations; sending it to another thread is as safe as sharing the mapping itself.
+unsafe impl Send for Base {}
+// SAFETY: as above: no plain reads or writes are done through it.
+unsafe impl Sync for Base {}
+
+impl Base {
+    /// # Safety
+    /// `ptr` must point to a mapping of at least `len` bytes, 8-byte aligned, that stays mapped
+    /// while this `Base` is used.
+    pub unsafe fn new(ptr: *mut u8, len: usize) -> Self {
+        Base { ptr, len }
+    }
+
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    pub fn ptr(&self) -> *mut u8 {
+        self.ptr
+    }
+
+    /// The `u64` at `offset` as an atomic.
+    pub fn word(&self, offset: usize) -> &AtomicU64 {
+        assert!(
+            offset.is_multiple_of(8) && offset + 8 <= self.len,
+            "word {offset} outside segment"
+        );
+        // SAFETY: in bounds and 8-aligned (checked above; the mapping is page aligned), and the
+        // mapping outlives `self` (contract of `new`). AtomicU64 has the layout of u64, and
+        // every process accesses these bytes only atomically.
+        unsafe { &*(self.ptr.add(offset) as *const AtomicU64) }
+    }
+
+    pub fn load(&self, offset: usize) -> u64 {
+        self.word(offset).load(Ordering::Acquire)
+    }
+
+    pub fn store(&self, offset: usize, v: u64) {
+        self.word(offset).store(v, Ordering::Release)
+    }
+}

@@ -1,0 +1,260 @@
+//! `SharedGlobalMemory<T>`: a program's variables in a named segment, for its owner (the
+//! control program, which publishes) and for typed readers in other processes.
+
+use super::descriptor::LayoutDescriptor;
+use super::layout::*;
+use super::mailbox::{self, Consumer};
+use super::segment::{self, Segment};
+use super::status::{CycleReport, OwnerState, RunState, Status, now_ns, write_report};
+use super::view::View;
+use super::{ShmError, bytes};
+use plc_core::{GlobalMemory, Value};
+use std::marker::PhantomData;
+use std::mem::{MaybeUninit, size_of};
+use std::sync::atomic::{Ordering, fence};
+
+/// A `GlobalMemory` struct in a named shared-memory segment.
+///
+/// The owner [`create`](Self::create)s it and [`publish`](Self::publish)es every cycle; other
+/// processes [`attach`](Self::attach) and take consistent [`snapshot`](Self::snapshot)s (a
+/// seqlock: never a torn image), read single variables, and post writes to the mailbox, which
+/// the owner applies at the start of its next cycle through [`GlobalMemory::set`].
+///
+/// ```
+/// use plc_core::GlobalMemory;
+/// use plc_io::shm::SharedGlobalMemory;
+///
+/// #[derive(GlobalMemory, Debug, Clone)]
+/// struct Gm {
+///     count: u32,
+///     #[plc(direction = "command")]
+///     setpoint: f32,
+/// }
+///
+/// let name = format!("doc_example_{}", std::process::id());
+/// let mut owner = SharedGlobalMemory::<Gm>::create(&name)?;
+/// let mut gm = Gm::default();
+/// gm.count = 7;
+/// owner.publish(&gm)?;
+///
+/// let reader = SharedGlobalMemory::<Gm>::attach(&name)?; // usually another process
+/// assert_eq!(reader.snapshot()?.count, 7);
+/// reader.write("setpoint", plc_core::Value::Real(2.5))?;
+/// assert_eq!(owner.apply_mailbox(&mut gm), 1);
+/// assert_eq!(gm.setpoint, 2.5);
+/// # Ok::<(), plc_io::shm::ShmError>(())
+/// ```
+pub struct SharedGlobalMemory<T: GlobalMemory> {
+    view: View,
+    consumer: Option<Consumer>,
+    _t: PhantomData<fn() -> T>,
+}
+
+impl<T: GlobalMemory> SharedGlobalMemory<T> {
+    /// Creates segment `name` as its owner (mode 0600). A segment left by a dead owner is taken
+    /// over with a new generation; one owned by a live process is refused.
+    pub fn create(name: &str) -> Result<Self, ShmError> {
+        let name = segment::normalise(name)?;
+        let desc = LayoutDescriptor::of::<T>();
+        let json = serde_json::to_vec(&desc).map_err(|e| ShmError::Corrupt {
+            name: name.clone(),
+            why: e.to_string(),
+        })?;
+        let off = Offsets::new(size_of::<T::Image>());
+        let (seg, previous) = Segment::create(&name, off.descriptor + json.len())?;
+        let base = seg.base();
+        base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
+        base.store(H_LAYOUT_HASH, T::LAYOUT_HASH);
+        base.store(H_IMAGE_SIZE, off.image_size as u64);
+        let generation = previous.map_or(1, |g| g + 1);
+        base.store(H_GENERATION, generation);
+        base.store(H_SEQ, 0);
+        base.store(H_DESC_OFFSET, off.descriptor as u64);
+        base.store(H_DESC_LEN, json.len() as u64);
+        base.store(S_PID, std::process::id() as u64);
+        base.store(S_STATE, RunState::Starting as u64);
+        base.store(S_HEARTBEAT_NS, now_ns());
+        bytes::store(&base, off.descriptor, &json);
+        mailbox::init(&base, &off);
+        // Last, so an attaching reader sees either nothing or a complete segment.
+        base.store(H_MAGIC, MAGIC);
+        Ok(SharedGlobalMemory {
+            view: View {
+                seg,
+                base,
+                off,
+                desc,
+                generation,
+                checked_alive: Default::default(),
+            },
+            consumer: Some(Consumer::default()),
+            _t: PhantomData,
+        })
+    }
+
+    /// Attaches to segment `name`, checking that it holds exactly `T`'s layout.
+    pub fn attach(name: &str) -> Result<Self, ShmError> {
+        let view = View::attach(name)?;
+        if view.desc.layout_hash != T::LAYOUT_HASH || view.off.image_size != size_of::<T::Image>() {
+            return Err(ShmError::LayoutMismatch {
+                name: view.name().to_string(),
+                expected: T::LAYOUT_HASH,
+                found: view.desc.layout_hash,
+            });
+        }
+        Ok(SharedGlobalMemory {
+            view,
+            consumer: None,
+            _t: PhantomData,
+        })
+    }
+
+    /// The segment's name.
+    pub fn name(&self) -> &str {
+        self.view.name()
+    }
+
+    /// Whether this handle owns the segment.
+    pub fn is_owner(&self) -> bool {
+        self.consumer.is_some()
+    }
+
+    /// The generation: 1 for a fresh segment, one more at each takeover.
+    pub fn generation(&self) -> u64 {
+        self.view.generation
+    }
+
+    fn owner_only(&self) -> Result<(), ShmError> {
+        if self.is_owner() {
+            Ok(())
+        } else {
+            Err(ShmError::NotOwner(self.name().to_string()))
+        }
+    }
+
+    fn image_ptr(&self) -> *mut T::Image {
+        // SAFETY: IMAGE is inside the mapping (checked at create/attach) and the image type has
+        // alignment 1.
+        unsafe { self.view.base.ptr().add(IMAGE) as *mut T::Image }
+    }
+
+    /// Publishes `gm` (owner only): the image goes out under the seqlock, through atomics.
+    pub fn publish(&self, gm: &T) -> Result<(), ShmError> {
+        self.owner_only()?;
+        let image = gm.to_image();
+        self.publish_image(&image);
+        Ok(())
+    }
+
+    /// Publishes an image already built (the runtime reuses one buffer).
+    pub fn publish_image(&self, image: &T::Image) {
+        let seq = self.view.base.word(H_SEQ);
+        let s = seq.load(Ordering::Relaxed);
+        seq.store(s + 1, Ordering::Relaxed);
+        fence(Ordering::Release);
+        // SAFETY: the destination is the image area of our mapping (see `image_ptr`); readers
+        // only access it atomically, and atomic_store writes it with atomic operations.
+        unsafe { atomic_memcpy::atomic_store(self.image_ptr(), *image, Ordering::Relaxed) };
+        seq.store(s + 2, Ordering::Release);
+        self.view.base.store(S_HEARTBEAT_NS, now_ns());
+    }
+
+    /// A consistent copy of the variables: retries while the owner writes, never torn; an error
+    /// if the owner is gone, was replaced, or stays mid-write.
+    pub fn snapshot(&self) -> Result<T, ShmError> {
+        let image = self.snapshot_image()?;
+        Ok(T::from_image(&image))
+    }
+
+    /// A consistent copy of the image.
+    pub fn snapshot_image(&self) -> Result<T::Image, ShmError> {
+        let raw: MaybeUninit<T::Image> = self.view.consistent(|| {
+            // SAFETY: the source is the image area of the mapping, read with atomic loads only.
+            unsafe {
+                atomic_memcpy::atomic_load(self.image_ptr() as *const T::Image, Ordering::Relaxed)
+            }
+        })?;
+        // SAFETY: every byte was loaded from initialised shared memory, and `T::Image` is
+        // `FromBytes`: any bytes are a valid value.
+        Ok(unsafe { raw.assume_init() })
+    }
+
+    /// One variable's value (element 0 of an array), by symbol name (case-insensitive).
+    pub fn read(&self, name: &str) -> Result<Value, ShmError> {
+        self.view.read_element(name, 0)
+    }
+
+    /// One element of a variable.
+    pub fn read_element(&self, name: &str, element: usize) -> Result<Value, ShmError> {
+        self.view.read_element(name, element)
+    }
+
+    /// Posts a write to the mailbox; refused up front for unknown names, read-only, input and
+    /// status variables, wrong kinds, out-of-range values and over-long strings.
+    pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
+        self.view.write_element(name, 0, value)
+    }
+
+    /// Posts a write of one array element.
+    pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+        self.view.write_element(name, element, value)
+    }
+
+    /// Applies the mailbox's requests to `gm` in order (owner only; 0 for readers). Returns
+    /// how many were applied. A request `set` refuses is counted, not applied.
+    pub fn apply_mailbox(&mut self, gm: &mut T) -> usize {
+        let Some(consumer) = self.consumer.as_mut() else {
+            return 0;
+        };
+        let base = self.view.base;
+        let (mut ok, mut bad) = (0u64, 0u64);
+        let n = consumer.drain(&base, &self.view.off, |r| {
+            match gm.set(r.index, r.element, r.value) {
+                Ok(()) => ok += 1,
+                Err(_) => bad += 1,
+            }
+        });
+        if ok > 0 {
+            base.word(S_MB_APPLIED).fetch_add(ok, Ordering::Relaxed);
+        }
+        if bad > 0 {
+            base.word(S_MB_REJECTED).fetch_add(bad, Ordering::Relaxed);
+        }
+        n
+    }
+
+    /// Publishes the cycle figures and a heartbeat (owner only).
+    pub fn report(&self, report: &CycleReport) {
+        if self.is_owner() {
+            write_report(&self.view.base, report);
+        }
+    }
+
+    /// Sets the state the owner reports (owner only).
+    pub fn set_run_state(&self, state: RunState) {
+        if self.is_owner() {
+            self.view.base.store(S_STATE, state as u64);
+        }
+    }
+
+    /// The status block.
+    pub fn status(&self) -> Status {
+        self.view.status()
+    }
+
+    /// The owner's state as tools show it.
+    pub fn owner_state(&self) -> OwnerState {
+        self.view.owner_state()
+    }
+
+    /// The layout descriptor stored in the segment.
+    pub fn descriptor(&self) -> &LayoutDescriptor {
+        &self.view.desc
+    }
+}
+
+impl<T: GlobalMemory> Drop for SharedGlobalMemory<T> {
+    fn drop(&mut self) {
+        self.set_run_state(RunState::Stopped);
+    }
+}

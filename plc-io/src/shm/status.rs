@@ -1,0 +1,213 @@
+//! The status block: what the owner reports about its cycle, and the one owner state tools show.
+
+use super::layout::*;
+use std::fmt;
+use std::time::{Duration, SystemTime, UNIX_EPOCH};
+
+/// The owner's own account of itself.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RunState {
+    /// Created, first cycle not done.
+    Starting = 0,
+    /// Cycling.
+    Running = 1,
+    /// The program failed (a panic in its cycle); outputs were zeroed.
+    Faulted = 2,
+    /// Stopped cleanly.
+    Stopped = 3,
+}
+
+impl RunState {
+    fn from_code(c: u64) -> RunState {
+        match c {
+            1 => RunState::Running,
+            2 => RunState::Faulted,
+            3 => RunState::Stopped,
+            _ => RunState::Starting,
+        }
+    }
+}
+
+/// The state tools show: the owner's account checked against its lock and heartbeat.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum OwnerState {
+    /// Alive and cycling.
+    Running,
+    /// Alive, but its heartbeat has not advanced for a while.
+    Stalled,
+    /// Alive, and reports a fault.
+    Faulted,
+    /// Alive, and reports it stopped.
+    Stopped,
+    /// No live process holds the segment.
+    Gone,
+}
+
+impl OwnerState {
+    /// Lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            OwnerState::Running => "running",
+            OwnerState::Stalled => "stalled",
+            OwnerState::Faulted => "faulted",
+            OwnerState::Stopped => "stopped",
+            OwnerState::Gone => "gone",
+        }
+    }
+}
+
+impl fmt::Display for OwnerState {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.name())
+    }
+}
+
+/// Names of bus states, by code (the runtime stores the code).
+pub const BUS_STATES: [&str; 8] = [
+    "NONE",
+    "STOPPED",
+    "INIT",
+    "PRE-OP",
+    "SAFE-OP",
+    "OP",
+    "MIXED",
+    "NO-ANSWER",
+];
+
+/// Bus flag: the bus is faulty.
+pub const BUS_FAULT: u64 = 1;
+/// Bus flag: this cycle's inputs are valid.
+pub const INPUTS_VALID: u64 = 2;
+
+/// A snapshot of the status block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Status {
+    /// Owner process id.
+    pub pid: u64,
+    /// The owner's own account.
+    pub run_state: RunState,
+    /// Cycle period.
+    pub period: Duration,
+    /// Cycles done.
+    pub cycle_count: u64,
+    /// Last cycle's working time.
+    pub last: Duration,
+    /// Shortest cycle.
+    pub min: Duration,
+    /// Longest cycle.
+    pub max: Duration,
+    /// Mean cycle.
+    pub mean: Duration,
+    /// Cycles that overran the period.
+    pub overruns: u64,
+    /// Bus state name (`OP`, `SAFE-OP`, ... or `NONE` without a bus).
+    pub bus_state: &'static str,
+    /// The bus is faulty.
+    pub bus_fault: bool,
+    /// This cycle's inputs are valid.
+    pub inputs_valid: bool,
+    /// Time since the last heartbeat.
+    pub heartbeat_age: Duration,
+    /// Mailbox writes applied.
+    pub writes_applied: u64,
+    /// Mailbox writes refused by the program's `set`.
+    pub writes_rejected: u64,
+    /// Mailbox slots reclaimed from writers that never committed.
+    pub writes_reclaimed: u64,
+    /// Generation: increases when a new owner takes the segment over.
+    pub generation: u64,
+}
+
+pub(crate) fn now_ns() -> u64 {
+    SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos() as u64)
+}
+
+impl Status {
+    pub(crate) fn read(base: &Base, off: &Offsets) -> Status {
+        let d = |o| Duration::from_nanos(base.load(o));
+        let flags = base.load(S_BUS_FLAGS);
+        Status {
+            pid: base.load(S_PID),
+            run_state: RunState::from_code(base.load(S_STATE)),
+            period: d(S_PERIOD_NS),
+            cycle_count: base.load(S_CYCLES),
+            last: d(S_LAST_NS),
+            min: d(S_MIN_NS),
+            max: d(S_MAX_NS),
+            mean: d(S_MEAN_NS),
+            overruns: base.load(S_OVERRUNS),
+            bus_state: BUS_STATES
+                .get(base.load(S_BUS_STATE) as usize)
+                .copied()
+                .unwrap_or("NONE"),
+            bus_fault: flags & BUS_FAULT != 0,
+            inputs_valid: flags & INPUTS_VALID != 0,
+            heartbeat_age: Duration::from_nanos(now_ns().saturating_sub(base.load(S_HEARTBEAT_NS))),
+            writes_applied: base.load(S_MB_APPLIED),
+            writes_rejected: base.load(S_MB_REJECTED),
+            writes_reclaimed: base.load(off.mb_reclaimed()),
+            generation: base.load(H_GENERATION),
+        }
+    }
+
+    /// The state tools show, given whether the owner's lock is held.
+    pub fn owner_state(&self, alive: bool) -> OwnerState {
+        if !alive {
+            return OwnerState::Gone;
+        }
+        match self.run_state {
+            RunState::Faulted => OwnerState::Faulted,
+            RunState::Stopped => OwnerState::Stopped,
+            _ => {
+                // Stalled: no heartbeat for ten periods, and at least half a second.
+                let limit = (self.period * 10).max(Duration::from_millis(500));
+                if self.heartbeat_age > limit {
+                    OwnerState::Stalled
+                } else {
+                    OwnerState::Running
+                }
+            }
+        }
+    }
+}
+
+/// Cycle figures the owner publishes each cycle.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CycleReport {
+    /// Cycle period.
+    pub period: Duration,
+    /// Cycles done.
+    pub cycle_count: u64,
+    /// Last cycle's working time.
+    pub last: Duration,
+    /// Shortest.
+    pub min: Duration,
+    /// Longest.
+    pub max: Duration,
+    /// Mean.
+    pub mean: Duration,
+    /// Overruns.
+    pub overruns: u64,
+    /// Bus state code (index into [`BUS_STATES`]).
+    pub bus_state: u8,
+    /// Bus faulty.
+    pub bus_fault: bool,
+    /// Inputs valid.
+    pub inputs_valid: bool,
+}
+
+pub(crate) fn write_report(base: &Base, r: &CycleReport) {
+    base.store(S_PERIOD_NS, r.period.as_nanos() as u64);
+    base.store(S_CYCLES, r.cycle_count);
+    base.store(S_LAST_NS, r.last.as_nanos() as u64);
+    base.store(S_MIN_NS, r.min.as_nanos() as u64);
+    base.store(S_MAX_NS, r.max.as_nanos() as u64);
+    base.store(S_MEAN_NS, r.mean.as_nanos() as u64);
+    base.store(S_OVERRUNS, r.overruns);
+    base.store(S_BUS_STATE, r.bus_state as u64);
+    let flags = (r.bus_fault as u64 * BUS_FAULT) | (r.inputs_valid as u64 * INPUTS_VALID);
+    base.store(S_BUS_FLAGS, flags);
+    base.store(S_HEARTBEAT_NS, now_ns());
+}

@@ -1,0 +1,246 @@
+//! An attached segment, typed or not: header checks, seqlock snapshots, owner liveness and
+//! mailbox writes. `SharedGlobalMemory::attach` and `DynSegment::attach` both use it.
+
+use super::codec;
+use super::descriptor::LayoutDescriptor;
+use super::layout::*;
+use super::mailbox::{self, PostError, Request};
+use super::segment::{self, Segment};
+use super::status::{OwnerState, Status};
+use super::{ShmError, bytes};
+use plc_core::Value;
+use std::cell::Cell;
+use std::sync::atomic::{Ordering, fence};
+use std::time::{Duration, Instant};
+
+/// How long a reader waits for a consistent image before it reports the owner stuck.
+pub const SNAPSHOT_PATIENCE: Duration = Duration::from_millis(500);
+/// How often a reader re-checks that the owner is alive.
+const LIVENESS_EVERY: Duration = Duration::from_millis(20);
+
+pub(crate) struct View {
+    pub seg: Segment,
+    pub base: Base,
+    pub off: Offsets,
+    pub desc: LayoutDescriptor,
+    pub generation: u64,
+    pub checked_alive: Cell<Option<Instant>>,
+}
+
+impl View {
+    pub fn attach(name: &str) -> Result<View, ShmError> {
+        let name = segment::normalise(name)?;
+        let seg = Segment::open(&name)?;
+        let base = seg.base();
+        if base.len() < IMAGE {
+            return Err(ShmError::TooSmall {
+                name,
+                len: base.len(),
+                needed: IMAGE,
+            });
+        }
+        // A new owner writes the magic last: give it a moment.
+        let start = Instant::now();
+        let magic = loop {
+            let m = base.load(H_MAGIC);
+            if m != 0 || start.elapsed() > Duration::from_secs(1) {
+                break m;
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        };
+        if magic == MAGIC_REPLACED {
+            return Err(ShmError::Replaced(name));
+        }
+        if magic != MAGIC {
+            return Err(ShmError::Format {
+                name,
+                found: format!("magic {magic:016x}"),
+            });
+        }
+        let version = base.load(H_VERSION);
+        if version != plc_rules::layout::FORMAT_VERSION as u64 {
+            return Err(ShmError::Format {
+                name,
+                found: format!("format version {version}"),
+            });
+        }
+        let image_size = base.load(H_IMAGE_SIZE) as usize;
+        let off = Offsets::new(image_size);
+        let (d_off, d_len) = (
+            base.load(H_DESC_OFFSET) as usize,
+            base.load(H_DESC_LEN) as usize,
+        );
+        let needed = off.descriptor.max(d_off.saturating_add(d_len));
+        if base.len() < needed || d_off != off.descriptor {
+            return Err(ShmError::TooSmall {
+                name,
+                len: base.len(),
+                needed,
+            });
+        }
+        let mut json = vec![0u8; d_len];
+        bytes::load(&base, d_off, &mut json);
+        let desc: LayoutDescriptor =
+            serde_json::from_slice(&json).map_err(|e| ShmError::Corrupt {
+                name: name.clone(),
+                why: e.to_string(),
+            })?;
+        let hash = base.load(H_LAYOUT_HASH);
+        if desc.computed_hash() != hash || desc.layout_hash != hash {
+            return Err(ShmError::Corrupt {
+                name,
+                why: "the descriptor does not match the layout hash".into(),
+            });
+        }
+        if desc.image_size != image_size
+            || desc
+                .variables
+                .iter()
+                .any(|v| v.offset + v.size > image_size)
+        {
+            return Err(ShmError::Corrupt {
+                name,
+                why: "a variable lies outside the image".into(),
+            });
+        }
+        Ok(View {
+            generation: base.load(H_GENERATION),
+            seg,
+            base,
+            off,
+            desc,
+            checked_alive: Cell::new(None),
+        })
+    }
+
+    pub fn name(&self) -> &str {
+        self.seg.name()
+    }
+
+    /// Errors if the owner was replaced or is gone (liveness checked at most every 20 ms).
+    pub fn check_owner(&self) -> Result<(), ShmError> {
+        if self.base.load(H_MAGIC) != MAGIC || self.base.load(H_GENERATION) != self.generation {
+            return Err(ShmError::Replaced(self.name().to_string()));
+        }
+        if self.seg.is_owner() {
+            return Ok(());
+        }
+        let fresh = self
+            .checked_alive
+            .get()
+            .is_some_and(|t| t.elapsed() < LIVENESS_EVERY);
+        if !fresh {
+            if !segment::owner_alive(self.name()) {
+                return Err(ShmError::OwnerGone(self.name().to_string()));
+            }
+            self.checked_alive.set(Some(Instant::now()));
+        }
+        Ok(())
+    }
+
+    /// Reads a consistent image with `read`, retrying while the owner writes.
+    pub fn consistent<R>(&self, mut read: impl FnMut() -> R) -> Result<R, ShmError> {
+        self.check_owner()?;
+        let seq = self.base.word(H_SEQ);
+        let start = Instant::now();
+        let mut spins = 0u32;
+        loop {
+            let s1 = seq.load(Ordering::Acquire);
+            if s1.is_multiple_of(2) {
+                let r = read();
+                fence(Ordering::Acquire);
+                if seq.load(Ordering::Relaxed) == s1 {
+                    return Ok(r);
+                }
+            }
+            spins += 1;
+            if spins.is_multiple_of(64) {
+                if start.elapsed() > SNAPSHOT_PATIENCE {
+                    self.check_owner()?;
+                    return Err(ShmError::Stuck(self.name().to_string()));
+                }
+                std::thread::yield_now();
+            } else {
+                std::hint::spin_loop();
+            }
+        }
+    }
+
+    pub fn snapshot_bytes(&self) -> Result<Vec<u8>, ShmError> {
+        let mut buf = vec![0u8; self.off.image_size];
+        self.consistent(|| bytes::load(&self.base, IMAGE, &mut buf))?;
+        Ok(buf)
+    }
+
+    pub fn var_index(&self, name: &str) -> Result<usize, ShmError> {
+        self.desc
+            .index_of(name)
+            .ok_or_else(|| ShmError::UnknownVariable {
+                segment: self.name().to_string(),
+                variable: name.to_string(),
+            })
+    }
+
+    pub fn read_element(&self, name: &str, element: usize) -> Result<Value, ShmError> {
+        let i = self.var_index(name)?;
+        let var = &self.desc.variables[i];
+        if element >= var.elements() {
+            return Err(ShmError::ElementOutOfRange {
+                variable: var.name.clone(),
+                element,
+                len: var.elements(),
+            });
+        }
+        let image = self.snapshot_bytes()?;
+        Ok(codec::decode(&image, var, element).unwrap_or(Value::Bool(false)))
+    }
+
+    /// Checks a write as the owner would and posts it to the mailbox.
+    pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+        let index = self.var_index(name)?;
+        let var = &self.desc.variables[index];
+        if !var.writable_from_outside() {
+            return Err(ShmError::not_writable(
+                &var.name,
+                var.access == plc_core::Access::ReadOnly,
+                var.direction,
+            ));
+        }
+        if element >= var.elements() {
+            return Err(ShmError::ElementOutOfRange {
+                variable: var.name.clone(),
+                element,
+                len: var.elements(),
+            });
+        }
+        let value = value
+            .fit(var.iec_type, var.string_capacity())
+            .map_err(|error| ShmError::Value {
+                variable: var.name.clone(),
+                error,
+            })?;
+        self.check_owner()?;
+        let request = Request {
+            index,
+            element,
+            value,
+        };
+        mailbox::post(&self.base, &self.off, &request).map_err(|e| match e {
+            PostError::Full => ShmError::MailboxFull(self.name().to_string()),
+            PostError::Reclaimed => ShmError::WriteReclaimed(self.name().to_string()),
+        })?;
+        Ok(())
+    }
+
+    pub fn status(&self) -> Status {
+        Status::read(&self.base, &self.off)
+    }
+
+    pub fn owner_state(&self) -> OwnerState {
+        let alive = self.seg.is_owner() || segment::owner_alive(self.name());
+        if self.base.load(H_MAGIC) != MAGIC {
+            return OwnerState::Gone;
+        }
+        self.status().owner_state(alive)
+    }
+}
