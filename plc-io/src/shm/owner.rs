@@ -3,12 +3,12 @@
 
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
-use super::mailbox::{self, Consumer};
+use super::mailbox::{self, Consumer, Request};
 use super::segment::{self, Segment};
 use super::status::{CycleReport, OwnerState, RunState, Status, now_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
-use plc_core::{GlobalMemory, Value};
+use plc_core::{GlobalMemory, SetError, Value};
 use std::marker::PhantomData;
 use std::mem::{MaybeUninit, size_of};
 use std::sync::atomic::{Ordering, fence};
@@ -201,18 +201,30 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     }
 
     /// Applies the mailbox's requests to `gm` in order (owner only; 0 for readers). Returns
-    /// how many were applied. A request `set` refuses is counted, not applied.
+    /// how many were taken. A request `set` refuses is counted, not applied.
     pub fn apply_mailbox(&mut self, gm: &mut T) -> usize {
+        self.apply_mailbox_with(gm, |_, _| {})
+    }
+
+    /// Like [`apply_mailbox`](Self::apply_mailbox), calling `audit` with each request and the
+    /// outcome of applying it (to log operator writes, for example).
+    pub fn apply_mailbox_with(
+        &mut self,
+        gm: &mut T,
+        mut audit: impl FnMut(&Request, &Result<(), SetError>),
+    ) -> usize {
         let Some(consumer) = self.consumer.as_mut() else {
             return 0;
         };
         let base = self.view.base;
         let (mut ok, mut bad) = (0u64, 0u64);
         let n = consumer.drain(&base, &self.view.off, |r| {
-            match gm.set(r.index, r.element, r.value) {
+            let result = gm.set(r.index, r.element, r.value);
+            match result {
                 Ok(()) => ok += 1,
                 Err(_) => bad += 1,
             }
+            audit(&r, &result);
         });
         if ok > 0 {
             base.word(S_MB_APPLIED).fetch_add(ok, Ordering::Relaxed);

@@ -1,0 +1,47 @@
+//! Helpers for tests that need a second process: the test binary runs itself again with
+//! `PLC_TEST_ROLE` set, and the test of that name plays the role.
+
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// Runs test `test` of this binary in a child process with role `role` and extra env vars.
+pub fn spawn_role(test: &str, role: &str, env: &[(&str, String)]) -> Child {
+    let mut cmd = Command::new(std::env::current_exe().expect("test binary path"));
+    cmd.args([test, "--exact", "--nocapture", "--test-threads=1"])
+        .env("PLC_TEST_ROLE", role)
+        .stdout(Stdio::null())
+        .stderr(Stdio::inherit());
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    cmd.spawn().expect("spawn child test process")
+}
+
+/// The role this process plays, if it is a child.
+pub fn role() -> Option<String> {
+    std::env::var("PLC_TEST_ROLE").ok()
+}
+
+/// A name unique to this test run.
+pub fn unique(name: &str) -> String {
+    format!("t_{name}_{}", std::process::id())
+}
+
+/// Polls `f` until it returns `Some`, for at most `limit`.
+pub fn wait_for<T>(limit: Duration, mut f: impl FnMut() -> Option<T>) -> T {
+    let start = Instant::now();
+    loop {
+        if let Some(v) = f() {
+            return v;
+        }
+        assert!(start.elapsed() < limit, "timed out after {limit:?}");
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
+/// SIGKILL, as a crash or `kill -9` would end a process.
+pub fn kill9(child: &mut Child) {
+    // SAFETY: sending a signal to a pid we spawned.
+    unsafe { libc::kill(child.id() as i32, libc::SIGKILL) };
+    let _ = child.wait();
+}
