@@ -12,7 +12,7 @@
 #[cfg(feature = "ethercat")]
 pub mod ethercat;
 pub mod retain;
-mod runtime;
+pub(crate) mod runtime;
 pub mod shm;
 
 pub use runtime::{

@@ -41,6 +41,7 @@
 mod backend;
 pub mod config;
 pub mod devices;
+mod io_backend;
 pub mod layout;
 pub mod resolve;
 

@@ -78,7 +78,7 @@ pub struct RuntimeBuilder<T> {
     segment: Option<String>,
     retain: Option<PathBuf>,
     retain_interval: Duration,
-    backend: Box<dyn IoBackend<T>>,
+    backend: Box<dyn IoBackend<T> + Send>,
     realtime: Option<i32>,
     max_cycles: Option<u64>,
     signals: bool,
@@ -151,7 +151,7 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
         self
     }
     /// The I/O backend (default: none).
-    pub fn backend(mut self, backend: impl IoBackend<T> + 'static) -> Self {
+    pub fn backend(mut self, backend: impl IoBackend<T> + Send + 'static) -> Self {
         self.backend = Box::new(backend);
         self
     }

@@ -1,0 +1,205 @@
+//! Retained variables: round trips, edits of the declaration, damaged files, and crashes at
+//! every step of a save.
+
+mod common;
+
+use common::{kill9, role, spawn_role};
+use plc_core::{FixedString, GlobalMemory, IecType};
+use plc_io::retain::{RetainError, RetainStore};
+use std::path::PathBuf;
+use std::time::Duration;
+
+fn temp_dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("plc-retain-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct V1 {
+    #[plc(nonvolatile, initial = 12.5)]
+    home_offset_mm: f64,
+    #[plc(nonvolatile)]
+    cycles: i16,
+    #[plc(nonvolatile)]
+    max_force: i32,
+    #[plc(nonvolatile)]
+    gain: f32,
+    #[plc(nonvolatile)]
+    old_name: u8,
+    #[plc(nonvolatile)]
+    table: [u16; 3],
+    #[plc(nonvolatile, initial = "A")]
+    recipe: FixedString<16>,
+    not_kept: u32,
+}
+
+/// The next version of the program: `cycles` widened INT -> DINT, `max_force` narrowed DINT ->
+/// INT, `gain` REAL -> LREAL, `old_name` renamed, `table` resized, `added` new.
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct V2 {
+    #[plc(nonvolatile, initial = 12.5)]
+    home_offset_mm: f64,
+    #[plc(nonvolatile)]
+    cycles: i32,
+    #[plc(nonvolatile, initial = 9)]
+    max_force: i16,
+    #[plc(nonvolatile)]
+    gain: f64,
+    #[plc(nonvolatile)]
+    new_name: u8,
+    #[plc(nonvolatile)]
+    table: [u16; 4],
+    #[plc(nonvolatile, initial = "A")]
+    recipe: FixedString<16>,
+    #[plc(nonvolatile, initial = 5)]
+    added: u8,
+}
+
+fn v1() -> V1 {
+    V1 {
+        home_offset_mm: 3.25,
+        cycles: -300,
+        max_force: 70_000,
+        gain: 0.5,
+        old_name: 8,
+        table: [1, 2, 3],
+        recipe: FixedString::from_str_truncate("steel \"S235\""),
+        not_kept: 99,
+    }
+}
+
+#[test]
+fn values_survive_a_restart() {
+    let store = RetainStore::new(temp_dir("roundtrip").join("m.retain"));
+    store.save(&v1()).unwrap();
+    let mut gm = V1::default();
+    let report = store.load(&mut gm).unwrap();
+    assert_eq!(
+        gm,
+        V1 {
+            not_kept: 0,
+            ..v1()
+        }
+    );
+    assert_eq!(report.restored.len(), 7);
+    assert!(report.new.is_empty() && report.removed.is_empty() && report.reset.is_empty());
+}
+
+#[test]
+fn a_missing_file_means_every_variable_is_new() {
+    let store = RetainStore::new(temp_dir("missing").join("none.retain"));
+    let mut gm = V1::default();
+    let report = store.load(&mut gm).unwrap();
+    assert_eq!(report.new.len(), 7);
+    assert_eq!(gm.home_offset_mm, 12.5);
+}
+
+#[test]
+fn edits_of_the_declaration_are_reported_and_widened_where_allowed() {
+    let store = RetainStore::new(temp_dir("schema").join("m.retain"));
+    store.save(&v1()).unwrap();
+    let mut gm = V2::default();
+    let r = store.load(&mut gm).unwrap();
+    assert_eq!(gm.home_offset_mm, 3.25);
+    assert_eq!(gm.cycles, -300, "INT widens to DINT");
+    assert_eq!(gm.gain, 0.5, "REAL widens to LREAL");
+    assert_eq!(gm.max_force, 9, "DINT does not narrow to INT: initial kept");
+    assert_eq!(gm.table, [0; 4], "a resized array keeps its initial values");
+    assert_eq!(gm.added, 5);
+    assert_eq!(gm.recipe, "steel \"S235\"");
+    assert_eq!(
+        r.converted,
+        [
+            ("cycles".to_string(), IecType::Int, IecType::Dint),
+            ("gain".to_string(), IecType::Real, IecType::Lreal)
+        ]
+    );
+    assert_eq!(r.removed, ["old_name"]);
+    assert_eq!(r.new, ["new_name", "added"]);
+    let reset: Vec<&str> = r.reset.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(reset, ["max_force", "table"]);
+    assert!(r.reset[0].1.contains("DINT to INT"));
+}
+
+#[test]
+fn a_damaged_file_is_an_error_naming_it_and_is_left_untouched() {
+    let dir = temp_dir("corrupt");
+    let path = dir.join("m.retain");
+    let store = RetainStore::new(&path);
+    store.save(&v1()).unwrap();
+    let mut bytes = std::fs::read(&path).unwrap();
+    let at = bytes.len() - 10;
+    bytes[at] ^= 1;
+    std::fs::write(&path, &bytes).unwrap();
+    let err = store.load(&mut V1::default()).unwrap_err();
+    assert!(matches!(err, RetainError::Corrupt { .. }));
+    assert!(err.to_string().contains(&path.display().to_string()));
+    assert_eq!(std::fs::read(&path).unwrap(), bytes, "kept as it was");
+
+    std::fs::write(&path, &bytes[..bytes.len() / 2]).unwrap();
+    assert!(matches!(
+        store.load(&mut V1::default()),
+        Err(RetainError::Corrupt { .. })
+    ));
+    std::fs::write(&path, b"hello").unwrap();
+    assert!(matches!(
+        store.load(&mut V1::default()),
+        Err(RetainError::Corrupt { .. })
+    ));
+}
+
+#[test]
+fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
+    if role().as_deref() == Some("saver") {
+        let store = RetainStore::new(std::env::var("RETAIN").unwrap());
+        let mut gm = v1();
+        gm.cycles = 2;
+        store.save(&gm).unwrap(); // aborts at the step PLC_RETAIN_FAULT names
+        return;
+    }
+    if role().as_deref() == Some("looper") {
+        let store = RetainStore::new(std::env::var("RETAIN").unwrap());
+        let mut gm = v1();
+        loop {
+            gm.cycles = gm.cycles.wrapping_add(1);
+            gm.table = [gm.cycles as u16; 3];
+            store.save(&gm).unwrap();
+        }
+    }
+    if role().is_some() {
+        return;
+    }
+    let dir = temp_dir("crash");
+    let path = dir.join("m.retain");
+    let store = RetainStore::new(&path);
+    let test = "a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file";
+    for (step, expect) in [("1", -300), ("2", 2)] {
+        store.save(&v1()).unwrap();
+        let env = [
+            ("RETAIN", path.display().to_string()),
+            ("PLC_RETAIN_FAULT", step.to_string()),
+        ];
+        let status = spawn_role(test, "saver", &env).wait().unwrap();
+        assert!(!status.success(), "the saver was stopped at step {step}");
+        let mut gm = V1::default();
+        store.load(&mut gm).unwrap();
+        assert_eq!(gm.cycles, expect, "fault at step {step}");
+    }
+    // And kill -9 at arbitrary moments while saving in a loop.
+    let env = [("RETAIN", path.display().to_string())];
+    for i in 0..40 {
+        let mut child = spawn_role(test, "looper", &env);
+        std::thread::sleep(Duration::from_millis(5 + (i * 7) % 40));
+        kill9(&mut child);
+        let mut gm = V1::default();
+        store
+            .load(&mut gm)
+            .unwrap_or_else(|e| panic!("after kill {i}: {e}"));
+        assert_eq!(
+            gm.table, [gm.cycles as u16; 3],
+            "a consistent file after kill {i}"
+        );
+    }
+}

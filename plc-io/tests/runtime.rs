@@ -1,0 +1,191 @@
+//! The cycle: order of the steps, a panicking program, retained values across runs, stopping,
+//! and shared memory seen from outside while it runs.
+
+mod common;
+
+use common::{unique, wait_for};
+use plc_core::{GlobalMemory, Value};
+use plc_io::shm::{DynSegment, OwnerState, SharedGlobalMemory};
+use plc_io::{Context, IoBackend, IoError, IoStatus, Runtime, RuntimeError};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Gm {
+    #[plc(direction = "input")]
+    inputs: u8,
+    #[plc(source = "inputs", bit = 0)]
+    start_button: bool,
+    #[plc(direction = "output")]
+    outputs: u8,
+    #[plc(source = "outputs", bit = 1)]
+    motor_on: bool,
+    #[plc(direction = "output", initial = 50)]
+    valve_pct: f32,
+    #[plc(direction = "command", initial = 10)]
+    setpoint: u16,
+    #[plc(nonvolatile)]
+    total_cycles: u64,
+    seen_setpoint: u16,
+}
+
+/// A backend that feeds inputs and records what it was asked to do.
+#[derive(Clone, Default)]
+struct Recorder(Arc<Mutex<Vec<String>>>);
+
+impl IoBackend<Gm> for Recorder {
+    fn start(&mut self) -> Result<(), IoError> {
+        self.0.lock().unwrap().push("start".into());
+        Ok(())
+    }
+    fn exchange(&mut self, gm: &mut Gm) -> IoStatus {
+        self.0
+            .lock()
+            .unwrap()
+            .push(format!("exchange out={}", gm.outputs));
+        gm.inputs = 1;
+        IoStatus {
+            inputs_valid: true,
+            bus_fault: false,
+            bus_state: "OP",
+        }
+    }
+    fn fault(&mut self, gm: &mut Gm) {
+        self.0
+            .lock()
+            .unwrap()
+            .push(format!("fault out={} valve={}", gm.outputs, gm.valve_pct));
+    }
+    fn stop(&mut self) {
+        self.0.lock().unwrap().push("stop".into());
+    }
+}
+
+#[test]
+fn a_cycle_unpacks_inputs_runs_the_tick_and_packs_outputs() {
+    let io = Recorder::default();
+    let gm = Runtime::<Gm>::builder()
+        .period(Duration::from_millis(1))
+        .backend(io.clone())
+        .max_cycles(3)
+        .handle_signals(false)
+        .build()
+        .run(|ctx: &mut Context<Gm>| {
+            assert!(
+                ctx.gm.start_button,
+                "inputs arrive unpacked before the tick"
+            );
+            ctx.gm.motor_on = true;
+        })
+        .unwrap();
+    assert_eq!(gm.outputs, 0b10);
+    let log = io.0.lock().unwrap().clone();
+    assert_eq!(
+        log,
+        [
+            "start",
+            "exchange out=0",
+            "exchange out=2",
+            "exchange out=2",
+            "stop"
+        ],
+        "outputs packed in a cycle go out with the next exchange"
+    );
+}
+
+#[test]
+fn a_panicking_program_zeroes_outputs_and_faults_the_io() {
+    let io = Recorder::default();
+    let err = Runtime::<Gm>::builder()
+        .period(Duration::from_millis(1))
+        .backend(io.clone())
+        .handle_signals(false)
+        .build()
+        .run(|ctx| {
+            ctx.gm.motor_on = true;
+            if ctx.cycle == 3 {
+                panic!("division by zero in the recipe");
+            }
+        })
+        .unwrap_err();
+    match err {
+        RuntimeError::Panicked { cycle, message } => {
+            assert_eq!(cycle, 3);
+            assert!(message.contains("division by zero"));
+        }
+        other => panic!("{other}"),
+    }
+    let log = io.0.lock().unwrap().clone();
+    assert!(log.contains(&"fault out=0 valve=0".to_string()), "{log:?}");
+    assert_eq!(log.last().unwrap(), "stop");
+}
+
+#[test]
+fn nonvolatile_values_survive_a_restart_and_stop_works_from_outside() {
+    let dir = std::env::temp_dir().join(format!("plc-rt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("gm.retain");
+    for run in 1..=2u64 {
+        let gm = Runtime::<Gm>::builder()
+            .period(Duration::from_millis(1))
+            .retain(&path)
+            .max_cycles(25)
+            .handle_signals(false)
+            .build()
+            .run(|ctx| ctx.gm.total_cycles += 1)
+            .unwrap();
+        assert_eq!(gm.total_cycles, 25 * run);
+    }
+    let builder = Runtime::<Gm>::builder()
+        .period(Duration::from_millis(1))
+        .handle_signals(false);
+    let stop = builder.stop_handle();
+    let t = std::thread::spawn(move || builder.build().run(|_| {}).unwrap());
+    std::thread::sleep(Duration::from_millis(50));
+    stop.stop();
+    assert!(t.join().is_ok());
+}
+
+#[test]
+fn tools_see_the_running_program_and_their_writes_arrive() {
+    let name = unique("runtime");
+    let builder = Runtime::<Gm>::builder()
+        .period(Duration::from_millis(2))
+        .segment(&name)
+        .handle_signals(false);
+    let stop = builder.stop_handle();
+    let t = std::thread::spawn(move || {
+        builder
+            .build()
+            .run(|ctx| ctx.gm.seen_setpoint = ctx.gm.setpoint)
+            .unwrap()
+    });
+    let seg = wait_for(Duration::from_secs(5), || DynSegment::attach(&name).ok());
+    wait_for(Duration::from_secs(5), || {
+        (seg.owner_state() == OwnerState::Running && seg.status().cycle_count > 2).then_some(())
+    });
+    seg.write("setpoint", Value::UInt(1234)).unwrap();
+    let typed = SharedGlobalMemory::<Gm>::attach(&name).unwrap();
+    wait_for(Duration::from_secs(5), || {
+        (typed.snapshot().ok()?.seen_setpoint == 1234).then_some(())
+    });
+    let status = seg.status();
+    assert_eq!(status.period, Duration::from_millis(2));
+    assert!(status.max >= status.min && status.writes_applied == 1);
+    stop.stop();
+    let gm = t.join().unwrap();
+    assert_eq!(gm.setpoint, 1234);
+    assert!(
+        DynSegment::attach(&name).is_err(),
+        "the segment is removed at stop"
+    );
+}
+
+#[test]
+fn context_for_test_runs_a_tick_without_bus_or_segment() {
+    let mut ctx = Context::for_test(Gm::default());
+    ctx.gm.start_button = true;
+    ctx.gm.motor_on = ctx.gm.start_button && ctx.inputs_valid;
+    assert!(ctx.gm.motor_on);
+    assert_eq!(ctx.bus_state, "NONE");
+}
