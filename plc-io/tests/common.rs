@@ -1,5 +1,7 @@
 //! Helpers for tests that need a second process: the test binary runs itself again with
 //! `PLC_TEST_ROLE` set, and the test of that name plays the role.
+// Each test binary uses a different subset of these helpers.
+#![allow(dead_code)]
 
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
