@@ -210,10 +210,8 @@ fn datagram(
                 position = position.wrapping_add(1);
             }
             // FPRD, FPWR, FPRW: the device with this configured address acts.
-            0x04..=0x06 => {
-                if d.station_address() == adp && d.has(ado, len) {
-                    access(d, cmd - 0x04, ado, data, wkc);
-                }
+            0x04..=0x06 if d.station_address() == adp && d.has(ado, len) => {
+                access(d, cmd - 0x04, ado, data, wkc);
             }
             // BRD (OR of everyone's bytes), BWR, BRW.
             0x07 => {
