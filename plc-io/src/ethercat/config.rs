@@ -309,7 +309,7 @@ impl BusConfig {
                 .position(|o| o.name.eq_ignore_ascii_case(&d.name))
             {
                 problems.push(format!(
-                    "device {pos}: name `{}` is already used by device {first}, and the devices                      between them have other names: give each device its own name (only                      consecutive devices may share a name, as parts of one module)",
+                    "device {pos}: name `{}` is already used by device {first}, and the devices between them have other names: give each device its own name (only consecutive devices may share a name, as parts of one module)",
                     d.name
                 ));
             }

@@ -1,6 +1,3 @@
-// PENDING: written against the announced APIs of `ethercat-sim` (SimBus, Device, inproc::spawn)
-// and `#[derive(GlobalMemory)]`, neither of which had landed on main when this was written.
-// Move to `plc-io/tests/ethercat_sim.rs` (and fix names) when they land; cargo does not build it here.
 //! End-to-end tests of `plc_io::ethercat` on the simulated bus of `ethercat-sim`: real ethercrab
 //! drives simulated EK1100 + EL1004 + EL2004 + EL2889 through the in-process transport.
 
