@@ -1,1 +1,4 @@
-//! Example programs of plc-vars live in `src/bin`.
+//! The example programs of plc-vars (binaries in `src/bin`) and the code they share.
+#![deny(missing_docs)]
+
+pub mod tensile;

@@ -1,0 +1,195 @@
+//! The main example: a tensile tester on EtherCAT.
+//!
+//! ```sh
+//! cargo run --release -p examples --bin tensile_tester                  # simulated bus, until Ctrl-C
+//! cargo run --release -p examples --bin tensile_tester -- --cycles 5000
+//! sudo target/release/tensile_tester --interface enp3s0                 # real terminals
+//! ```
+//!
+//! Options: `--bus FILE` (bus description, TOML or JSON; default: the built-in
+//! `examples/bus/tensile_tester.toml`), `--interface NAME` (real NIC instead of the simulated
+//! bus), `--period-us N` (cycle period, default 1000), `--cycles N` (stop after N cycles),
+//! `--segment NAME` (shared memory for HMIs, default `tensile_tester`), `--retain DIR`
+//! (directory of the retain file, default a temporary directory).
+//!
+//! On the simulated bus (EK1100, EL1004, EL2889, EL2004) a model of the machine runs on a
+//! thread: it reads the drive outputs and sets the limit switches, so the program runs one
+//! test after another. A status line is printed each second.
+
+use examples::tensile;
+
+use plc_io::Runtime;
+use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport};
+use plc_io::shm::DynSegment;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+use tensile::{Gm, TickInfo, process_tick};
+
+struct Args {
+    bus: Option<PathBuf>,
+    interface: Option<String>,
+    period: Duration,
+    cycles: Option<u64>,
+    segment: String,
+    retain: Option<PathBuf>,
+}
+
+const USAGE: &str = "usage: tensile_tester [--bus FILE] [--interface NAME] [--period-us N] \
+                     [--cycles N] [--segment NAME] [--retain DIR]";
+
+fn parse_args() -> Result<Args, String> {
+    let mut args = Args {
+        bus: None,
+        interface: None,
+        period: Duration::from_millis(1),
+        cycles: None,
+        segment: "tensile_tester".into(),
+        retain: None,
+    };
+    let mut it = std::env::args().skip(1);
+    while let Some(flag) = it.next() {
+        if flag == "--help" || flag == "-h" {
+            return Err(USAGE.into());
+        }
+        let mut value = || {
+            it.next()
+                .ok_or_else(|| format!("{flag} needs a value\n{USAGE}"))
+        };
+        let number = |v: String| -> Result<u64, String> {
+            v.parse()
+                .map_err(|_| format!("{flag}: `{v}` is not a whole number\n{USAGE}"))
+        };
+        match flag.as_str() {
+            "--bus" => args.bus = Some(value()?.into()),
+            "--interface" => args.interface = Some(value()?),
+            "--period-us" => {
+                let us = number(value()?)?;
+                if us == 0 {
+                    return Err("--period-us must be at least 1".into());
+                }
+                args.period = Duration::from_micros(us);
+            }
+            "--cycles" => args.cycles = Some(number(value()?)?),
+            "--segment" => args.segment = value()?,
+            "--retain" => args.retain = Some(value()?.into()),
+            other => return Err(format!("unknown option `{other}`\n{USAGE}")),
+        }
+    }
+    Ok(args)
+}
+
+fn main() -> ExitCode {
+    match run() {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("tensile_tester: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run() -> Result<(), Box<dyn std::error::Error>> {
+    let args = parse_args()?;
+    let config = match &args.bus {
+        Some(path) => BusConfig::load(path)?,
+        None => BusConfig::from_toml_str(tensile::BUS_TOML)?,
+    };
+    let mut options = Options::default();
+    let mut _plant = None;
+    let transport = match &args.interface {
+        Some(name) => Transport::Interface(name.clone()),
+        None => {
+            let sim = tensile::simulated_bus();
+            _plant = Some(tensile::plant::Plant::spawn(sim.clone())?);
+            options.dc_static_sync_iterations = 100;
+            tensile::sim_transport(sim)
+        }
+    };
+    let backend = EtherCatBackend::<Gm>::new(config, transport, options)?;
+    let links = backend.bindings().count();
+    let retain_dir = args
+        .retain
+        .clone()
+        .unwrap_or_else(|| std::env::temp_dir().join("tensile_tester"));
+    std::fs::create_dir_all(&retain_dir)?;
+    let retain = retain_dir.join("tensile_tester.retain");
+    println!(
+        "tensile_tester: {} with {links} links, period {} us; segment `{}` (try `plc watch {}`), \
+         retain file {}; Ctrl-C stops",
+        args.interface.as_deref().unwrap_or("simulated bus"),
+        args.period.as_micros(),
+        args.segment,
+        args.segment,
+        retain.display(),
+    );
+    let mut builder = Runtime::<Gm>::builder()
+        .period(args.period)
+        .segment(&args.segment)
+        .retain(&retain)
+        .backend(backend);
+    if let Some(n) = args.cycles {
+        builder = builder.max_cycles(n);
+    }
+    let stop = builder.stop_handle();
+    let monitor = status_line(args.segment.clone(), stop.clone());
+    let period = args.period;
+    let result = builder.build().run(|ctx| {
+        let info = TickInfo {
+            period,
+            inputs_valid: ctx.inputs_valid,
+        };
+        process_tick(&mut ctx.gm, info);
+    });
+    stop.stop();
+    let _ = monitor.join();
+    let gm = result?;
+    println!(
+        "tensile_tester: stopped, {} tests completed; bus back in INIT, retained values saved",
+        gm.tests_completed
+    );
+    Ok(())
+}
+
+/// Prints a status line each second, read from the program's own segment as any HMI would.
+fn status_line(segment: String, stop: plc_io::StopHandle) -> std::thread::JoinHandle<()> {
+    std::thread::spawn(move || {
+        let mut seg = None;
+        while !stop.is_stopped() {
+            std::thread::sleep(Duration::from_secs(1));
+            if seg.is_none() {
+                seg = DynSegment::attach(&segment).ok();
+            }
+            let Some(s) = &seg else { continue };
+            let st = s.status();
+            let Ok(image) = s.snapshot_bytes() else { break };
+            let read = |n: &str| {
+                let i = s.descriptor().index_of(n);
+                match i.and_then(|i| s.value_at(&image, i, 0)) {
+                    Some(plc_core::Value::Real(r)) => format!("{r:.1}"),
+                    Some(v) => v.to_string(),
+                    None => "?".into(),
+                }
+            };
+            println!(
+                "cycle {:>7} | work last/mean/max {}/{}/{} us | overruns {} | bus {}{} | {} {} \
+                 | force {} kN | tests {}",
+                st.cycle_count,
+                st.last.as_micros(),
+                st.mean.as_micros(),
+                st.max.as_micros(),
+                st.overruns,
+                st.bus_state,
+                if st.inputs_valid {
+                    ""
+                } else {
+                    " INPUTS INVALID"
+                },
+                read("info_test_id"),
+                read("machine_state_name"),
+                read("force_kn"),
+                read("tests_completed"),
+            );
+        }
+    })
+}
