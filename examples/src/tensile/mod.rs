@@ -298,6 +298,8 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
 }
 
 #[cfg(test)]
+// Tests set the variables a scenario needs after `Default`, as a program would.
+#[allow(clippy::field_reassign_with_default)]
 mod tests {
     use super::*;
 
