@@ -1,1 +1,121 @@
-fn main() {}
+//! `plc`: the variables of running plc-vars programs, from the command line.
+//!
+//! ```sh
+//! plc list                          # running programs
+//! plc list tensile_tester           # their variables (--json for scripts)
+//! plc get tensile_tester force_kn info_test_id
+//! plc set tensile_tester info_specimen_name="S235 bar" auto_start=false
+//! plc watch tensile_tester --filter ls_
+//! plc log tensile_tester force_kn elongation_mm --csv run.csv --rate 100
+//! plc export tensile_tester > project.json
+//! ```
+
+mod cmd;
+
+use clap::{Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Inspect and control running plc-vars programs through their shared-memory segments.
+#[derive(Parser)]
+#[command(name = "plc", version)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Running programs, or the variables of one program.
+    List {
+        /// Segment name (as the program gave it, or its /dev/shm name).
+        segment: Option<String>,
+        /// Machine-readable output: the layout descriptor as JSON.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Current values.
+    Get {
+        /// Segment name.
+        segment: String,
+        /// Variable names (case-insensitive); `name[3]` for one array element.
+        #[arg(required = true)]
+        names: Vec<String>,
+    },
+    /// Writes values through the program's mailbox; all are checked before any is written.
+    Set {
+        /// Segment name.
+        segment: String,
+        /// `name=value`: bools true/false/1/0, numbers, strings plain or in double quotes.
+        #[arg(required = true)]
+        assignments: Vec<String>,
+    },
+    /// A live, full-screen view of the variables; select one and press Enter to write it.
+    Watch {
+        /// Segment name.
+        segment: String,
+        /// Show only variables whose name contains this text (case-insensitive).
+        #[arg(long)]
+        filter: Option<String>,
+        /// Refreshes per second.
+        #[arg(long, default_value_t = 10.0)]
+        rate: f64,
+    },
+    /// Records values to a CSV file.
+    Log {
+        /// Segment name.
+        segment: String,
+        /// Variable names.
+        #[arg(required = true)]
+        names: Vec<String>,
+        /// The CSV file to write.
+        #[arg(long)]
+        csv: PathBuf,
+        /// Samples per second.
+        #[arg(long, default_value_t = 10.0)]
+        rate: f64,
+        /// Stop after this many seconds (default: until Ctrl-C or the program stops).
+        #[arg(long)]
+        seconds: Option<f64>,
+    },
+    /// The declaration of a running program as a JSON variable list (seed 000's format).
+    Export {
+        /// Segment name.
+        segment: String,
+    },
+}
+
+fn main() -> ExitCode {
+    // Die quietly on a closed pipe (`plc list x | head`), as command-line tools do.
+    // SAFETY: setting a signal disposition to the default before any thread starts.
+    unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::List { segment, json } => cmd::list::run(segment.as_deref(), json),
+        Command::Get { segment, names } => cmd::get::run(&segment, &names),
+        Command::Set {
+            segment,
+            assignments,
+        } => cmd::set::run(&segment, &assignments),
+        Command::Watch {
+            segment,
+            filter,
+            rate,
+        } => cmd::watch::run(&segment, filter, rate),
+        Command::Log {
+            segment,
+            names,
+            csv,
+            rate,
+            seconds,
+        } => cmd::log::run(&segment, &names, &csv, rate, seconds),
+        Command::Export { segment } => cmd::export::run(&segment),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("plc: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

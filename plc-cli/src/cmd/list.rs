@@ -1,0 +1,79 @@
+//! `plc list [segment] [--json]`.
+
+use super::{Error, type_text};
+use plc_io::shm::{DynSegment, list_segments};
+
+pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
+    let Some(segment) = segment else {
+        let all = list_segments();
+        if json {
+            let rows: Vec<serde_json::Value> = all
+                .iter()
+                .map(|s| {
+                    serde_json::json!({
+                        "name": s.name, "pid": s.pid, "state": s.state.name(),
+                        "cycles": s.cycle_count, "variables": s.variables,
+                    })
+                })
+                .collect();
+            println!("{}", serde_json::to_string_pretty(&rows)?);
+            return Ok(());
+        }
+        if all.is_empty() {
+            println!("no running plc-vars programs");
+        }
+        println!(
+            "{:<24} {:>8} {:<8} {:>12} {:>9}",
+            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES"
+        );
+        for s in all {
+            println!(
+                "{:<24} {:>8} {:<8} {:>12} {:>9}",
+                s.name, s.pid, s.state, s.cycle_count, s.variables
+            );
+        }
+        return Ok(());
+    };
+    let seg = DynSegment::attach(segment)?;
+    if json {
+        println!("{}", serde_json::to_string_pretty(seg.descriptor())?);
+        return Ok(());
+    }
+    println!(
+        "{:<28} {:<14} {:<9} {:<10} {:<36} DESCRIPTION",
+        "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
+    );
+    for v in &seg.descriptor().variables {
+        let (name, bit_of) = match v.bit {
+            Some(b) => (
+                format!("  └ {}", v.name),
+                Some(format!(
+                    "bit {} of {}",
+                    b.bit,
+                    seg.descriptor().variables[b.source].name
+                )),
+            ),
+            None => (v.name.clone(), None),
+        };
+        let access = match v.access {
+            plc_core::Access::ReadOnly => "read-only",
+            plc_core::Access::ReadWrite => "read-write",
+        };
+        let place = v
+            .link
+            .clone()
+            .or_else(|| v.address.clone())
+            .or(bit_of)
+            .unwrap_or_default();
+        println!(
+            "{:<28} {:<14} {:<9} {:<10} {:<36} {}",
+            name,
+            type_text(v),
+            v.direction.name(),
+            access,
+            place,
+            v.description
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,87 @@
+//! One module per subcommand, and what they share: finding a variable and formatting values.
+
+pub mod export;
+pub mod get;
+pub mod list;
+pub mod log;
+pub mod set;
+pub mod watch;
+
+use plc_io::shm::{DynSegment, VarDescriptor};
+
+/// The error type of the commands: a message for the user.
+pub type Error = Box<dyn std::error::Error>;
+
+/// `name` or `name[element]`, resolved against the segment's descriptor.
+pub fn resolve<'a>(
+    seg: &'a DynSegment,
+    spec: &str,
+) -> Result<(usize, &'a VarDescriptor, Option<usize>), Error> {
+    let (name, element) = match spec.split_once('[') {
+        Some((n, rest)) => {
+            let e = rest
+                .strip_suffix(']')
+                .and_then(|e| e.trim().parse::<usize>().ok())
+                .ok_or_else(|| format!("`{spec}`: write an element as `name[3]`"))?;
+            (n, Some(e))
+        }
+        None => (spec, None),
+    };
+    let i = seg.descriptor().index_of(name).ok_or_else(|| {
+        format!(
+            "segment `{}` has no variable `{name}` (`plc list {}` shows them)",
+            seg.name(),
+            seg.name()
+        )
+    })?;
+    let var = &seg.descriptor().variables[i];
+    if let Some(e) = element
+        && e >= var.elements()
+    {
+        return Err(format!(
+            "`{}` has {} elements: {e} is out of range",
+            var.name,
+            var.elements()
+        )
+        .into());
+    }
+    Ok((i, var, element))
+}
+
+/// A variable's value (all elements of an array, as `[a, b, c]`) from an image.
+pub fn show(seg: &DynSegment, image: &[u8], index: usize, element: Option<usize>) -> String {
+    let var = &seg.descriptor().variables[index];
+    let one = |e: usize| {
+        seg.value_at(image, index, e)
+            .map_or("?".into(), |v| match v {
+                plc_core::Value::Text(t) if var.dims.is_empty() || element.is_some() => {
+                    t.to_string()
+                }
+                plc_core::Value::Text(t) => format!("{:?}", t.as_str()),
+                other => other.to_string(),
+            })
+    };
+    match element {
+        Some(e) => one(e),
+        None if var.dims.is_empty() => one(0),
+        None => format!(
+            "[{}]",
+            (0..var.elements()).map(one).collect::<Vec<_>>().join(", ")
+        ),
+    }
+}
+
+/// The type as users read it: `REAL`, `STRING(64)`, `REAL[3,4]`.
+pub fn type_text(var: &VarDescriptor) -> String {
+    let base = if var.iec_type == plc_core::IecType::String {
+        format!("STRING({})", var.string_capacity())
+    } else {
+        var.iec_type.name().to_string()
+    };
+    if var.dims.is_empty() {
+        base
+    } else {
+        let dims: Vec<String> = var.dims.iter().map(|d| d.to_string()).collect();
+        format!("{base}[{}]", dims.join(","))
+    }
+}

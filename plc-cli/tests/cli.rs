@@ -1,0 +1,304 @@
+//! The `plc` command against a real program in another process: the test binary runs itself
+//! as the control program (`PLC_TEST_ROLE=owner`), and each test drives the `plc` binary.
+
+use plc_core::{FixedString, GlobalMemory};
+use plc_io::Runtime;
+use std::process::{Child, Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Gm {
+    /// Digital inputs
+    #[plc(link = "ethercat.io.inputs", direction = "input")]
+    inputs: u16,
+    #[plc(source = "inputs", bit = 2)]
+    door_closed: bool,
+    #[plc(direction = "command", initial = 100)]
+    speed_setpoint: u16,
+    #[plc(direction = "status")]
+    speed_actual: u16,
+    #[plc(read_only, initial = 7)]
+    serial: u32,
+    #[plc(direction = "command", initial = "none")]
+    recipe: FixedString<16>,
+    counter: u64,
+    table: [i16; 3],
+}
+
+/// Runs as the control program when `PLC_TEST_ROLE=owner`.
+#[test]
+fn owner_role() {
+    if std::env::var("PLC_TEST_ROLE").as_deref() != Ok("owner") {
+        return;
+    }
+    let segment = std::env::var("SEGMENT").unwrap();
+    Runtime::<Gm>::builder()
+        .period(Duration::from_millis(5))
+        .segment(segment)
+        .build()
+        .run(|ctx| {
+            ctx.gm.counter += 1;
+            ctx.gm.speed_actual = ctx.gm.speed_setpoint;
+        })
+        .unwrap();
+}
+
+struct Owner {
+    child: Child,
+    segment: String,
+}
+
+impl Owner {
+    fn start(test: &str) -> Owner {
+        let segment = format!("cli_{test}_{}", std::process::id());
+        let child = Command::new(std::env::current_exe().unwrap())
+            .args(["owner_role", "--exact", "--nocapture"])
+            .env("PLC_TEST_ROLE", "owner")
+            .env("SEGMENT", &segment)
+            .stdout(Stdio::null())
+            .spawn()
+            .unwrap();
+        let owner = Owner { child, segment };
+        let start = Instant::now();
+        while !plc(&["get", &owner.segment, "counter"]).status.success() {
+            assert!(
+                start.elapsed() < Duration::from_secs(20),
+                "the owner did not start"
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        owner
+    }
+}
+
+impl Drop for Owner {
+    fn drop(&mut self) {
+        // SIGTERM: the runtime stops cleanly and removes its segment.
+        // SAFETY: signalling a child we spawned.
+        unsafe { libc::kill(self.child.id() as i32, libc::SIGTERM) };
+        let _ = self.child.wait();
+    }
+}
+
+fn plc(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn wait_until(what: &str, mut f: impl FnMut() -> bool) {
+    let start = Instant::now();
+    while !f() {
+        assert!(
+            start.elapsed() < Duration::from_secs(10),
+            "timed out waiting for {what}"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
+fn list_shows_programs_and_their_variables() {
+    let owner = Owner::start("list");
+    let all = stdout(&plc(&["list"]));
+    assert!(
+        all.contains(&owner.segment) && all.contains("running"),
+        "{all}"
+    );
+    let vars = stdout(&plc(&["list", &owner.segment]));
+    assert!(
+        vars.contains("ethercat.io.inputs") && vars.contains("Digital inputs"),
+        "{vars}"
+    );
+    assert!(
+        vars.contains("└ door_closed") && vars.contains("bit 2 of inputs"),
+        "{vars}"
+    );
+    assert!(
+        vars.contains("STRING(16)") && vars.contains("INT[3]"),
+        "{vars}"
+    );
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout(&plc(&["list", &owner.segment, "--json"]))).unwrap();
+    assert_eq!(json["variables"].as_array().unwrap().len(), 8);
+    let shm_name = format!("/dev/shm/plc.{}", owner.segment);
+    assert!(
+        plc(&["list", &shm_name]).status.success(),
+        "the /dev/shm name works too"
+    );
+}
+
+#[test]
+fn get_and_set_reach_the_program() {
+    let owner = Owner::start("getset");
+    let s = owner.segment.as_str();
+    let o = plc(&[
+        "set",
+        s,
+        "speed_setpoint=1500",
+        "recipe=\"steel, S235\"",
+        "table[1]=-4",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    wait_until("the write to apply", || {
+        stdout(&plc(&["get", s, "speed_actual"])).contains("speed_actual = 1500")
+    });
+    let got = stdout(&plc(&["get", s, "recipe", "table", "table[1]", "serial"]));
+    assert!(got.contains("recipe = steel, S235"), "{got}");
+    assert!(
+        got.contains("table = [0, -4, 0]") && got.contains("table[1] = -4"),
+        "{got}"
+    );
+    assert!(got.contains("serial = 7"), "{got}");
+}
+
+#[test]
+fn set_refuses_bad_writes_and_writes_nothing() {
+    let owner = Owner::start("refuse");
+    let s = owner.segment.as_str();
+    for (assignment, reason) in [
+        ("inputs=1", "is an input"),
+        ("speed_actual=1", "status variable"),
+        ("serial=1", "read-only"),
+        ("nope=1", "has no variable `nope`"),
+        ("speed_setpoint=70000", "out of range for UINT"),
+        ("speed_setpoint=fast", "whole number"),
+        ("recipe=seventeen chars!!", "capacity of 16"),
+        ("table[3]=1", "out of range"),
+        ("speed_setpoint", "name=value"),
+    ] {
+        let o = plc(&["set", s, "speed_setpoint=999", assignment]);
+        assert!(!o.status.success(), "{assignment} must be refused");
+        assert!(stderr(&o).contains(reason), "{assignment}: {}", stderr(&o));
+    }
+    std::thread::sleep(Duration::from_millis(50));
+    let got = stdout(&plc(&["get", s, "speed_setpoint"]));
+    assert!(
+        got.contains("speed_setpoint = 100"),
+        "nothing was written: {got}"
+    );
+    assert!(!plc(&["get", "no_such_program", "x"]).status.success());
+}
+
+#[test]
+fn log_records_values_to_csv() {
+    let owner = Owner::start("log");
+    let file = std::env::temp_dir().join(format!("plc-log-{}.csv", std::process::id()));
+    let o = plc(&[
+        "log",
+        &owner.segment,
+        "counter",
+        "recipe",
+        "--csv",
+        file.to_str().unwrap(),
+        "--rate",
+        "50",
+        "--seconds",
+        "0.5",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(&file).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "time_s,cycle,counter,recipe");
+    assert!(lines.len() > 10, "{csv}");
+    let counters: Vec<u64> = lines[1..]
+        .iter()
+        .map(|l| l.split(',').nth(2).unwrap().parse().unwrap())
+        .collect();
+    assert!(counters.windows(2).all(|w| w[0] <= w[1]) && counters.last() > counters.first());
+}
+
+#[test]
+fn export_prints_the_declaration_as_json() {
+    let owner = Owner::start("export");
+    let json: serde_json::Value =
+        serde_json::from_str(&stdout(&plc(&["export", &owner.segment]))).unwrap();
+    let v = &json["variables"];
+    assert_eq!(v["inputs"]["type"], "u16");
+    assert_eq!(v["inputs"]["link"], "ethercat.io.inputs");
+    assert_eq!(v["door_closed"]["source"], "inputs");
+    assert_eq!(v["door_closed"]["bit"], 2);
+    assert_eq!(v["recipe"]["max_length"], 16);
+    assert_eq!(v["recipe"]["initial"], "none");
+    assert_eq!(v["serial"]["read_only"], true);
+    assert_eq!(v["table"]["dims"], serde_json::json!([3]));
+}
+
+fn tmux(args: &[&str]) -> Output {
+    Command::new("tmux").args(args).output().unwrap()
+}
+
+#[test]
+fn watch_shows_live_values_filters_and_writes_in_tmux() {
+    if Command::new("tmux").arg("-V").output().is_err() {
+        eprintln!("SKIPPED: tmux is not installed (scripts/test.sh installs it)");
+        return;
+    }
+    let owner = Owner::start("watch");
+    let session = format!("plcwatch{}", std::process::id());
+    let cmd = format!(
+        "{} watch {} --rate 20",
+        env!("CARGO_BIN_EXE_plc"),
+        owner.segment
+    );
+    assert!(
+        tmux(&[
+            "new-session",
+            "-d",
+            "-s",
+            &session,
+            "-x",
+            "150",
+            "-y",
+            "30",
+            &cmd
+        ])
+        .status
+        .success()
+    );
+    let screen = || stdout(&tmux(&["capture-pane", "-p", "-t", &session]));
+    let counter_value = |s: &str| -> Option<u64> {
+        s.lines()
+            .find(|l| l.contains("│counter"))?
+            .split_whitespace()
+            .nth(3)?
+            .parse()
+            .ok()
+    };
+    wait_until("the watch window", || screen().contains("speed_setpoint"));
+    let first = counter_value(&screen());
+    wait_until("the counter to change on screen", || {
+        counter_value(&screen()) != first
+    });
+    assert!(
+        screen().contains("└ door_closed"),
+        "bools under their word:\n{}",
+        screen()
+    );
+
+    tmux(&["send-keys", "-t", &session, "/", "speed_set", "Enter"]);
+    wait_until("the filter", || screen().contains("1 of 8 variables"));
+    assert!(!screen().contains("│counter"));
+    tmux(&["send-keys", "-t", &session, "Enter", "2500", "Enter"]);
+    wait_until("the write to reach the program", || {
+        stdout(&plc(&["get", &owner.segment, "speed_actual"])).contains("= 2500")
+    });
+    assert!(
+        screen().contains("wrote speed_setpoint = 2500"),
+        "{}",
+        screen()
+    );
+    tmux(&["send-keys", "-t", &session, "q"]);
+    wait_until("watch to quit", || {
+        !tmux(&["has-session", "-t", &session]).status.success()
+    });
+}
