@@ -8,6 +8,7 @@
 //! plc watch tensile_tester --filter ls_
 //! plc log tensile_tester force_kn elongation_mm --csv run.csv --rate 100
 //! plc export tensile_tester > project.json
+//! plc import project.json -o src/gm.rs --struct Gm
 //! ```
 
 mod cmd;
@@ -16,7 +17,8 @@ use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-/// Inspect and control running plc-vars programs through their shared-memory segments.
+/// Inspect and control running plc-vars programs through their shared-memory segments, and
+/// import JSON variable lists.
 #[derive(Parser)]
 #[command(name = "plc", version)]
 struct Cli {
@@ -78,6 +80,17 @@ enum Command {
         #[arg(long)]
         seconds: Option<f64>,
     },
+    /// A JSON variable list (seed 000's format) to the equivalent Rust struct.
+    Import {
+        /// The JSON file (a whole project file works: only its "variables" are read).
+        project: PathBuf,
+        /// Write the module here instead of standard output.
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+        /// Name of the generated struct.
+        #[arg(long = "struct", default_value = "Gm")]
+        struct_name: String,
+    },
     /// The declaration of a running program as a JSON variable list (seed 000's format).
     Export {
         /// Segment name.
@@ -109,6 +122,11 @@ fn main() -> ExitCode {
             rate,
             seconds,
         } => cmd::log::run(&segment, &names, &csv, rate, seconds),
+        Command::Import {
+            project,
+            output,
+            struct_name,
+        } => cmd::import::run(&project, output.as_deref(), &struct_name),
         Command::Export { segment } => cmd::export::run(&segment),
     };
     match result {

@@ -302,3 +302,45 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
         !tmux(&["has-session", "-t", &session]).status.success()
     });
 }
+
+#[test]
+fn import_writes_the_struct_or_nothing() {
+    let dir = std::env::temp_dir().join(format!("plc-import-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("good.json");
+    std::fs::write(
+        &good,
+        r#"{ "variables": { "speed": { "type": "u16", "initial": 3 } } }"#,
+    )
+    .unwrap();
+    let out = dir.join("gm.rs");
+    let o = plc(&[
+        "import",
+        good.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--struct",
+        "Line",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let code = std::fs::read_to_string(&out).unwrap();
+    assert!(
+        code.contains("pub struct Line") && code.contains("#[plc(initial = 3)]"),
+        "{code}"
+    );
+
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, r#"{ "variables": { "speed": { "type": "u16", "initial": -3 }, "ton": { "type": "bool" } } }"#).unwrap();
+    let o = plc(&["import", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("variables.speed.initial") && err.contains("variables.ton"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        code,
+        "nothing was written"
+    );
+}

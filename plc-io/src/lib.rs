@@ -11,6 +11,8 @@
 
 #[cfg(feature = "ethercat")]
 pub mod ethercat;
+#[cfg(feature = "import")]
+pub mod import;
 pub mod retain;
 pub(crate) mod runtime;
 pub mod shm;

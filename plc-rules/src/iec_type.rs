@@ -13,7 +13,7 @@ use core::str::FromStr;
 /// |---|---|---|---|---|---|---|
 /// | BOOL | bool | 1 | | REAL | f32 | 32 |
 /// | SINT / INT / DINT / LINT | i8 / i16 / i32 / i64 | 8..64 | | LREAL | f64 | 64 |
-/// | USINT / UINT / UDINT / ULINT | u8 / u16 / u32 / u64 | 8..64 | | STRING | FixedString<N> | 8·N |
+/// | USINT / UINT / UDINT / ULINT | u8 / u16 / u32 / u64 | 8..64 | | STRING | `FixedString<N>` | 8·N |
 /// | BYTE / WORD / DWORD / LWORD | u8 / u16 / u32 / u64 | 8..64 | | | | |
 ///
 /// ```

@@ -2,6 +2,7 @@
 
 pub mod export;
 pub mod get;
+pub mod import;
 pub mod list;
 pub mod log;
 pub mod set;

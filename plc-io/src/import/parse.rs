@@ -1,0 +1,91 @@
+//! Reading a JSON project file: the `variables` object in file order, with every name given
+//! twice (also in another case) reported instead of silently overwritten, and syntax errors
+//! with line and column.
+
+use serde::de::{self, DeserializeSeed, MapAccess, Visitor};
+use serde_json::Value;
+use std::fmt;
+
+/// The variables of a project file, in file order, and the names given more than once.
+pub struct Parsed {
+    pub variables: Vec<(String, Value)>,
+    pub duplicates: Vec<String>,
+}
+
+struct Variables<'a>(&'a mut Parsed);
+
+impl<'de> DeserializeSeed<'de> for Variables<'_> {
+    type Value = ();
+    fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+        d.deserialize_map(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Variables<'_> {
+    type Value = ();
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("an object of variables, name: { \"type\": ... }")
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        while let Some(name) = map.next_key::<String>()? {
+            let value: Value = map.next_value()?;
+            if self
+                .0
+                .variables
+                .iter()
+                .any(|(n, _)| n.eq_ignore_ascii_case(&name))
+            {
+                self.0.duplicates.push(name);
+            } else {
+                self.0.variables.push((name, value));
+            }
+        }
+        Ok(())
+    }
+}
+
+struct Project<'a>(&'a mut Parsed, &'a mut bool);
+
+impl<'de> Visitor<'de> for Project<'_> {
+    type Value = ();
+    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("a JSON object with a \"variables\" object")
+    }
+    fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
+        while let Some(key) = map.next_key::<String>()? {
+            if key == "variables" {
+                *self.1 = true;
+                map.next_value_seed(Variables(self.0))?;
+            } else {
+                // Other top-level keys of a whole project file are not ours.
+                map.next_value::<de::IgnoredAny>()?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Parses `json`; the error text gives line and column of a syntax error.
+pub fn parse(json: &str) -> Result<Parsed, String> {
+    let mut parsed = Parsed {
+        variables: Vec::new(),
+        duplicates: Vec::new(),
+    };
+    let mut found = false;
+    let mut de = serde_json::Deserializer::from_str(json);
+    de::Deserializer::deserialize_map(&mut de, Project(&mut parsed, &mut found))
+        .and_then(|()| de.end())
+        .map_err(|e| {
+            format!(
+                "JSON error at line {}, column {}: {e}",
+                e.line(),
+                e.column()
+            )
+        })?;
+    if !found {
+        return Err(
+            "the file has no \"variables\" object: write { \"variables\": { ... } }".into(),
+        );
+    }
+    Ok(parsed)
+}
