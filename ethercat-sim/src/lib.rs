@@ -16,7 +16,8 @@
 //! let (tx, rx, pdu_loop) = STORAGE.try_split().unwrap();
 //! let bus = SimBus::new(vec![Device::ek1100(), Device::el1004(), Device::el2004()]);
 //! let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-//! let md = MainDevice::new(pdu_loop, Timeouts::default(), MainDeviceConfig::default());
+//! let timeouts = Timeouts { eeprom: std::time::Duration::from_millis(500), ..Timeouts::default() };
+//! let md = MainDevice::new(pdu_loop, timeouts, MainDeviceConfig::default());
 //! let group = futures_lite::future::block_on(md.init_single_group::<4, 8>(ethercrab::std::ethercat_now))
 //!     .unwrap();
 //! let group = futures_lite::future::block_on(group.into_op(&md)).unwrap();

@@ -29,8 +29,11 @@ fn bench() -> SimBus {
 }
 
 fn maindevice(pdu_loop: ethercrab::PduLoop<'static>) -> MainDevice<'static> {
+    // Room for a busy machine: the simulated devices answer from a thread that may have to
+    // wait for a core (ethercrab's 10 ms EEPROM default assumes hardware).
     let timeouts = Timeouts {
-        pdu: Duration::from_millis(50),
+        pdu: Duration::from_millis(200),
+        eeprom: Duration::from_millis(500),
         ..Timeouts::default()
     };
     MainDevice::new(

@@ -60,10 +60,7 @@ fn transport(bus: &SimBus) -> Transport {
 }
 
 fn options() -> Options {
-    Options {
-        dc_static_sync_iterations: 100,
-        ..Options::default()
-    }
+    Options::simulated()
 }
 
 fn started<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {

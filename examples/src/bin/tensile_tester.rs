@@ -102,7 +102,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         None => {
             let sim = tensile::simulated_bus();
             _plant = Some(tensile::plant::Plant::spawn(sim.clone())?);
-            options.dc_static_sync_iterations = 100;
+            options = Options::simulated();
             tensile::sim_transport(sim)
         }
     };

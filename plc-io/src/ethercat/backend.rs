@@ -89,6 +89,23 @@ pub struct Options {
     pub inputs_on_fault: InputsOnFault,
 }
 
+impl Options {
+    /// Settings for the simulated bus: few DC sync frames, and timeouts with room for a busy
+    /// machine (the simulated SubDevices answer from a thread that may wait for a core, where
+    /// ethercrab's 10 ms EEPROM timeout assumes hardware answering within microseconds).
+    pub fn simulated() -> Self {
+        Options {
+            timeouts: Timeouts {
+                pdu: std::time::Duration::from_millis(200),
+                eeprom: std::time::Duration::from_millis(500),
+                ..Timeouts::default()
+            },
+            dc_static_sync_iterations: 100,
+            ..Options::default()
+        }
+    }
+}
+
 impl Default for Options {
     fn default() -> Self {
         Options {
