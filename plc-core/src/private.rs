@@ -90,63 +90,105 @@ pub fn set_initial<T: PlcType>(field: &mut T, ty: IecType, value: Value) {
 }
 
 // Compile-time facts about a field type, for the derive's spanned `const` assertions on types
-// only the compiler knows (aliases).
+// only the compiler knows (aliases). Every assertion reaches the type through the one generic
+// `facts::<T>()`, so a type that is not `PlcType` at all gives one error (identical errors at
+// the same span are reported once), not one per assertion.
+
+/// What the derive's assertions need to know about a field type.
+#[derive(Clone, Copy, Debug)]
+pub struct TypeFacts {
+    iec_type: IecType,
+    rank: usize,
+    elements: usize,
+    string_capacity: usize,
+}
+
+/// The facts of field type `T`.
+pub const fn facts<T: PlcType>() -> TypeFacts {
+    TypeFacts {
+        iec_type: T::IEC_TYPE,
+        rank: T::RANK,
+        elements: T::ELEMENTS,
+        string_capacity: T::STRING_CAPACITY,
+    }
+}
+
+impl TypeFacts {
+    /// Whether the type is an integer scalar (a bit source).
+    pub const fn is_integer(self) -> bool {
+        self.iec_type.is_integer() && self.rank == 0
+    }
+
+    /// Whether the type is a scalar `bool`.
+    pub const fn is_bool(self) -> bool {
+        matches!(self.iec_type, IecType::Bool) && self.rank == 0
+    }
+
+    /// Whether the type has at most 3 dimensions and 65,535 items, and a string capacity of
+    /// 1..=255 (seed 003).
+    pub const fn shape_fits(self) -> bool {
+        let string_ok = !matches!(self.iec_type, IecType::String)
+            || plc_rules::capacity::is_valid_string_capacity(self.string_capacity);
+        self.rank <= plc_rules::capacity::MAX_ARRAY_DIMS
+            && self.elements <= plc_rules::capacity::MAX_ARRAY_ITEMS
+            && string_ok
+    }
+
+    /// Whether the type fits a located address of `bits` bits (1 = X, a bool).
+    pub const fn located_fits(self, bits: u32) -> bool {
+        self.rank == 0 && !matches!(self.iec_type, IecType::String) && self.iec_type.bits() == bits
+    }
+
+    /// Whether `initial = true/false` fits.
+    pub const fn initial_bool_fits(self) -> bool {
+        matches!(self.iec_type, IecType::Bool)
+    }
+
+    /// Whether an integer `initial` fits (integers by range; reals take bare integers, seed 001).
+    pub const fn initial_int_fits(self, v: i128) -> bool {
+        match self.iec_type.int_range() {
+            Some((lo, hi)) => v >= lo && v <= hi,
+            None => self.iec_type.is_real(),
+        }
+    }
+
+    /// Whether a real `initial` fits.
+    pub const fn initial_real_fits(self, v: f64) -> bool {
+        match self.iec_type {
+            IecType::Real => !v.is_finite() || (v <= f32::MAX as f64 && v >= -(f32::MAX as f64)),
+            IecType::Lreal => true,
+            _ => false,
+        }
+    }
+
+    /// Whether a string `initial` of `len` bytes fits.
+    pub const fn initial_str_fits(self, len: usize) -> bool {
+        matches!(self.iec_type, IecType::String) && len <= self.string_capacity
+    }
+
+    /// The width of a scalar in bits (0 for strings and arrays).
+    pub const fn scalar_bits(self) -> u32 {
+        if self.rank == 0 {
+            self.iec_type.bits()
+        } else {
+            0
+        }
+    }
+
+    /// Whether a declared `iec_type` fits the type's storage (same width and kind).
+    pub const fn storage_matches(self, declared: IecType) -> bool {
+        declared.same_storage(self.iec_type)
+    }
+}
 
 /// Whether a source field type is an integer scalar.
 pub const fn is_integer<T: PlcType>() -> bool {
-    T::IEC_TYPE.is_integer() && T::RANK == 0
-}
-
-/// Whether a field type is a scalar `bool`.
-pub const fn is_bool<T: PlcType>() -> bool {
-    matches!(T::IEC_TYPE, IecType::Bool) && T::RANK == 0
-}
-
-/// Whether a field type has at most 3 dimensions and 65,535 items, and a string capacity of
-/// 1..=255 (seed 003).
-pub const fn shape_fits<T: PlcType>() -> bool {
-    let string_ok = !matches!(T::IEC_TYPE, IecType::String)
-        || plc_rules::capacity::is_valid_string_capacity(T::STRING_CAPACITY);
-    T::RANK <= plc_rules::capacity::MAX_ARRAY_DIMS
-        && T::ELEMENTS <= plc_rules::capacity::MAX_ARRAY_ITEMS
-        && string_ok
-}
-
-/// Whether a field type fits a located address of `bits` bits (1 = X, a bool).
-pub const fn located_fits<T: PlcType>(bits: u32) -> bool {
-    T::RANK == 0 && !matches!(T::IEC_TYPE, IecType::String) && T::IEC_TYPE.bits() == bits
-}
-
-/// Whether `initial = true/false` fits.
-pub const fn initial_bool_fits<T: PlcType>() -> bool {
-    matches!(T::IEC_TYPE, IecType::Bool)
-}
-
-/// Whether an integer `initial` fits (integers by range; reals take bare integers, seed 001).
-pub const fn initial_int_fits<T: PlcType>(v: i128) -> bool {
-    match T::IEC_TYPE.int_range() {
-        Some((lo, hi)) => v >= lo && v <= hi,
-        None => T::IEC_TYPE.is_real(),
-    }
-}
-
-/// Whether a real `initial` fits.
-pub const fn initial_real_fits<T: PlcType>(v: f64) -> bool {
-    match T::IEC_TYPE {
-        IecType::Real => !v.is_finite() || (v <= f32::MAX as f64 && v >= -(f32::MAX as f64)),
-        IecType::Lreal => true,
-        _ => false,
-    }
-}
-
-/// Whether a string `initial` of `len` bytes fits.
-pub const fn initial_str_fits<T: PlcType>(len: usize) -> bool {
-    matches!(T::IEC_TYPE, IecType::String) && len <= T::STRING_CAPACITY
+    facts::<T>().is_integer()
 }
 
 /// The width of a scalar field type in bits (0 for strings and arrays).
 pub const fn scalar_bits<T: PlcType>() -> u32 {
-    if T::RANK == 0 { T::IEC_TYPE.bits() } else { 0 }
+    facts::<T>().scalar_bits()
 }
 
 /// A field type's IEC type.
@@ -156,7 +198,7 @@ pub const fn iec_type_of<T: PlcType>() -> IecType {
 
 /// Whether a declared `iec_type` fits the field type's storage (same width and kind).
 pub const fn storage_matches<T: PlcType>(declared: IecType) -> bool {
-    declared.same_storage(T::IEC_TYPE)
+    facts::<T>().storage_matches(declared)
 }
 
 /// Reads a located variable (`at = "%I.."`) with the declaration's byte order and alignment.

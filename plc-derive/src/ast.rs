@@ -172,7 +172,11 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
         }
         unaligned = c.unaligned.is_present();
     }
-    let vars = fields.iter().map(|f| parse_field(f, cx)).collect();
+    // Named fields always have an identifier; `filter_map` keeps that a fact, not a panic.
+    let vars = fields
+        .iter()
+        .filter_map(|f| f.ident.as_ref().map(|ident| parse_field(f, ident, cx)))
+        .collect();
     Some(Container {
         ident: &input.ident,
         krate,
@@ -182,9 +186,7 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
     })
 }
 
-fn parse_field<'a>(field: &'a syn::Field, cx: &mut Ctxt) -> Var<'a> {
-    // Named fields always have an identifier.
-    let ident = field.ident.as_ref().expect("named field");
+fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Var<'a> {
     let attr = match FieldAttr::from_field(field) {
         Ok(a) => Some(a),
         Err(e) => {
@@ -311,6 +313,12 @@ fn fill_from_attr(var: &mut Var, a: FieldAttr, cx: &mut Ctxt) {
             Ok(i) => var.initial = Some(i),
             Err(e) => cx.syn(e),
         }
+    }
+    if let (Some(_), Some(retain)) = (a.nonvolatile.span(), a.retain.span()) {
+        cx.error(
+            retain,
+            "`retain` is another name for `nonvolatile`: write only one of them",
+        );
     }
     var.nonvolatile = a.nonvolatile.is_present() || a.retain.is_present();
     if let Some(d) = a.description {

@@ -4,7 +4,7 @@
 use crate::types::KnownType;
 use plc_rules::{IecType, TypeFamily};
 use proc_macro2::{Span, TokenStream};
-use quote::quote;
+use quote::{quote, quote_spanned};
 use syn::spanned::Spanned;
 use syn::{Expr, Lit, UnOp};
 
@@ -130,15 +130,16 @@ impl Initial {
     }
 
     /// A `const` expression true when the value fits `ty` (for types only the compiler knows).
-    pub fn fits_tokens(&self, krate: &TokenStream, ty: &syn::Type) -> TokenStream {
-        let p = quote!(#krate::__private);
+    /// The type is named under its own span, so an unsupported type is reported there once.
+    pub fn fits_tokens(&self, krate: &TokenStream, ty: &syn::Type, ty_span: Span) -> TokenStream {
+        let facts = quote_spanned!(ty_span=> #krate::__private::facts::<#ty>());
         match &self.value {
-            InitialValue::Bool(_) => quote!(#p::initial_bool_fits::<#ty>()),
-            InitialValue::Int(n) => quote!(#p::initial_int_fits::<#ty>(#n)),
-            InitialValue::Float(f) => quote!(#p::initial_real_fits::<#ty>(#f)),
+            InitialValue::Bool(_) => quote!(#facts.initial_bool_fits()),
+            InitialValue::Int(n) => quote!(#facts.initial_int_fits(#n)),
+            InitialValue::Float(f) => quote!(#facts.initial_real_fits(#f)),
             InitialValue::Str(s) => {
                 let len = s.len();
-                quote!(#p::initial_str_fits::<#ty>(#len))
+                quote!(#facts.initial_str_fits(#len))
             }
         }
     }

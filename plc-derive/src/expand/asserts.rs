@@ -22,7 +22,7 @@ pub fn expand(c: &Container) -> TokenStream {
         if v.syn_type == SynType::Unknown {
             out.extend(assert(
                 v.ty_span(),
-                quote_spanned!(v.ty_span()=> #p::shape_fits::<#ty>()),
+                quote_spanned!(v.ty_span()=> #p::facts::<#ty>().shape_fits()),
                 format!(
                     "the type of `{name}` must have at most 3 dimensions and 65535 items, and \
                      strings a capacity of 1..=255 bytes (seed 003)"
@@ -38,7 +38,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 let at_source = v.source.as_ref().map_or(b.span, |s| s.span);
                 out.extend(assert(
                     at_source,
-                    quote_spanned!(at_source=> #p::is_integer::<#sty>()),
+                    quote_spanned!(src.ty_span()=> #p::facts::<#sty>().is_integer()),
                     format!(
                         "the source `{}` must be an integer (u8, u16, u32, u64, i8, i16, i32 or \
                          i64, seed 000), but its type is not",
@@ -47,7 +47,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 ));
                 out.extend(assert(
                     b.span,
-                    quote_spanned!(b.span=> (#bit as u32) < #p::scalar_bits::<#sty>()),
+                    quote_spanned!(src.ty_span()=> (#bit as u32) < #p::facts::<#sty>().scalar_bits()),
                     format!(
                         "bit {bit} is out of range for the type of `{}`",
                         src.field_name()
@@ -66,7 +66,7 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
     if v.mapped_to.is_some() {
         out.extend(assert(
             v.ty_span(),
-            quote_spanned!(v.ty_span()=> #p::is_bool::<#ty>()),
+            quote_spanned!(v.ty_span()=> #p::facts::<#ty>().is_bool()),
             format!("`{name}` is mapped to a bit, so its type must be bool (seed 000)"),
         ));
     }
@@ -78,7 +78,7 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
         };
         out.extend(assert(
             at.span,
-            quote_spanned!(at.span=> #p::located_fits::<#ty>(#bits)),
+            quote_spanned!(v.ty_span()=> #p::facts::<#ty>().located_fits(#bits)),
             format!("`{}` is {what}", v.at_text.as_deref().unwrap_or_default()),
         ));
     }
@@ -86,7 +86,7 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
         let iec = super::metadata::iec_variant(c, t.value);
         out.extend(assert(
             t.span,
-            quote_spanned!(t.span=> #p::storage_matches::<#ty>(#iec)),
+            quote_spanned!(v.ty_span()=> #p::facts::<#ty>().storage_matches(#iec)),
             format!(
                 "`iec_type = \"{}\"` does not fit the type of `{name}`: {} needs {}",
                 t.value,
@@ -98,7 +98,7 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
     if let Some(init) = &v.initial {
         out.extend(assert(
             init.span,
-            init.fits_tokens(&c.krate, ty),
+            init.fits_tokens(&c.krate, ty, v.ty_span()),
             format!(
                 "initial value {} does not fit the type of `{name}` (wrong kind, out of range, or \
                  too long)",

@@ -8,7 +8,7 @@ use crate::expand::metadata::iec_type;
 use proc_macro2::TokenStream;
 use quote::quote;
 
-pub fn expand(c: &Container) -> TokenStream {
+pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
     let ident = c.ident;
@@ -30,7 +30,7 @@ pub fn expand(c: &Container) -> TokenStream {
     let mapped = set(true);
     quote! {
         #[automatically_derived]
-        impl ::core::default::Default for #ident {
+        impl ::core::default::Default for #ident #bounds {
             fn default() -> Self {
                 let zeroed = <#image as #p::zerocopy::FromZeros>::new_zeroed();
                 let mut gm = <Self as #krate::GlobalMemory>::from_image(&zeroed);

@@ -23,7 +23,7 @@ fn respan(tokens: TokenStream, span: Span) -> TokenStream {
 
 /// `#[repr(C)]`, alignment 1 (every field's `Repr` is `Unaligned`), so no padding and the
 /// same offsets in every process that compiles the same declaration.
-pub fn image_struct(c: &Container) -> TokenStream {
+pub fn image_struct(c: &Container, bounds: &TokenStream) -> TokenStream {
     let p = private(c);
     let image = image_ident();
     let zerocopy_path = format!("{}::zerocopy", p.to_string().replace(' ', ""));
@@ -46,7 +46,7 @@ pub fn image_struct(c: &Container) -> TokenStream {
         )]
         #[zerocopy(crate = #zerocopy_path)]
         #[doc(hidden)]
-        pub struct #image {
+        pub struct #image #bounds {
             #(#fields,)*
         }
     }

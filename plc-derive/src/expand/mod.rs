@@ -52,15 +52,16 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let ident = c.ident;
     let krate = &c.krate;
     let image_ident = image_ident();
-    let default = default::expand(&c);
-    let image_struct = image::image_struct(&c);
+    let bounds = alias_bounds(&c);
+    let default = default::expand(&c, &bounds);
+    let image_struct = image::image_struct(&c, &bounds);
     quote! {
         const _: () = {
             #image_struct
             #asserts
 
             #[automatically_derived]
-            impl #krate::GlobalMemory for #ident {
+            impl #krate::GlobalMemory for #ident #bounds {
                 type Image = #image_ident;
                 #(#body)*
             }
@@ -68,6 +69,25 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
             #default
         };
     }
+}
+
+/// `where for<'__plc> Alias: PlcType, ...` for the field types only the compiler knows, on
+/// every generated item that names them. If such a type is not a `PlcType`, the one spanned
+/// error comes from the type's `const` assertion (`asserts`); these items assume the bound
+/// instead of repeating that error dozens of times. (A bound without the binder would be
+/// "trivially false" and reported at each item; with it, only where the impl is used.)
+fn alias_bounds(c: &Container) -> TokenStream {
+    let p = private(c);
+    let tys: Vec<_> = c
+        .vars
+        .iter()
+        .filter(|v| v.syn_type == crate::types::SynType::Unknown)
+        .map(|v| v.ty)
+        .collect();
+    if tys.is_empty() {
+        return TokenStream::new();
+    }
+    quote!(where #(for<'__plc> #tys: #p::PlcType,)*)
 }
 
 /// `<krate>::__private`.
