@@ -1,23 +1,48 @@
 //! A ring of simulated SubDevices and the datagrams that pass through it, with working
 //! counters counted as real ESCs count them (EMULATOR-NOTES §2).
 
-use crate::device::{Device, al};
+use crate::al;
+use crate::datagram::{self, Command, Datagram, Malformed};
+use crate::dc::Position;
+use crate::device::Device;
+use crate::esc;
 use std::sync::{Arc, Mutex, MutexGuard};
+use std::time::Instant;
 
-/// The MAC address in replies: real SubDevices set bit 1 of the first byte. ethercrab drops
-/// frames whose source is its own 10:10:10:10:10:10 (EMULATOR-NOTES §1).
+/// The source MAC of replies to ethercrab's frames: the first SubDevice sets bit 1 of the
+/// first byte, and ethercrab drops frames that still carry its own 10:10:10:10:10:10
+/// (EMULATOR-NOTES §1).
 pub const REPLY_SOURCE: [u8; 6] = [0x12, 0x10, 0x10, 0x10, 0x10, 0x10];
-/// EtherCAT's ethertype.
-pub const ETHERTYPE: u16 = 0x88A4;
+
+/// Local clocks of the devices start this far apart (real terminals power up at different
+/// times; capture [A] shows clocks at 0x158A.., 0x1636.., 0x15A9..).
+const CLOCK_SPREAD_NS: u64 = 0x0B00_0000;
+
+/// What the bus has seen.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameCounters {
+    /// EtherCAT frames processed (each gave a reply).
+    pub processed: u64,
+    /// Datagrams in those frames.
+    pub datagrams: u64,
+    /// Frames of another ethertype, ignored.
+    pub not_ethercat: u64,
+    /// EtherCAT frames that were too short or whose lengths did not add up, ignored.
+    pub malformed: u64,
+}
 
 struct Ring {
     devices: Vec<Device>,
-    frames: u64,
+    counters: FrameCounters,
+    epoch: Instant,
 }
 
 /// Simulated SubDevices in ring order, shared between the transport and the test or example
 /// that sets inputs, reads outputs and injects faults. Cloning gives another handle to the
-/// same bus.
+/// same bus; every method takes the bus's lock briefly.
+///
+/// Device positions (`pos`) are ring positions, 0 for the device next to the MainDevice.
+/// Methods taking a `pos` panic if there is no device there: that is a mistake in the test.
 ///
 /// ```
 /// use ethercat_sim::{Device, SimBus};
@@ -31,23 +56,40 @@ pub struct SimBus {
     ring: Arc<Mutex<Ring>>,
 }
 
+impl std::fmt::Debug for SimBus {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SimBus")
+            .field("devices", &self.device_names())
+            .field("counters", &self.counters())
+            .finish()
+    }
+}
+
 impl SimBus {
-    /// A bus of `devices` in ring order; the last one closes the ring (its port 1 is open).
+    /// A bus of `devices` in a line, in ring order: every device but the last has ports 0
+    /// and 1 open, the last only port 0 (its port 1 closes the ring).
     pub fn new(mut devices: Vec<Device>) -> SimBus {
-        let n = devices.len();
-        for (i, d) in devices.iter_mut().enumerate() {
-            // DL status: links on ports 0 and 1 for all but the last, port 0 only for the last
-            // (0x5A31 / 0x5613 as the real EK1100 and EL2889 report).
-            d.set_u16(0x0110, if i + 1 < n { 0x5A31 } else { 0x5613 });
+        let count = devices.len();
+        for (index, d) in devices.iter_mut().enumerate() {
+            d.position = Position {
+                index,
+                count,
+                clock_offset: 0x1580_0000 + CLOCK_SPREAD_NS * ((index as u64 * 5) % 3),
+            };
+            d.set_dl_status();
         }
         SimBus {
-            ring: Arc::new(Mutex::new(Ring { devices, frames: 0 })),
+            ring: Arc::new(Mutex::new(Ring {
+                devices,
+                counters: FrameCounters::default(),
+                epoch: Instant::now(),
+            })),
         }
     }
 
     fn ring(&self) -> MutexGuard<'_, Ring> {
-        // A panic while the lock was held cannot leave the registers inconsistent in a way
-        // that matters more than losing the bus; keep going with the data.
+        // A panic elsewhere while the lock was held (a failed assertion in a test's closure)
+        // leaves the registers as they were written; the bus stays usable.
         self.ring.lock().unwrap_or_else(|e| e.into_inner())
     }
 
@@ -62,19 +104,46 @@ impl SimBus {
     }
 
     /// Model names in ring order.
-    pub fn device_names(&self) -> Vec<&'static str> {
-        self.ring().devices.iter().map(Device::name).collect()
+    pub fn device_names(&self) -> Vec<String> {
+        self.ring()
+            .devices
+            .iter()
+            .map(|d| d.name().to_string())
+            .collect()
     }
 
-    /// Frames processed so far.
+    /// Number of devices.
+    pub fn len(&self) -> usize {
+        self.ring().devices.len()
+    }
+
+    /// Whether the bus has no devices.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// A copy of the device at `pos` with its registers as they are now.
+    pub fn device(&self, pos: usize) -> Device {
+        self.with(pos, |d| d.clone())
+    }
+
+    /// EtherCAT frames processed so far.
     pub fn frames(&self) -> u64 {
-        self.ring().frames
+        self.ring().counters.processed
     }
 
-    /// Sets input bit `bit` of the device at `pos` (bit 0 = first channel).
+    /// Frame and datagram counters.
+    pub fn counters(&self) -> FrameCounters {
+        self.ring().counters
+    }
+
+    /// Sets input bit `bit` of the device at `pos` (bit 0 = first channel of its first input
+    /// SyncManager). Devices without inputs ignore it.
     pub fn set_input_bit(&self, pos: usize, bit: usize, value: bool) {
         self.with(pos, |d| {
-            if let Some(&(start, _)) = d.areas(4).first() {
+            if let Some(&(start, len)) = d.areas(4).first()
+                && bit / 8 < len
+            {
                 let a = start + bit / 8;
                 let mask = 1 << (bit % 8);
                 d.mem[a] = if value {
@@ -86,17 +155,19 @@ impl SimBus {
         })
     }
 
-    /// Sets the input bytes of the device at `pos`.
+    /// Sets the input bytes of the device at `pos` (as many as its first input SyncManager
+    /// holds).
     pub fn set_inputs(&self, pos: usize, bytes: &[u8]) {
         self.with(pos, |d| {
-            if let Some(&(start, _)) = d.areas(4).first() {
-                d.mem[start..start + bytes.len()].copy_from_slice(bytes);
+            if let Some(&(start, len)) = d.areas(4).first() {
+                let n = len.min(bytes.len());
+                d.mem[start..start + n].copy_from_slice(&bytes[..n]);
             }
         })
     }
 
     /// The outputs the device at `pos` drives: its output SyncManagers' bytes in OP, zero in
-    /// any other state (without a microcontroller the outputs are off outside OP).
+    /// any other state (the terminals switch their outputs off outside OP).
     pub fn outputs(&self, pos: usize) -> Vec<u8> {
         self.with(pos, |d| {
             let op = d.al_state() == al::OP;
@@ -120,182 +191,202 @@ impl SimBus {
         self.with(pos, |d| d.al_state())
     }
 
-    /// Makes the device at `pos` stop answering (as if its E-bus contact failed): frames pass
-    /// it unprocessed and it adds nothing to working counters. `true` brings it back.
-    pub fn set_responding(&self, pos: usize, responding: bool) {
-        self.with(pos, |d| d.responding = responding)
+    /// The AL status code (0x0134) of the device at `pos`.
+    pub fn al_status_code(&self, pos: usize) -> u16 {
+        self.with(pos, |d| d.al_status_code())
     }
 
-    /// Changes the identity the device at `pos` reports (a wrong terminal plugged in).
+    /// Makes the device at `pos` stop answering: it neither processes datagrams nor adds to
+    /// working counters, while frames still pass it (a terminal that lost its E-bus power
+    /// but still forwards). `true` brings it back.
+    pub fn set_responding(&self, pos: usize, responding: bool) {
+        self.with(pos, |d| d.faults.silent = !responding)
+    }
+
+    /// Changes the identity the device at `pos` reports from its EEPROM (a different
+    /// terminal in this slot).
     pub fn set_identity(&self, pos: usize, vendor: u32, product: u32, revision: u32) {
         self.with(pos, |d| d.set_identity(vendor, product, revision))
     }
 
-    /// Makes the device at `pos` refuse requests for AL state `state` with `code`.
+    /// Makes the device at `pos` refuse requests for AL state `state` (see [`al`]): it keeps
+    /// its state, sets the error bit 4 of AL status and reports `code` in AL status code
+    /// 0x0134, as a terminal with a microcontroller does.
     pub fn refuse_transition(&self, pos: usize, state: u8, code: u16) {
-        self.with(pos, |d| d.refuse_transition(state, code))
+        self.with(pos, |d| d.faults.refuse(state, code))
     }
 
-    /// Processes one Ethernet frame as the ring would and returns the frame that comes back,
-    /// or `None` for a frame that is not EtherCAT or is malformed (never a panic).
+    /// Lets the device at `pos` accept requests for `state` again.
+    pub fn accept_transition(&self, pos: usize, state: u8) {
+        self.with(pos, |d| d.faults.accept(state))
+    }
+
+    /// Processes one Ethernet frame as the ring would and returns the frame that comes back
+    /// (source MAC with bit 1 set, padded to 60 bytes), or `None` for a frame that is not
+    /// EtherCAT or is malformed (counted, never a panic).
     pub fn process_frame(&self, frame: &[u8]) -> Option<Vec<u8>> {
-        if frame.len() < 16 || u16::from_be_bytes([frame[12], frame[13]]) != ETHERTYPE {
-            return None;
-        }
-        let header = u16::from_le_bytes([frame[14], frame[15]]);
-        if header >> 12 != 1 {
-            return None;
-        }
-        let end = 16 + (header & 0x07FF) as usize;
-        if end > frame.len() {
-            return None;
-        }
-        let mut out = frame.to_vec();
         let mut ring = self.ring();
-        ring.frames += 1;
-        let mut at = 16;
-        loop {
-            if at + 12 > end {
-                return None;
+        // Bus time: nanoseconds since the bus was made.
+        let now = ring.epoch.elapsed().as_nanos() as u64;
+        Self::process(&mut ring, frame, now)
+    }
+
+    /// [`process_frame`](Self::process_frame) at bus time `now_ns` instead of the bus's
+    /// clock, for replaying captures with their timestamps: EEPROM busy times and DC
+    /// receive times follow the given time. Keep to one time base per bus.
+    pub fn process_frame_at(&self, frame: &[u8], now_ns: u64) -> Option<Vec<u8>> {
+        Self::process(&mut self.ring(), frame, now_ns)
+    }
+
+    fn process(ring: &mut Ring, frame: &[u8], now: u64) -> Option<Vec<u8>> {
+        let mut out = frame.to_vec();
+        let mut datagrams = 0;
+        let devices = &mut ring.devices;
+        let result = datagram::for_each(&mut out, |d| {
+            datagrams += 1;
+            process_datagram(devices, d, now);
+        });
+        match result {
+            Ok(()) => {
+                ring.counters.processed += 1;
+                ring.counters.datagrams += datagrams;
+                datagram::finish_reply(&mut out);
+                Some(out)
             }
-            let flags = u16::from_le_bytes([out[at + 6], out[at + 7]]);
-            let len = (flags & 0x07FF) as usize;
-            let data_end = at + 10 + len;
-            if data_end + 2 > end {
-                return None;
+            Err(Malformed::NotEtherCat) => {
+                ring.counters.not_ethercat += 1;
+                None
             }
-            let (head, rest) = out.split_at_mut(at + 10);
-            let (data, wkc_bytes) = rest.split_at_mut(len);
-            let cmd = head[at];
-            let adp = u16::from_le_bytes([head[at + 2], head[at + 3]]);
-            let ado = u16::from_le_bytes([head[at + 4], head[at + 5]]);
-            let mut wkc = u16::from_le_bytes([wkc_bytes[0], wkc_bytes[1]]);
-            let new_adp = datagram(&mut ring.devices, cmd, adp, ado, data, &mut wkc);
-            head[at + 2..at + 4].copy_from_slice(&new_adp.to_le_bytes());
-            wkc_bytes[..2].copy_from_slice(&wkc.to_le_bytes());
-            at = data_end + 2;
-            if flags & 0x8000 == 0 {
-                break;
+            Err(_) => {
+                ring.counters.malformed += 1;
+                None
             }
         }
-        out[6..12].copy_from_slice(&REPLY_SOURCE);
-        if out.len() < 60 {
-            out.resize(60, 0);
-        }
-        Some(out)
     }
 }
 
-/// One datagram through the ring. Returns the address position field as it comes back.
-fn datagram(
-    devices: &mut [Device],
-    cmd: u8,
-    adp: u16,
-    ado: u16,
+/// One datagram through the ring, device by device in ring order.
+fn process_datagram(devices: &mut [Device], d: &mut Datagram<'_>, now: u64) {
+    let ado = d.ado as usize;
+    let len = d.data.len();
+    for dev in devices.iter_mut() {
+        if dev.faults.silent {
+            continue;
+        }
+        match d.command {
+            Command::Aprd | Command::Apwr | Command::Aprw => {
+                if d.adp == 0 && dev.has(ado, len) {
+                    access(dev, d.command, ado, d.data, &mut d.wkc, now);
+                }
+                d.adp = d.adp.wrapping_add(1);
+            }
+            Command::Fprd | Command::Fpwr | Command::Fprw => {
+                if dev.addressed_as(d.adp) && dev.has(ado, len) {
+                    access(dev, d.command, ado, d.data, &mut d.wkc, now);
+                }
+            }
+            Command::Brd | Command::Bwr | Command::Brw => {
+                if dev.has(ado, len) {
+                    access(dev, d.command, ado, d.data, &mut d.wkc, now);
+                }
+                d.adp = d.adp.wrapping_add(1);
+            }
+            Command::Lrd | Command::Lwr | Command::Lrw => {
+                let start = d.logical_address();
+                logical(dev, d.command, start, d.data, &mut d.wkc);
+            }
+            Command::Frmw | Command::Armw => {
+                // The addressed device reads; every other device writes the datagram's data
+                // (devices before the reader write what the MainDevice sent, as real ESCs do).
+                let reader = if d.command == Command::Frmw {
+                    dev.addressed_as(d.adp)
+                } else {
+                    d.adp == 0
+                };
+                if dev.has(ado, len) {
+                    if reader {
+                        dev.read(ado, d.data, now);
+                        d.wkc = d.wkc.wrapping_add(1);
+                    } else {
+                        dev.write(ado, d.data, now);
+                        if esc::any_writable(ado, len) {
+                            d.wkc = d.wkc.wrapping_add(1);
+                        }
+                    }
+                }
+                if d.command == Command::Armw {
+                    d.adp = d.adp.wrapping_add(1);
+                }
+            }
+            Command::Nop | Command::Unknown(_) => {}
+        }
+    }
+}
+
+/// A physical read, write or read-write at `ado`. Reads add 1, writes add 1 if they find a
+/// writable byte, read-writes add 1 for the read and 2 for the write (ETG.1000.4).
+fn access(
+    dev: &mut Device,
+    command: Command,
+    ado: usize,
     data: &mut [u8],
     wkc: &mut u16,
-) -> u16 {
-    let ado = ado as usize;
+    now: u64,
+) {
     let len = data.len();
-    let logical = (adp as u32) | ((ado as u32) << 16);
-    let mut position = adp;
-    let mut reader_value: Option<Vec<u8>> = None;
-    for d in devices.iter_mut().filter(|d| d.responding) {
-        match cmd {
-            // APRD, APWR, APRW: the device that sees position 0 acts; each one increments it.
-            0x01..=0x03 => {
-                if position == 0 && d.has(ado, len) {
-                    access(d, cmd - 0x01, ado, data, wkc);
-                }
-                position = position.wrapping_add(1);
-            }
-            // FPRD, FPWR, FPRW: the device with this configured address acts.
-            0x04..=0x06 if d.station_address() == adp && d.has(ado, len) => {
-                access(d, cmd - 0x04, ado, data, wkc);
-            }
-            // BRD (OR of everyone's bytes), BWR, BRW.
-            0x07 => {
-                if d.has(ado, len) {
-                    d.read(ado, data, true);
-                    *wkc += 1;
-                }
-                position = position.wrapping_add(1);
-            }
-            0x08 | 0x09 => {
-                if d.has(ado, len) {
-                    access(d, cmd - 0x07, ado, data, wkc);
-                }
-                position = position.wrapping_add(1);
-            }
-            // LRD, LWR, LRW: every device with an FMMU over the logical range.
-            0x0A..=0x0C => logical_access(d, cmd, logical, data, wkc),
-            // FRMW: the addressed device reads, every other device writes what it read.
-            0x0E => {
-                if d.station_address() == adp {
-                    d.read(ado, data, false);
-                    reader_value = Some(data.to_vec());
-                    *wkc += 1;
-                } else if reader_value.is_some() {
-                    d.write(ado, data);
-                    *wkc += 1;
-                }
-            }
-            _ => {}
+    match command {
+        Command::Aprd | Command::Fprd => {
+            dev.read(ado, data, now);
+            *wkc = wkc.wrapping_add(1);
         }
-    }
-    position
-}
-
-/// `kind` 0 read, 1 write, 2 read-write (the read reply is the old value).
-fn access(d: &mut Device, kind: u8, ado: usize, data: &mut [u8], wkc: &mut u16) {
-    match kind {
-        0 => {
-            d.read(ado, data, false);
-            *wkc += 1;
+        Command::Brd => {
+            dev.read_or(ado, data, now);
+            *wkc = wkc.wrapping_add(1);
         }
-        1 => {
-            d.write(ado, data);
-            *wkc += 1;
+        Command::Apwr | Command::Fpwr | Command::Bwr => {
+            dev.write(ado, data, now);
+            if esc::any_writable(ado, len) {
+                *wkc = wkc.wrapping_add(1);
+            }
         }
         _ => {
             let new = data.to_vec();
-            d.read(ado, data, false);
-            d.write(ado, &new);
-            *wkc += 3;
+            if command == Command::Brw {
+                dev.read_or(ado, data, now);
+            } else {
+                dev.read(ado, data, now);
+            }
+            dev.write(ado, &new, now);
+            *wkc = wkc.wrapping_add(if esc::any_writable(ado, len) { 3 } else { 1 });
         }
     }
 }
 
-/// LRD/LWR/LRW: +1 if a read FMMU matched, +2 (LWR: +1) if a write FMMU matched.
-fn logical_access(d: &mut Device, cmd: u8, start: u32, data: &mut [u8], wkc: &mut u16) {
+/// LRD/LWR/LRW through the device's FMMUs, byte-wise (bit-granular FMMUs are not modelled:
+/// ethercrab maps whole bytes, start bit 0 and end bit 7). Per device the working counter
+/// gets +1 if a read FMMU matched, and +1 (LWR) or +2 (LRW) if a write FMMU matched.
+fn logical(dev: &mut Device, command: Command, start: u32, data: &mut [u8], wkc: &mut u16) {
     let (mut read, mut wrote) = (false, false);
-    let end = start as u64 + data.len() as u64;
-    let fmmus: Vec<_> = d.fmmus().collect();
-    for (log, len, phys, reads, writes) in fmmus {
-        let (f_start, f_end) = (log as u64, log as u64 + len as u64);
-        let (lo, hi) = (f_start.max(start as u64), f_end.min(end));
-        if lo >= hi {
-            continue;
-        }
+    let start = start as u64;
+    let end = start + data.len() as u64;
+    for (log, flen, phys, reads, writes) in dev.fmmus() {
+        let (f_start, f_end) = (log as u64, log as u64 + flen as u64);
+        let (lo, hi) = (f_start.max(start), f_end.min(end));
         for l in lo..hi {
             let p = phys + (l - f_start) as usize;
-            let i = (l - start as u64) as usize;
-            if reads && cmd != 0x0B {
-                data[i] = d.mem.get(p).copied().unwrap_or(0);
+            let i = (l - start) as usize;
+            if reads && command != Command::Lwr {
+                data[i] = dev.mem.get(p).copied().unwrap_or(0);
                 read = true;
             }
-            if writes && cmd != 0x0A {
-                if let Some(m) = d.mem.get_mut(p) {
+            if writes && command != Command::Lrd {
+                if let Some(m) = dev.mem.get_mut(p) {
                     *m = data[i];
                 }
                 wrote = true;
             }
         }
     }
-    *wkc += read as u16
-        + if cmd == 0x0C {
-            2 * wrote as u16
-        } else {
-            wrote as u16
-        };
+    let write_weight = if command == Command::Lrw { 2 } else { 1 };
+    *wkc = wkc.wrapping_add(read as u16 + write_weight * wrote as u16);
 }

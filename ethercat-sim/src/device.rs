@@ -1,127 +1,194 @@
-//! One simulated SubDevice: the ESC's address space (registers and process RAM), its SII
-//! EEPROM, its AL state machine, SyncManagers and FMMUs, as Beckhoff's ESCs without a
-//! microcontroller behave (EMULATOR-NOTES §2, §4-§6).
+//! One simulated SubDevice: the ESC's address space (registers and process RAM) and what
+//! happens when a datagram reads or writes it, and the models of real Beckhoff terminals.
 
-use crate::sii;
-
-/// Bytes of ESC address space modelled (registers 0x0000-0x0FFF and 4 KiB of process RAM).
-const SPACE: usize = 0x2000;
-
-/// AL states (low nibble of AL status 0x0130).
-pub mod al {
-    /// INIT.
-    pub const INIT: u8 = 1;
-    /// PRE-OP.
-    pub const PRE_OP: u8 = 2;
-    /// BOOT.
-    pub const BOOT: u8 = 3;
-    /// SAFE-OP.
-    pub const SAFE_OP: u8 = 4;
-    /// OP.
-    pub const OP: u8 = 8;
-    /// AL status code "invalid requested state change".
-    pub const INVALID_STATE_CHANGE: u16 = 0x0011;
-}
-
-/// A SyncManager as the SII describes it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SiiSyncManager {
-    /// Physical start address.
-    pub start: u16,
-    /// Length in bytes (0 for some output terminals: ethercrab sizes it from the PDOs).
-    pub len: u16,
-    /// 3 outputs, 4 inputs, 1/2 mailbox.
-    pub kind: u8,
-}
+use crate::al;
+use crate::dc::{self, Position};
+use crate::esc::{self, EscInfo, SPACE, reg};
+use crate::fault::Faults;
+use crate::sii::{self, Completed, Eeprom, SiiSyncManager};
 
 /// A simulated EtherCAT SubDevice.
+///
+/// ```
+/// use ethercat_sim::Device;
+/// let d = Device::el2889();
+/// assert_eq!(d.name(), "EL2889");
+/// assert_eq!(d.identity(), (2, 0x0B49_3052, 0x0011_0000));
+/// ```
 #[derive(Clone, Debug)]
 pub struct Device {
-    pub(crate) name: &'static str,
+    name: String,
+    esc: EscInfo,
     pub(crate) mem: Vec<u8>,
-    pub(crate) sii: Vec<u16>,
-    pub(crate) fmmus: usize,
-    pub(crate) sms: usize,
-    sii_idle: u16,
-    pub(crate) sync_managers: Vec<SiiSyncManager>,
-    pub(crate) responding: bool,
-    refuse: Option<(u8, u16)>,
+    eeprom: Eeprom,
+    sync_managers: Vec<SiiSyncManager>,
+    pub(crate) faults: Faults,
+    pub(crate) position: Position,
 }
 
+/// Registers the EEPROM interface computes when read.
+const SII_REGS: std::ops::Range<usize> = reg::SII_CONTROL..reg::SII_DATA + 8;
+
 impl Device {
-    /// A device from its SII words and ESC facts: type byte (0x0000), FMMU and SM counts,
-    /// and the idle value of the EEPROM control/status register (0x0040 or 0x0050).
-    pub fn from_sii(
-        name: &'static str,
-        sii: Vec<u16>,
-        esc_type: u8,
-        fmmus: u8,
-        sms: u8,
-        sii_idle: u16,
-    ) -> Device {
+    /// A device from its SII EEPROM words and its ESC's facts. The name is the SII's
+    /// order-number string (as ethercrab shows it), or "unknown" if the image has none.
+    pub fn from_sii(words: Vec<u16>, esc: EscInfo) -> Device {
+        let name = sii::name(&words).unwrap_or_else(|| "unknown".into());
+        let mut mem = vec![0; SPACE];
+        mem[0x0000] = esc.esc_type;
+        mem[0x0001] = esc.revision;
+        mem[0x0002..0x0004].copy_from_slice(&esc.build.to_le_bytes());
+        mem[0x0004] = esc.fmmus;
+        mem[0x0005] = esc.sync_managers;
+        mem[0x0006] = esc.ram_kib;
+        mem[0x0007] = esc.ports;
+        mem[0x0008..0x000A].copy_from_slice(&esc.features.to_le_bytes());
+        // Receive-time registers of ports that never latch hold what the real terminals
+        // showed in capture [A] (EMULATOR-NOTES §7): "hoff" on port 1, "Verl" on port 3.
+        mem[0x0904..0x0908].copy_from_slice(b"hoff");
+        mem[0x090C..0x0910].copy_from_slice(b"Verl");
         let mut d = Device {
             name,
-            mem: vec![0; SPACE],
-            sync_managers: sync_managers(&sii),
-            sii,
-            fmmus: fmmus as usize,
-            sms: sms as usize,
-            sii_idle,
-            responding: true,
-            refuse: None,
+            esc,
+            mem,
+            sync_managers: sii::sync_managers(&words),
+            eeprom: Eeprom::new(words, esc.sii_idle),
+            faults: Faults::default(),
+            position: Position::default(),
         };
-        d.mem[0x0000] = esc_type;
-        d.mem[0x0004] = fmmus;
-        d.mem[0x0005] = sms;
-        d.mem[0x0006] = 1; // KiB of RAM
-        // Features 0x0008: like the real devices (0x00FC) but without bit 2 "DC supported":
-        // the simulator has no distributed clocks (ethercrab then skips DC configuration).
-        d.set_u16(0x0008, 0x00F8);
-        d.set_u16(0x0012, d.sii[4]); // configured station alias from the EEPROM
-        d.set_u16(0x0120, al::INIT as u16);
-        d.set_u16(0x0130, al::INIT as u16);
-        d.set_u16(0x0502, sii_idle);
+        d.load_from_eeprom();
+        d.set_u16(reg::AL_CONTROL, al::INIT as u16);
+        d.set_u16(reg::AL_STATUS, al::INIT as u16);
+        d.set_u16(reg::SII_CONTROL, esc.sii_idle);
+        d.set_dl_status();
         d
     }
 
-    /// The EK1100 EtherCAT coupler (no process data).
+    /// The EK1100 EtherCAT coupler (no process data). ESC registers from capture [A] and a
+    /// TwinCAT scan ([R2]).
     pub fn ek1100() -> Device {
-        let sii = sii::parse(include_str!("../data/sii-EK1100-full.txt"));
-        Device::from_sii("EK1100", sii, 0x11, 8, 8, 0x0040)
+        let words = sii::parse(include_str!("../data/sii-EK1100-full.txt"));
+        Device::from_sii(
+            words,
+            EscInfo {
+                esc_type: 0x11,
+                revision: 0x00,
+                build: 0x0003,
+                fmmus: 8,
+                sync_managers: 8,
+                ram_kib: 8,
+                ports: 0x3B,
+                features: 0x00FC,
+                dc_system_time: true,
+                dl_status_pdi: 0x1,
+                sii_idle: 0x0040,
+            },
+        )
     }
 
-    /// The EL1004, 4 digital inputs (one byte at 0x1000).
+    /// The EL1004, 4 digital inputs (one byte at 0x1000). ESC registers from [R2]; the
+    /// EEPROM idle status and the missing system-time unit are taken from the EL2828, which
+    /// reports the same features (0x01FC).
     pub fn el1004() -> Device {
-        let sii = sii::parse(include_str!("../data/sii-EL1004.txt"));
-        Device::from_sii("EL1004", sii, 0x12, 3, 4, 0x0040)
+        let words = sii::parse(include_str!("../data/sii-EL1004.txt"));
+        Device::from_sii(words, Self::terminal_esc(0x0050, 0x01FC, false))
     }
 
-    /// The EL2004, 4 digital outputs (0x0F00).
+    /// The EL2004, 4 digital outputs (0x0F00). Its ESC registers were never captured
+    /// except the EEPROM idle status (0x0040, [D]); the rest are the EL2889's.
     pub fn el2004() -> Device {
-        let sii = sii::parse(include_str!("../data/sii-EL2004-full.txt"));
-        Device::from_sii("EL2004", sii, 0x12, 3, 4, 0x0040)
+        let words = sii::parse(include_str!("../data/sii-EL2004-full.txt"));
+        Device::from_sii(words, Self::terminal_esc(0x0040, 0x00FC, true))
     }
 
-    /// The EL2828, 8 digital outputs (0x0F00).
+    /// The EL2828, 8 digital outputs (0x0F00). Features, DL status and EEPROM status from
+    /// capture [A]; it does not count the DC system-time registers there.
     pub fn el2828() -> Device {
-        let sii = sii::parse(include_str!("../data/sii-EL2828-full.txt"));
-        Device::from_sii("EL2828", sii, 0x12, 3, 4, 0x0050)
+        let words = sii::parse(include_str!("../data/sii-EL2828-full.txt"));
+        Device::from_sii(words, Self::terminal_esc(0x0050, 0x01FC, false))
     }
 
-    /// The EL2889, 16 digital outputs (0x0F00, 0x0F01).
+    /// The EL2889, 16 digital outputs (0x0F00, 0x0F01). Registers from capture [A].
     pub fn el2889() -> Device {
-        let sii = sii::parse(include_str!("../data/sii-EL2889-full.txt"));
-        Device::from_sii("EL2889", sii, 0x12, 3, 4, 0x0040)
+        let words = sii::parse(include_str!("../data/sii-EL2889-full.txt"));
+        Device::from_sii(words, Self::terminal_esc(0x0040, 0x00FC, true))
     }
 
-    /// The model name.
-    pub fn name(&self) -> &'static str {
-        self.name
+    /// The small ESC of the terminals: 3 FMMUs and 4 SyncManagers (inferred from the reset
+    /// working counters of capture [A]); type, revision, build, RAM and ports as the EL1004
+    /// reported them in [R2].
+    fn terminal_esc(sii_idle: u16, features: u16, dc_system_time: bool) -> EscInfo {
+        EscInfo {
+            esc_type: 0x12,
+            revision: 0x01,
+            build: 0x0001,
+            fmmus: 3,
+            sync_managers: 4,
+            ram_kib: 1,
+            ports: 0x4A,
+            features,
+            dc_system_time,
+            dl_status_pdi: 0x3,
+            sii_idle,
+        }
+    }
+
+    /// The model name (the SII's order number, e.g. "EK1100").
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The ESC's facts.
+    pub fn esc(&self) -> &EscInfo {
+        &self.esc
     }
 
     /// Vendor, product and revision from the EEPROM.
     pub fn identity(&self) -> (u32, u32, u32) {
-        sii::identity(&self.sii)
+        sii::identity(&self.eeprom.words)
+    }
+
+    /// The SII EEPROM words (writes by the MainDevice included).
+    pub fn sii(&self) -> &[u16] {
+        &self.eeprom.words
+    }
+
+    /// The SyncManagers the SII describes.
+    pub fn sii_sync_managers(&self) -> &[SiiSyncManager] {
+        &self.sync_managers
+    }
+
+    /// Changes the identity in the EEPROM (a different terminal in this slot).
+    pub fn set_identity(&mut self, vendor: u32, product: u32, revision: u32) {
+        sii::set_identity(&mut self.eeprom.words, vendor, product, revision);
+    }
+
+    /// The configured station address (0x0010).
+    pub fn station_address(&self) -> u16 {
+        self.u16_at(reg::STATION_ADDRESS)
+    }
+
+    /// The AL status register (0x0130): state in bits 0-3, error in bit 4.
+    pub fn al_status(&self) -> u16 {
+        self.u16_at(reg::AL_STATUS)
+    }
+
+    /// The AL state (low nibble of 0x0130).
+    pub fn al_state(&self) -> u8 {
+        self.mem[reg::AL_STATUS] & 0x0F
+    }
+
+    /// The AL status code (0x0134).
+    pub fn al_status_code(&self) -> u16 {
+        self.u16_at(reg::AL_STATUS_CODE)
+    }
+
+    /// Reads registers or process RAM directly, as the device's own PDI would (not a
+    /// datagram: no working counter, no side effects; 0 beyond the modelled space).
+    pub fn register(&self, address: usize, out: &mut [u8]) {
+        for (i, b) in out.iter_mut().enumerate() {
+            *b = self.mem.get(address + i).copied().unwrap_or(0);
+        }
     }
 
     pub(crate) fn u16_at(&self, a: usize) -> u16 {
@@ -141,140 +208,186 @@ impl Device {
         ])
     }
 
-    /// The configured station address (0x0010).
-    pub fn station_address(&self) -> u16 {
-        self.u16_at(0x0010)
+    fn u64_at(&self, a: usize) -> u64 {
+        self.u32_at(a) as u64 | (self.u32_at(a + 4) as u64) << 32
     }
 
-    /// The AL state (low nibble of 0x0130).
-    pub fn al_state(&self) -> u8 {
-        self.mem[0x0130] & 0x0F
+    fn set_u64(&mut self, a: usize, v: u64) {
+        self.mem[a..a + 8].copy_from_slice(&v.to_le_bytes());
     }
 
-    /// Changes the identity in the EEPROM (a wrong terminal plugged in).
-    pub fn set_identity(&mut self, vendor: u32, product: u32, revision: u32) {
-        for (w, v) in [(0x08, vendor), (0x0A, product), (0x0C, revision)] {
-            self.sii[w] = v as u16;
-            self.sii[w + 1] = (v >> 16) as u16;
-        }
+    /// Registers the ESC loads from the EEPROM at power-up and on a reload command.
+    fn load_from_eeprom(&mut self) {
+        let alias = self.eeprom.words.get(4).copied().unwrap_or(0);
+        self.set_u16(reg::STATION_ALIAS, alias);
     }
 
-    /// Refuses requests for AL state `state`, answering with `code` in 0x0134 and the error
-    /// bit in 0x0130, as a real ESC does.
-    pub fn refuse_transition(&mut self, state: u8, code: u16) {
-        self.refuse = Some((state, code));
+    /// DL status (0x0110) from the position in the line (EMULATOR-NOTES §6): link and
+    /// communication on port 0, and on port 1 unless this is the last device (whose port 1
+    /// loop is closed); ports 2 and 3 closed. 0x5A31 on a passing EK1100, 0x5613 at the end.
+    pub(crate) fn set_dl_status(&mut self) {
+        let port1 = self.position.port1_open();
+        let low = self.esc.dl_status_pdi as u16 | 0x10 | if port1 { 0x20 } else { 0 };
+        let high: u16 = 0x02 | 0x50 | if port1 { 0x08 } else { 0x04 };
+        self.set_u16(reg::DL_STATUS, high << 8 | low);
     }
 
-    /// Whether a datagram touching `[ado, ado + len)` finds registers here: FMMUs and
-    /// SyncManagers beyond the device's count do not exist (they add nothing to the WKC).
+    /// Whether the device answers datagrams addressed to station address `adp`: its
+    /// configured address, or its alias when DL control enables alias addressing.
+    pub(crate) fn addressed_as(&self, adp: u16) -> bool {
+        self.station_address() == adp
+            || (self.mem[reg::DL_CONTROL_ALIAS] & 1 != 0 && self.u16_at(reg::STATION_ALIAS) == adp)
+    }
+
+    /// Whether a datagram over `[ado, ado + len)` finds registers here.
     pub(crate) fn has(&self, ado: usize, len: usize) -> bool {
-        let absent = |base: usize, size: usize, count: usize| {
-            ado >= base + count * size && ado + len <= base + 16 * size
-        };
-        !(absent(0x0600, 16, self.fmmus) || absent(0x0800, 8, self.sms))
+        self.esc.has(ado, len)
     }
 
-    /// Reads `out.len()` bytes at `ado` (0 beyond the modelled space).
-    pub(crate) fn read(&self, ado: usize, out: &mut [u8], or: bool) {
-        for (i, b) in out.iter_mut().enumerate() {
-            let v = self.mem.get(ado + i).copied().unwrap_or(0);
-            *b = if or { *b | v } else { v };
+    /// Brings registers that change by themselves (EEPROM interface, system time) up to date
+    /// before a datagram reads `[ado, ado + len)` at bus time `now`.
+    fn refresh(&mut self, ado: usize, len: usize, now: u64) {
+        let overlaps = |r: std::ops::Range<usize>| ado < r.end && r.start < ado + len;
+        if overlaps(SII_REGS) {
+            self.tick_eeprom(now);
+        }
+        if overlaps(reg::DC_SYSTEM_TIME..reg::DC_SYSTEM_TIME + 8) {
+            let local = self.position.arrival(now);
+            let offset = self.u64_at(reg::DC_SYSTEM_TIME_OFFSET);
+            self.set_u64(reg::DC_SYSTEM_TIME, dc::system_time(local, offset));
         }
     }
 
-    /// Writes `data` at `ado`, then lets the ESC react (AL control, EEPROM commands).
-    pub(crate) fn write(&mut self, ado: usize, data: &[u8]) {
-        let read_only = |a: usize| matches!(a, 0x0000..=0x000F | 0x0110..=0x0111 | 0x0130..=0x0135);
+    fn tick_eeprom(&mut self, now: u64) {
+        if let Completed::Data(data) = self.eeprom.tick(now) {
+            self.mem[reg::SII_DATA..reg::SII_DATA + 8].copy_from_slice(&data);
+        }
+        let status = self.eeprom.status();
+        self.set_u16(reg::SII_CONTROL, status);
+    }
+
+    /// Reads `out.len()` bytes at `ado` into `out` (0 beyond the modelled space).
+    pub(crate) fn read(&mut self, ado: usize, out: &mut [u8], now: u64) {
+        self.refresh(ado, out.len(), now);
+        self.register(ado, out);
+    }
+
+    /// ORs the bytes at `ado` into `out` (BRD).
+    pub(crate) fn read_or(&mut self, ado: usize, out: &mut [u8], now: u64) {
+        self.refresh(ado, out.len(), now);
+        for (i, b) in out.iter_mut().enumerate() {
+            *b |= self.mem.get(ado + i).copied().unwrap_or(0);
+        }
+    }
+
+    /// Writes `data` at `ado` at bus time `now`, then lets the ESC react (AL control, EEPROM
+    /// commands, DC latches). Read-only bytes keep their value.
+    pub(crate) fn write(&mut self, ado: usize, data: &[u8], now: u64) {
+        let touches = |a: usize| ado <= a && a < ado + data.len();
+        if ado < SII_REGS.end && SII_REGS.start < ado + data.len() {
+            // A command that finished in the background finishes before the new bytes land.
+            self.tick_eeprom(now);
+        }
+        let old_system_time = touches(reg::DC_SYSTEM_TIME).then(|| {
+            self.refresh(reg::DC_SYSTEM_TIME, 8, now);
+            self.u64_at(reg::DC_SYSTEM_TIME)
+        });
         for (i, &b) in data.iter().enumerate() {
             let a = ado + i;
-            if a < SPACE && !read_only(a) {
+            if a < SPACE && esc::writable(a) {
                 self.mem[a] = b;
             }
         }
-        let touches = |a: usize| ado <= a && a < ado + data.len();
-        if touches(0x0120) {
-            self.al_control(self.mem[0x0120]);
+        if touches(reg::AL_CONTROL) {
+            self.on_al_control();
         }
-        if touches(0x0502) || touches(0x0503) {
-            self.eeprom_command();
+        if touches(reg::SII_CONTROL) || touches(reg::SII_CONTROL + 1) {
+            self.on_sii_command(now);
         }
-    }
-
-    fn al_control(&mut self, control: u8) {
-        let requested = control & 0x0F;
-        if let Some((state, code)) = self.refuse
-            && state == requested
+        if touches(reg::DC_RECEIVE_TIME) && self.esc.has_dc() {
+            self.on_latch(now);
+        }
+        if let Some(old) = old_system_time
+            && self.esc.dc_system_time
         {
-            let current = self.al_state();
-            self.set_u16(0x0130, (current | 0x10) as u16);
-            self.set_u16(0x0134, code);
-            return;
+            // System time is not set by a write: the ESC compares and corrects its clock.
+            let written = self.u64_at(reg::DC_SYSTEM_TIME);
+            self.set_u64(reg::DC_SYSTEM_TIME, old);
+            self.on_system_time_write(written, now);
         }
-        let current = self.al_state();
-        // Going up one step at a time, or down to any lower state, as the AL state machine
-        // allows; a jump up (INIT to OP) is refused like real ESCs refuse it.
-        let order = |s: u8| match s {
-            al::INIT => 0,
-            al::PRE_OP | al::BOOT => 1,
-            al::SAFE_OP => 2,
-            al::OP => 3,
-            _ => 9,
-        };
-        if order(requested) == 9 || order(requested) > order(current) + 1 {
-            self.set_u16(0x0130, (current | 0x10) as u16);
-            self.set_u16(0x0134, al::INVALID_STATE_CHANGE);
-            return;
-        }
-        // Without a microcontroller, AL status follows AL control, error-ack bit included.
-        self.set_u16(0x0130, (control & 0x1F) as u16);
-        self.set_u16(0x0134, 0);
     }
 
-    fn eeprom_command(&mut self) {
-        let control = self.u16_at(0x0502);
-        let address = self.u32_at(0x0504) as usize;
-        if control & 0x0100 != 0 {
-            // Read: 4 words (8 bytes, as bit 6 of the idle status announces).
-            for i in 0..4 {
-                let w = self.sii.get(address + i).copied().unwrap_or(0xFFFF);
-                self.set_u16(0x0508 + i * 2, w);
-            }
-        } else if control & 0x0200 != 0 {
-            // Write one word (ethercrab's `set_alias_address`).
-            if let Some(slot) = self.sii.get_mut(address) {
-                *slot = u16::from_le_bytes([self.mem[0x0508], self.mem[0x0509]]);
+    fn on_al_control(&mut self) {
+        let control = self.u16_at(reg::AL_CONTROL);
+        let refused = self.faults.refusal((control & 0x0F) as u8);
+        let (status, code) = al::on_control(self.al_status(), control, refused);
+        self.set_u16(reg::AL_STATUS, status);
+        self.set_u16(reg::AL_STATUS_CODE, code);
+    }
+
+    fn on_sii_command(&mut self, now: u64) {
+        let control = self.u16_at(reg::SII_CONTROL);
+        let address = self.u32_at(reg::SII_ADDRESS);
+        let data = self.u16_at(reg::SII_DATA);
+        if self.eeprom.command(control, address, data, now) {
+            self.load_from_eeprom();
+        }
+        let status = self.eeprom.status();
+        self.set_u16(reg::SII_CONTROL, status);
+    }
+
+    fn on_latch(&mut self, now: u64) {
+        let (ports, unit) = dc::latch(&self.position, now);
+        for (i, time) in ports.iter().enumerate() {
+            if let Some(t) = time {
+                let a = reg::DC_RECEIVE_TIME + 4 * i;
+                self.mem[a..a + 4].copy_from_slice(&t.to_le_bytes());
             }
         }
-        self.set_u16(0x0502, self.sii_idle);
+        if self.esc.dc_system_time {
+            self.set_u64(reg::DC_RECEIVE_TIME_PU, unit);
+        }
+    }
+
+    fn on_system_time_write(&mut self, written: u64, now: u64) {
+        let local = self.position.arrival(now);
+        let offset = self.u64_at(reg::DC_SYSTEM_TIME_OFFSET);
+        let delay = self.u32_at(reg::DC_SYSTEM_TIME_DELAY);
+        let (offset, diff) = dc::on_system_time_write(local, offset, delay, written);
+        self.set_u64(reg::DC_SYSTEM_TIME_OFFSET, offset);
+        self.mem[reg::DC_SYSTEM_TIME_DIFFERENCE..reg::DC_SYSTEM_TIME_DIFFERENCE + 4]
+            .copy_from_slice(&diff.to_le_bytes());
     }
 
     /// Active FMMUs: (logical start, length, physical start, reads, writes).
-    pub(crate) fn fmmus(&self) -> impl Iterator<Item = (u32, usize, usize, bool, bool)> + '_ {
-        (0..self.fmmus).filter_map(move |i| {
-            let b = 0x0600 + i * 16;
-            if self.mem[b + 12] & 1 == 0 {
-                return None;
-            }
-            let kind = self.mem[b + 11];
-            Some((
-                self.u32_at(b),
-                self.u16_at(b + 4) as usize,
-                self.u16_at(b + 8) as usize,
-                kind & 1 != 0,
-                kind & 2 != 0,
-            ))
-        })
+    pub(crate) fn fmmus(&self) -> Vec<(u32, usize, usize, bool, bool)> {
+        (0..self.esc.fmmus as usize)
+            .filter_map(|i| {
+                let b = reg::FMMU0 + i * 16;
+                if self.mem[b + 12] & 1 == 0 {
+                    return None;
+                }
+                let kind = self.mem[b + 11];
+                Some((
+                    self.u32_at(b),
+                    self.u16_at(b + 4) as usize,
+                    self.u16_at(b + 8) as usize,
+                    kind & 1 != 0,
+                    kind & 2 != 0,
+                ))
+            })
+            .collect()
     }
 
-    /// The process data area of SyncManagers of `kind` (3 outputs, 4 inputs): start and the
-    /// length configured in the SM registers (or the SII length if not configured).
+    /// The process data areas of SyncManagers of `kind` (3 outputs, 4 inputs): start and the
+    /// length configured in the SM registers (or the SII's length until configured).
     pub(crate) fn areas(&self, kind: u8) -> Vec<(usize, usize)> {
         self.sync_managers
             .iter()
             .enumerate()
             .filter(|(_, sm)| sm.kind == kind)
             .map(|(i, sm)| {
-                let configured = self.u16_at(0x0800 + i * 8 + 2) as usize;
+                let configured = self.u16_at(reg::SM0 + i * 8 + 2) as usize;
                 let len = if configured > 0 {
                     configured
                 } else {
@@ -286,69 +399,63 @@ impl Device {
     }
 }
 
-/// SyncManagers of the SII's category 41 (0x29), 8 bytes each.
-fn sync_managers(sii: &[u16]) -> Vec<SiiSyncManager> {
-    let mut at = 0x40;
-    while at + 1 < sii.len() && sii[at] != 0xFFFF {
-        let (kind, len) = (sii[at], sii[at + 1] as usize);
-        if kind == 41 {
-            return (0..len / 4)
-                .map(|i| {
-                    let w = at + 2 + i * 4;
-                    SiiSyncManager {
-                        start: sii[w],
-                        len: sii[w + 1],
-                        kind: (sii[w + 3] >> 8) as u8,
-                    }
-                })
-                .collect();
-        }
-        at += 2 + len;
-    }
-    Vec::new()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn sync_managers_come_from_the_eeprom() {
-        assert_eq!(
-            Device::el1004().sync_managers,
-            [SiiSyncManager {
-                start: 0x1000,
-                len: 1,
-                kind: 4
-            }]
-        );
-        assert_eq!(Device::el2889().sync_managers.len(), 2);
-        assert_eq!(Device::el2004().sync_managers[0].len, 0);
-        assert!(Device::ek1100().sync_managers.is_empty());
+    fn models_have_the_real_names_and_identities() {
+        let models = [
+            (Device::ek1100(), "EK1100", 0x044C_2C52, 0x0012_0000),
+            (Device::el1004(), "EL1004", 0x03EC_3052, 0x0013_0000),
+            (Device::el2004(), "EL2004", 0x07D4_3052, 0x0010_0000),
+            (Device::el2828(), "EL2828", 0x0B0C_3052, 0x0011_0000),
+            (Device::el2889(), "EL2889", 0x0B49_3052, 0x0011_0000),
+        ];
+        for (d, name, product, revision) in models {
+            assert_eq!(d.name(), name);
+            assert_eq!(d.identity(), (2, product, revision), "{name}");
+        }
     }
 
     #[test]
-    fn eeprom_reads_deliver_four_words() {
+    fn an_eeprom_read_goes_through_the_registers() {
         let mut d = Device::ek1100();
-        d.write(0x0502, &[0x00, 0x01, 0x08, 0x00, 0x00, 0x00]);
+        d.write(0x0502, &[0x00, 0x01, 0x08, 0x00, 0x00, 0x00], 0);
+        let mut status = [0u8; 2];
+        d.read(0x0502, &mut status, 1);
+        assert_eq!(status, [0x40, 0x81]); // [A] F106
+        d.read(0x0502, &mut status, sii::READ_BUSY_NS);
+        assert_eq!(status, [0x40, 0x00]);
         let mut out = [0u8; 8];
-        d.read(0x0508, &mut out, false);
-        assert_eq!(out, [0x02, 0, 0, 0, 0x52, 0x2c, 0x4c, 0x04]); // [A] F111
-        assert_eq!(d.u16_at(0x0502), 0x0040);
+        d.read(0x0508, &mut out, sii::READ_BUSY_NS);
+        assert_eq!(out, [0x02, 0, 0, 0, 0x52, 0x2c, 0x4c, 0x04]); // [A] F112
     }
 
     #[test]
-    fn al_status_follows_control_and_refuses_jumps() {
+    fn al_status_follows_control_unless_refused() {
         let mut d = Device::el2004();
-        d.write(0x0120, &[0x11, 0]);
-        assert_eq!(d.u16_at(0x0130), 0x0011);
-        d.write(0x0120, &[0x02, 0]);
-        assert_eq!(d.u16_at(0x0130), 0x0002);
-        d.write(0x0120, &[0x08, 0]);
-        assert_eq!(d.u16_at(0x0130), 0x0012, "PRE-OP to OP is refused");
-        assert_eq!(d.u16_at(0x0134), al::INVALID_STATE_CHANGE);
-        d.refuse_transition(al::SAFE_OP, 0x001D);
-        d.write(0x0120, &[0x04, 0]);
-        assert_eq!((d.al_state(), d.u16_at(0x0134)), (2, 0x001D));
+        d.write(0x0120, &[0x11, 0], 0);
+        assert_eq!(d.al_status(), 0x0011);
+        d.write(0x0120, &[0x02, 0], 0);
+        assert_eq!(d.al_status(), 0x0002);
+        d.faults
+            .refuse(al::SAFE_OP, al::INVALID_OUTPUT_CONFIGURATION);
+        d.write(0x0120, &[0x04, 0], 0);
+        assert_eq!((d.al_status(), d.al_status_code()), (0x0012, 0x001D));
+    }
+
+    #[test]
+    fn the_alias_comes_from_eeprom_word_4_on_reload() {
+        let mut d = Device::ek1100();
+        assert_eq!(d.u16_at(reg::STATION_ALIAS), 0);
+        d.eeprom.words[4] = 0xABCD;
+        assert_eq!(
+            d.u16_at(reg::STATION_ALIAS),
+            0,
+            "only loaded at power-up or reload"
+        );
+        d.write(0x0502, &[0x00, 0x04], 0);
+        assert_eq!(d.u16_at(reg::STATION_ALIAS), 0xABCD);
     }
 }

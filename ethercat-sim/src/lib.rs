@@ -2,40 +2,82 @@
 //! drives to OP, so EtherCAT programs run and are tested without hardware.
 //!
 //! - [`Device`]: Beckhoff EK1100, EL1004, EL2004, EL2828 and EL2889, built from the SII
-//!   EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface, AL
-//!   state machine, SyncManagers and FMMUs.
-//! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR, LRD/LWR/LRW,
-//!   FRMW) with working counters as real ESCs count them; inputs, outputs and faults for tests.
+//!   EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface
+//!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed-clock
+//!   registers.
+//! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR,
+//!   LRD/LWR/LRW, FRMW and the read-write variants) with working counters as real ESCs count
+//!   them; inputs, outputs and faults for tests.
 //! - [`inproc`]: the bus as ethercrab's network, in process, through its `PduTx`/`PduRx`.
+//! - [`raw`] (Linux): the bus behind a network interface (a veth pair), for a MainDevice
+//!   using its own raw socket.
+//!
+//! A program drives the simulated bus exactly as it drives hardware. Init and the cycle loop,
+//! from synchronous code:
 //!
 //! ```
 //! use ethercat_sim::{Device, SimBus, inproc};
 //! use ethercrab::{MainDevice, MainDeviceConfig, PduStorage, Timeouts};
+//! use futures_lite::future::block_on;
+//! use std::time::Duration;
 //!
+//! // One storage per MainDevice: ethercrab's frame queues are 'static and single-use.
 //! static STORAGE: PduStorage<16, 1100> = PduStorage::new();
-//! let (tx, rx, pdu_loop) = STORAGE.try_split().unwrap();
+//! let (tx, rx, pdu_loop) = STORAGE.try_split().expect("storage used once");
+//!
 //! let bus = SimBus::new(vec![Device::ek1100(), Device::el1004(), Device::el2004()]);
-//! let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-//! let timeouts = Timeouts { eeprom: std::time::Duration::from_millis(500), ..Timeouts::default() };
-//! let md = MainDevice::new(pdu_loop, timeouts, MainDeviceConfig::default());
-//! let group = futures_lite::future::block_on(md.init_single_group::<4, 8>(ethercrab::std::ethercat_now))
-//!     .unwrap();
-//! let group = futures_lite::future::block_on(group.into_op(&md)).unwrap();
-//! bus.set_input_bit(1, 0, true);
-//! futures_lite::future::block_on(group.tx_rx(&md)).unwrap();
-//! let el1004 = group.subdevice(&md, 1).unwrap();
-//! assert_eq!(el1004.name(), "EL1004");
-//! assert_eq!(el1004.inputs_raw()[0] & 1, 1);
+//! let driver = inproc::spawn(tx, rx, bus.clone())?;
+//!
+//! let md = MainDevice::new(
+//!     pdu_loop,
+//!     // Room for a busy machine: the simulated devices answer from a thread that may wait
+//!     // for a core, where ethercrab's 30 ms PDU and 10 ms EEPROM timeouts assume hardware.
+//!     Timeouts {
+//!         pdu: Duration::from_millis(200),
+//!         eeprom: Duration::from_millis(200),
+//!         ..Timeouts::default()
+//!     },
+//!     // 100 static DC sync frames instead of 10 000: the simulated clocks do not drift.
+//!     MainDeviceConfig { dc_static_sync_iterations: 100, ..Default::default() },
+//! );
+//! let group = block_on(md.init_single_group::<4, 8>(ethercrab::std::ethercat_now)).unwrap();
+//! let group = block_on(group.into_op(&md)).unwrap();
+//!
+//! bus.set_input_bit(1, 0, true); // EL1004 channel 1
+//! for _cycle in 0..3 {
+//!     group.subdevice(&md, 2).unwrap().outputs_raw_mut()[0] = 0b0101; // EL2004
+//!     let response = block_on(group.tx_rx(&md)).unwrap();
+//!     assert_eq!(response.working_counter, 3); // EL1004 reads (+1), EL2004 writes (+2)
+//! }
+//! assert_eq!(group.subdevice(&md, 1).unwrap().inputs_raw()[0] & 1, 1);
+//! assert_eq!(bus.outputs(2), [0b0101]);
+//!
+//! drop(group);
+//! // SAFETY: the group is gone and no frame is in flight.
+//! let _pdu_loop = unsafe { md.release_all() };
+//! driver.stop(); // ethercrab asked it to exit; this joins its thread
+//! # Ok::<(), std::io::Error>(())
 //! ```
 //!
-//! What the simulator leaves out: distributed clocks (the devices do not announce DC support,
-//! so ethercrab skips DC configuration), mailboxes and CoE (EL3004), and EEPROM busy timing.
+//! Not simulated: mailboxes and CoE (so no EL3004), SYNC0/1 signals, bit-granular FMMUs,
+//! watchdogs, and EEPROM contents the captures do not hold (see `data/README.md`).
 #![deny(missing_docs)]
 
+pub mod al;
 mod bus;
+mod datagram;
+mod dc;
 mod device;
-pub mod inproc;
+pub mod esc;
+mod fault;
 pub mod sii;
+mod transport;
 
-pub use bus::{ETHERTYPE, REPLY_SOURCE, SimBus};
-pub use device::{Device, SiiSyncManager, al};
+pub use bus::{FrameCounters, REPLY_SOURCE, SimBus};
+pub use datagram::{Command, Datagram, ETHERTYPE, Malformed};
+pub use device::Device;
+pub use esc::EscInfo;
+pub use sii::SiiSyncManager;
+pub use transport::inproc;
+#[cfg(target_os = "linux")]
+pub use transport::raw;

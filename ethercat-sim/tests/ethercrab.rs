@@ -1,65 +1,32 @@
-//! Real ethercrab 0.7 against the simulated terminals: init to OP, the real devices' names,
-//! identities and process data sizes, cyclic data both ways with the working counters real
-//! ESCs give, and the faults a test bench needs.
+//! Real ethercrab 0.7 against the simulated terminals through the in-process transport: init
+//! to OP, the real devices' names, identities and process data sizes, distributed clocks,
+//! cyclic data both ways with the working counters real ESCs give, and the faults a test
+//! bench needs.
 
+#[macro_use]
+mod common;
+
+use common::{bench, maindevice, timeouts};
 use ethercat_sim::{Device, SimBus, al, inproc};
-use ethercrab::error::Error;
-use ethercrab::{MainDevice, MainDeviceConfig, PduStorage, Timeouts};
+use ethercrab::error::{Error, TimeoutError};
+use ethercrab::{Command, DcSupport, SubDeviceState};
 use futures_lite::future::block_on;
 use std::time::Duration;
-
-const FRAMES: usize = 16;
-const PDU: usize = 1100;
-
-/// Each test its own storage: ethercrab's frame queues are `'static` and single-use.
-macro_rules! storage {
-    () => {{
-        static STORAGE: PduStorage<FRAMES, PDU> = PduStorage::new();
-        STORAGE.try_split().expect("storage used once")
-    }};
-}
-
-fn bench() -> SimBus {
-    SimBus::new(vec![
-        Device::ek1100(),
-        Device::el1004(),
-        Device::el2004(),
-        Device::el2889(),
-    ])
-}
-
-fn maindevice(pdu_loop: ethercrab::PduLoop<'static>) -> MainDevice<'static> {
-    // Room for a busy machine: the simulated devices answer from a thread that may have to
-    // wait for a core (ethercrab's 10 ms EEPROM default assumes hardware).
-    let timeouts = Timeouts {
-        pdu: Duration::from_millis(200),
-        eeprom: Duration::from_millis(500),
-        ..Timeouts::default()
-    };
-    MainDevice::new(
-        pdu_loop,
-        timeouts,
-        MainDeviceConfig {
-            dc_static_sync_iterations: 100,
-            ..MainDeviceConfig::default()
-        },
-    )
-}
 
 #[test]
 fn ethercrab_brings_ek1100_el1004_el2004_el2889_to_op_and_exchanges_data() {
     let (tx, rx, pdu_loop) = storage!();
     let bus = bench();
-    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-    let md = maindevice(pdu_loop);
+    let driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
     let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    let group = block_on(group.into_op(&md)).unwrap();
     let expected = [
         ("EK1100", 0x044C_2C52, 0x0012_0000, 0, 0),
         ("EL1004", 0x03EC_3052, 0x0013_0000, 1, 0),
         ("EL2004", 0x07D4_3052, 0x0010_0000, 0, 1),
         ("EL2889", 0x0B49_3052, 0x0011_0000, 0, 2),
     ];
-    let group = block_on(group.into_op(&md)).unwrap();
     for (i, (name, product, revision, inputs, outputs)) in expected.into_iter().enumerate() {
         let sd = group.subdevice(&md, i).unwrap();
         assert_eq!(sd.name(), name);
@@ -68,6 +35,7 @@ fn ethercrab_brings_ek1100_el1004_el2004_el2889_to_op_and_exchanges_data() {
             (id.vendor_id, id.product_id, id.revision),
             (2, product, revision)
         );
+        assert_eq!(sd.configured_address(), 0x1000 + i as u16);
         assert_eq!(sd.inputs_raw().len(), inputs, "{name} input bytes");
         assert_eq!(sd.outputs_raw().len(), outputs, "{name} output bytes");
         assert_eq!(bus.al_state(i), al::OP);
@@ -75,36 +43,104 @@ fn ethercrab_brings_ek1100_el1004_el2004_el2889_to_op_and_exchanges_data() {
 
     bus.set_input_bit(1, 0, true);
     bus.set_input_bit(1, 3, true);
-    {
-        let dq4 = group.subdevice(&md, 2).unwrap();
-        dq4.outputs_raw_mut()[0] = 0b0101;
-        let dq16 = group.subdevice(&md, 3).unwrap();
-        dq16.outputs_raw_mut().copy_from_slice(&[0x80, 0x01]);
-    }
+    group.subdevice(&md, 2).unwrap().outputs_raw_mut()[0] = 0b0101;
+    group
+        .subdevice(&md, 3)
+        .unwrap()
+        .outputs_raw_mut()
+        .copy_from_slice(&[0x80, 0x01]);
     let response = block_on(group.tx_rx(&md)).unwrap();
     // EL1004: +1 (read FMMU); EL2004 and EL2889: +2 each (write FMMU); EK1100: nothing.
     assert_eq!(response.working_counter, 5);
+    assert!(
+        response
+            .subdevice_states
+            .iter()
+            .all(|s| *s == SubDeviceState::Op)
+    );
     assert_eq!(group.subdevice(&md, 1).unwrap().inputs_raw()[0], 0b1001);
     assert_eq!(bus.outputs(2), [0b0101]);
     assert_eq!(bus.outputs(3), [0x80, 0x01]);
     assert!(bus.output_bit(3, 7) && bus.output_bit(3, 8) && !bus.output_bit(3, 0));
+
+    bus.set_input_bit(1, 0, false);
+    assert_eq!(block_on(group.tx_rx(&md)).unwrap().working_counter, 5);
+    assert_eq!(group.subdevice(&md, 1).unwrap().inputs_raw()[0], 0b1000);
+
+    drop(group);
+    // SAFETY: the group is gone and no frame is in flight.
+    let _ = unsafe { md.release_all() };
+    driver.stop();
 }
 
 #[test]
-fn a_subdevice_that_stops_answering_gives_a_wrong_working_counter() {
+fn cycles_of_the_captured_terminals_give_the_captured_working_counters() {
+    // The terminals of capture [A] in one group, as in ethercrab's [R4]: each output terminal
+    // adds 2 to the LRW's working counter, the EK1100 nothing (EMULATOR-NOTES §9).
+    let (tx, rx, pdu_loop) = storage!();
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el2828(), Device::el2889()]);
+    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
+    let group = block_on(md.init_single_group::<4, 16>(ethercrab::std::ethercat_now)).unwrap();
+    let group = block_on(group.into_op(&md)).unwrap();
+    for cycle in 0..8u8 {
+        group.subdevice(&md, 1).unwrap().outputs_raw_mut()[0] = cycle;
+        group
+            .subdevice(&md, 2)
+            .unwrap()
+            .outputs_raw_mut()
+            .copy_from_slice(&[1 << cycle, 0x80 >> cycle]);
+        assert_eq!(block_on(group.tx_rx(&md)).unwrap().working_counter, 4);
+        assert_eq!(bus.outputs(1), [cycle]);
+        assert_eq!(bus.outputs(2), [1 << cycle, 0x80 >> cycle]);
+    }
+}
+
+#[test]
+fn distributed_clocks_are_found_and_delays_grow_along_the_line() {
     let (tx, rx, pdu_loop) = storage!();
     let bus = bench();
     let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-    let md = maindevice(pdu_loop);
+    let md = maindevice(pdu_loop, timeouts());
+    let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    let sd = |i| group.subdevice(&md, i).unwrap();
+    // 0x00FC: DC without enhanced sync ("RefOnly" to ethercrab); 0x01FC: 64-bit DC.
+    assert_eq!(sd(0).dc_support(), DcSupport::RefOnly);
+    assert_eq!(sd(1).dc_support(), DcSupport::Bits64);
+    let delays: Vec<u32> = (0..4).map(|i| sd(i).propagation_delay()).collect();
+    assert_eq!(delays[0], 0);
+    assert!(
+        delays.windows(2).all(|w| w[1] > w[0]),
+        "delays grow down the line: {delays:?}"
+    );
+}
+
+#[test]
+fn a_subdevice_that_stops_answering_gives_working_counter_errors() {
+    let (tx, rx, pdu_loop) = storage!();
+    let bus = bench();
+    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
     let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
     let group = block_on(group.into_op(&md)).unwrap();
     assert_eq!(block_on(group.tx_rx(&md)).unwrap().working_counter, 5);
+
     bus.set_responding(3, false);
-    let r = block_on(group.tx_rx(&md));
+    // The cyclic LRW misses the EL2889's +2; ethercrab reports the sum, the program compares.
+    assert_eq!(block_on(group.tx_rx(&md)).unwrap().working_counter, 3);
+    // A checked read of the silent device fails with a working-counter error.
+    let err = block_on(group.subdevice(&md, 3).unwrap().status()).unwrap_err();
     assert!(
-        matches!(&r, Ok(resp) if resp.working_counter == 3) || r.is_err(),
-        "the EL2889's +2 is missing: {r:?}"
+        matches!(
+            err,
+            Error::WorkingCounter {
+                expected: 1,
+                received: 0
+            }
+        ),
+        "{err:?}"
     );
+
     bus.set_responding(3, true);
     assert_eq!(block_on(group.tx_rx(&md)).unwrap().working_counter, 5);
 }
@@ -113,43 +149,56 @@ fn a_subdevice_that_stops_answering_gives_a_wrong_working_counter() {
 fn a_wrong_terminal_shows_its_own_identity_to_ethercrab() {
     let (tx, rx, pdu_loop) = storage!();
     let bus = bench();
-    bus.set_identity(2, 2, 0x0B0C_3052, 0x0011_0000); // an EL2828 where an EL2004 belongs
+    bus.set_identity(2, 2, 0x0B0C_3052, 0x0011_0000); // an EL2828's identity in the EL2004 slot
     let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-    let md = maindevice(pdu_loop);
+    let md = maindevice(pdu_loop, timeouts());
     let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
-    let sd = group.subdevice(&md, 2).unwrap();
-    assert_eq!(sd.identity().product_id, 0x0B0C_3052);
+    let id = group.subdevice(&md, 2).unwrap().identity();
+    assert_eq!(
+        (id.vendor_id, id.product_id, id.revision),
+        (2, 0x0B0C_3052, 0x0011_0000)
+    );
 }
 
 #[test]
-fn a_refused_state_change_fails_into_op() {
+fn a_refused_state_change_fails_into_op_and_shows_the_al_status_code() {
     let (tx, rx, pdu_loop) = storage!();
     let bus = bench();
-    bus.refuse_transition(3, al::SAFE_OP, 0x001D); // "invalid output configuration"
+    bus.refuse_transition(3, al::SAFE_OP, al::INVALID_OUTPUT_CONFIGURATION);
     let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
-    let md = maindevice(pdu_loop);
+    let md = maindevice(
+        pdu_loop,
+        ethercrab::Timeouts {
+            state_transition: Duration::from_millis(300),
+            ..timeouts()
+        },
+    );
     let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    // ethercrab waits for SAFE-OP, which the EL2889 never reaches, as with hardware.
     let err = block_on(group.into_op(&md))
         .err()
         .expect("into_op must fail");
     assert!(
-        matches!(
-            err,
-            Error::StateTransition | Error::SubDevice(_) | Error::Timeout(_)
-        ),
+        matches!(err, Error::Timeout(TimeoutError::StateTransition)),
         "{err:?}"
     );
-    assert_ne!(bus.al_state(3), al::OP);
+    // What a diagnosing program reads from the terminal: PRE-OP with the error bit, and the code.
+    let status: u16 = block_on(Command::fprd(0x1003, 0x0130).receive(&md)).unwrap();
+    let code: u16 = block_on(Command::fprd(0x1003, 0x0134).receive(&md)).unwrap();
+    assert_eq!((status, code), (0x0012, 0x001D));
+    assert_eq!(bus.al_state(3), al::PRE_OP);
+    assert_eq!(bus.al_status_code(3), al::INVALID_OUTPUT_CONFIGURATION);
+    assert_eq!(bus.al_state(2), al::SAFE_OP, "the others went on");
 }
 
 #[test]
-fn malformed_frames_are_ignored_not_a_panic() {
+fn malformed_frames_are_counted_and_ignored() {
     let bus = bench();
     assert_eq!(bus.process_frame(&[]), None);
-    assert_eq!(bus.process_frame(&[0u8; 20]), None);
-    let mut frame = vec![0xFF; 14];
-    frame[12] = 0x88;
-    frame[13] = 0xA4;
-    frame.extend_from_slice(&[0xFF, 0x17]); // header says more than there is
+    assert_eq!(bus.process_frame(&[0u8; 20]), None); // ethertype 0
+    let mut frame = vec![0xFF; 12];
+    frame.extend_from_slice(&[0x88, 0xA4, 0xFF, 0x17]); // header claims 0x7FF bytes
     assert_eq!(bus.process_frame(&frame), None);
+    let c = bus.counters();
+    assert_eq!((c.processed, c.not_ethercat, c.malformed), (0, 1, 2));
 }
