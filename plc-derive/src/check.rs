@@ -335,7 +335,7 @@ fn initial_and_iec_type(c: &Container, cx: &mut Ctxt) {
         if let Some(init) = &v.initial
             && let Some(msg) = init.misfit(k, &v.field_name())
         {
-            cx.error(init.span, msg);
+            cx.syn(syn::Error::new_spanned(&init.tokens, msg));
         }
     }
 }

@@ -1,5 +1,6 @@
 //! Collects every error of a struct so the user sees all of them at once (serde's `Ctxt`).
 
+use crate::symbol::{CONTAINER_KEYS, FIELD_KEYS, PLC, expects, list};
 use proc_macro2::{Span, TokenStream};
 use std::fmt::Display;
 
@@ -33,9 +34,15 @@ impl Ctxt {
         self.errors.push(error.to_compile_error());
     }
 
+    /// darling's errors, one by one, with messages in this crate's words.
     pub fn darling(&mut self, error: darling::Error) {
         self.any = true;
-        self.errors.push(error.write_errors());
+        for e in error.flatten() {
+            let span = e.span();
+            let message = darling_message(&e.to_string());
+            self.errors
+                .push(syn::Error::new(span, message).to_compile_error());
+        }
     }
 
     pub fn has_errors(&self) -> bool {
@@ -44,5 +51,69 @@ impl Ctxt {
 
     pub fn into_tokens(self) -> TokenStream {
         self.errors.into_iter().collect()
+    }
+}
+
+/// Rewrites darling's generic messages ("Duplicate field `x`", "Unknown field: `x`") in terms of
+/// the `#[plc(...)]` attribute; others pass through.
+fn darling_message(message: &str) -> String {
+    // darling appends " at <key>" for errors of one key's value: say the key first instead.
+    let known = |k: &str| FIELD_KEYS.contains(&k) || CONTAINER_KEYS.contains(&k);
+    if let Some((text, key)) = message.rsplit_once(" at ")
+        && known(key)
+    {
+        return if text.contains(&format!("`{key}`")) {
+            text.to_string()
+        } else if let (true, Some(expected)) = (text.starts_with("Unexpected"), expects(key)) {
+            format!("`{key}` takes {expected}")
+        } else {
+            format!("`{key}`: {}", lowercase_first(text))
+        };
+    }
+    let quoted = |s: &str| s.split('`').nth(1).unwrap_or_default().to_string();
+    if message.starts_with("Duplicate field `") {
+        let key = quoted(message);
+        return format!("`{key}` is given twice in `#[{PLC}(...)]`: keep one");
+    }
+    if let Some(rest) = message.strip_prefix("Unknown field: ") {
+        let key = quoted(rest);
+        let hint = if let Some((_, alt)) = rest.split_once(". Did you mean ") {
+            format!("did you mean {}", alt.trim())
+        } else if rest.contains("Available values:") {
+            format!("the keys on the struct are {}", list(CONTAINER_KEYS))
+        } else {
+            format!("the keys on a field are {}", list(FIELD_KEYS))
+        };
+        return format!("unknown key `{key}` in `#[{PLC}(...)]`: {hint}");
+    }
+    message.to_string()
+}
+
+fn lowercase_first(s: &str) -> String {
+    let mut chars = s.chars();
+    chars.next().map_or_else(String::new, |c| {
+        c.to_lowercase().chain(chars).collect::<String>()
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::darling_message;
+
+    #[test]
+    fn darling_messages_name_the_attribute() {
+        assert_eq!(
+            darling_message("Duplicate field `bit`"),
+            "`bit` is given twice in `#[plc(...)]`: keep one"
+        );
+        assert_eq!(
+            darling_message("Unknown field: `linkk`. Did you mean `link`?"),
+            "unknown key `linkk` in `#[plc(...)]`: did you mean `link`?"
+        );
+        assert!(darling_message("Unknown field: `colour`").contains("`iec_type`"));
+        assert_eq!(
+            darling_message("Unexpected type `int`"),
+            "Unexpected type `int`"
+        );
     }
 }

@@ -20,6 +20,8 @@ pub enum InitialValue {
 pub struct Initial {
     pub value: InitialValue,
     pub span: Span,
+    /// The tokens written, so an error can cover all of `-1`, not just the `-`.
+    pub tokens: TokenStream,
 }
 
 impl Initial {
@@ -27,8 +29,8 @@ impl Initial {
     pub fn parse(expr: &Expr) -> syn::Result<Initial> {
         let span = expr.span();
         let bad = || {
-            syn::Error::new(
-                span,
+            syn::Error::new_spanned(
+                expr,
                 "`initial` takes a literal: a number (`12.5`, `-3`), `true`/`false`, or a string \
                  (`\"TEST-001\"`)",
             )
@@ -48,7 +50,10 @@ impl Initial {
             Lit::Str(s) if !negative => InitialValue::Str(s.value()),
             Lit::Int(i) => {
                 let n: i128 = i.base10_parse().map_err(|_| {
-                    syn::Error::new(span, "this number is too large for any PLC integer type")
+                    syn::Error::new_spanned(
+                        expr,
+                        "this number is too large for any PLC integer type",
+                    )
                 })?;
                 InitialValue::Int(if negative { -n } else { n })
             }
@@ -58,7 +63,11 @@ impl Initial {
             }
             _ => return Err(bad()),
         };
-        Ok(Initial { value, span })
+        Ok(Initial {
+            value,
+            span,
+            tokens: quote!(#expr),
+        })
     }
 
     /// JSON text, as `VarInfo::initial` holds it.

@@ -11,6 +11,7 @@ mod check;
 mod ctxt;
 mod expand;
 mod initial;
+mod symbol;
 mod types;
 
 use proc_macro::TokenStream;

@@ -7,7 +7,7 @@ use crate::ast::{Container, Var};
 use crate::types::SynType;
 use plc_rules::address::Size;
 use proc_macro2::{Span, TokenStream};
-use quote::quote_spanned;
+use quote::{quote, quote_spanned};
 
 fn assert(span: Span, cond: TokenStream, message: String) -> TokenStream {
     quote_spanned!(span=> const _: () = ::core::assert!(#cond, #message);)
@@ -45,9 +45,11 @@ pub fn expand(c: &Container) -> TokenStream {
                         src.field_name()
                     ),
                 ));
+                // A source that is not an integer is the one mistake; its bit is not judged.
+                let facts = quote_spanned!(src.ty_span()=> #p::facts::<#sty>());
                 out.extend(assert(
                     b.span,
-                    quote_spanned!(src.ty_span()=> (#bit as u32) < #p::facts::<#sty>().scalar_bits()),
+                    quote!(!#facts.is_integer() || (#bit as u32) < #facts.scalar_bits()),
                     format!(
                         "bit {bit} is out of range for the type of `{}`",
                         src.field_name()

@@ -1,0 +1,82 @@
+//! The keys of `#[plc(...)]`, for messages that list them. The darling receivers in `attr`
+//! define the keys themselves (by field name); a test keeps this list and them in step.
+
+/// The attribute's path: `#[plc(...)]`.
+pub const PLC: &str = "plc";
+
+/// Field keys, in the order the reference table in the README lists them.
+pub const FIELD_KEYS: &[&str] = &[
+    "link",
+    "source",
+    "bit",
+    "at",
+    "initial",
+    "nonvolatile",
+    "retain",
+    "description",
+    "read_only",
+    "direction",
+    "name",
+    "iec_type",
+];
+
+/// Container keys.
+pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned"];
+
+/// What a key's value looks like, for "wrong kind of value" messages.
+pub fn expects(key: &str) -> Option<&'static str> {
+    Some(match key {
+        "link" => "a string such as \"ethercat.io_0.inputs\"",
+        "source" => "the name of an integer field as a string, such as \"inputs\"",
+        "bit" => "a bit number such as `3`",
+        "at" => "an address string such as \"%IW4\"",
+        "description" => "a string",
+        "direction" => "a string: \"input\", \"output\", \"command\", \"status\" or \"internal\"",
+        "name" => "a string",
+        "iec_type" => "a string such as \"WORD\"",
+        "crate" => "a path as a string, such as \"::plc_core\"",
+        "byte_order" => "\"little\" or \"big\"",
+        _ => return None,
+    })
+}
+
+/// `` `a`, `b` or `c` ``.
+pub fn list(keys: &[&str]) -> String {
+    let quoted: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
+    match quoted.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        _ => quoted.concat(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{CONTAINER_KEYS, FIELD_KEYS};
+    use crate::attr::{ContainerAttr, FieldAttr};
+    use darling::{FromDeriveInput, FromField};
+    use syn::parse::Parser;
+
+    fn unknown(e: darling::Error) -> bool {
+        e.flatten()
+            .into_iter()
+            .any(|e| e.to_string().starts_with("Unknown field"))
+    }
+
+    #[test]
+    fn every_listed_key_is_a_key_of_the_receivers() {
+        for key in FIELD_KEYS {
+            let src = format!("#[plc({key} = 1)] x: u8");
+            let field = syn::Field::parse_named.parse_str(&src).unwrap();
+            if let Err(e) = FieldAttr::from_field(&field) {
+                assert!(!unknown(e), "field key `{key}`");
+            }
+        }
+        for key in CONTAINER_KEYS {
+            let src = format!("#[plc({key} = 1)] struct S {{ x: u8 }}");
+            let input: syn::DeriveInput = syn::parse_str(&src).unwrap();
+            if let Err(e) = ContainerAttr::from_derive_input(&input) {
+                assert!(!unknown(e), "container key `{key}`");
+            }
+        }
+    }
+}
