@@ -347,3 +347,37 @@ proptest! {
         prop_assert_eq!(gm.impact67_0_digital_outputs, (outputs & !1) | brake as u16);
     }
 }
+
+type Word = u16;
+type Flag = bool;
+type Label = FixedString<4>;
+
+/// Fields declared through aliases: the derive only sees paths, the compiler knows the types.
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct Aliased {
+    #[plc(initial = 0x8001, iec_type = "WORD")]
+    w: Word,
+    #[plc(source = "w", bit = 15)]
+    top: Flag,
+    #[plc(initial = "ok")]
+    label: Label,
+}
+
+#[test]
+fn alias_fields_behave_like_the_types_they_name() {
+    let mut gm = Aliased::default();
+    assert!(gm.top, "bit 15 of the initial 0x8001");
+    assert_eq!(gm.label.as_str(), "ok");
+    let v = Aliased::VARIABLES;
+    assert_eq!((v[0].iec_type, v[0].size), (IecType::Word, 2));
+    assert_eq!(v[1].bit.map(|b| (b.source, b.bit)), Some((0, 15)));
+    assert_eq!(
+        v[2].offset,
+        core::mem::offset_of!(<Aliased as GlobalMemory>::Image, label)
+    );
+    gm.set(1, 0, Value::Bool(false)).expect("bool");
+    assert_eq!(gm.w, 0x0001, "the bool's bit reached its word");
+    gm.set(0, 0, Value::UInt(0x8000)).expect("word");
+    assert!(gm.top, "the word's bit reached its bool");
+    assert_eq!(Aliased::from_image(&gm.to_image()), gm);
+}
