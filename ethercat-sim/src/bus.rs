@@ -390,3 +390,68 @@ fn logical(dev: &mut Device, command: Command, start: u32, data: &mut [u8], wkc:
     let write_weight = if command == Command::Lrw { 2 } else { 1 };
     *wkc = wkc.wrapping_add(read as u16 + write_weight * wrote as u16);
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A frame from 10:10:10:10:10:10 with one datagram.
+    fn frame(cmd: u8, adp: u16, ado: u16, data: &[u8]) -> Vec<u8> {
+        let mut f = vec![0xFF; 6];
+        f.extend_from_slice(&[0x10; 6]);
+        f.extend_from_slice(&crate::ETHERTYPE.to_be_bytes());
+        f.extend_from_slice(&(0x1000 | (12 + data.len()) as u16).to_le_bytes());
+        f.extend_from_slice(&[cmd, 0]);
+        f.extend_from_slice(&adp.to_le_bytes());
+        f.extend_from_slice(&ado.to_le_bytes());
+        f.extend_from_slice(&(data.len() as u16).to_le_bytes());
+        f.extend_from_slice(&[0, 0]);
+        f.extend_from_slice(data);
+        f.extend_from_slice(&[0, 0]);
+        f
+    }
+
+    /// (data, wkc, adp) of the reply's datagram.
+    fn answer(reply: &[u8], len: usize) -> (Vec<u8>, u16, u16) {
+        let wkc = u16::from_le_bytes([reply[26 + len], reply[27 + len]]);
+        let adp = u16::from_le_bytes([reply[18], reply[19]]);
+        (reply[26..26 + len].to_vec(), wkc, adp)
+    }
+
+    #[test]
+    fn replies_come_from_12_10_10_10_10_10_padded_to_60_bytes() {
+        let bus = SimBus::new(vec![Device::ek1100(), Device::el2004()]);
+        let reply = bus.process_frame(&frame(0x07, 0, 0, &[0])).unwrap();
+        assert_eq!(reply[6..12], REPLY_SOURCE);
+        assert_eq!(reply.len(), 60);
+        assert_eq!(answer(&reply, 1), (vec![0x13], 2, 2)); // BRD: OR of types, one per device
+    }
+
+    #[test]
+    fn the_station_alias_addresses_a_device_once_dl_control_enables_it() {
+        let mut ek1100 = Device::ek1100();
+        ek1100.eeprom_words_mut()[4] = 0x0ABC;
+        ek1100.write(0x0502, &[0x00, 0x04], 0); // reload: 0x0012 = word 4
+        let bus = SimBus::new(vec![ek1100, Device::el2004()]);
+        let fprd = frame(0x04, 0x0ABC, 0x0012, &[0, 0]);
+        assert_eq!(
+            answer(&bus.process_frame(&fprd).unwrap(), 2).1,
+            0,
+            "alias not enabled"
+        );
+        bus.process_frame(&frame(0x02, 0, 0x0103, &[0x01])).unwrap(); // APWR DL control byte 3
+        let (data, wkc, _) = answer(&bus.process_frame(&fprd).unwrap(), 2);
+        assert_eq!((data, wkc), (vec![0xBC, 0x0A], 1));
+    }
+
+    #[test]
+    fn auto_increment_addresses_count_up_through_the_ring() {
+        let bus = SimBus::new(vec![Device::ek1100(), Device::el2004(), Device::el2889()]);
+        let reply = bus
+            .process_frame(&frame(0x02, 0xFFFF, 0x0010, &[0x01, 0x10]))
+            .unwrap();
+        let (_, wkc, adp) = answer(&reply, 2);
+        assert_eq!((wkc, adp), (1, 2)); // position -1 + 3 devices
+        assert_eq!(bus.device(1).station_address(), 0x1001);
+    }
+}

@@ -153,6 +153,13 @@ impl Device {
         &self.eeprom.words
     }
 
+    /// The SII EEPROM words, to change the image before the device goes on a bus (the ESC
+    /// loads the station alias from word 4 at power-up, i.e. in [`Device::from_sii`], and on
+    /// a reload command).
+    pub fn eeprom_words_mut(&mut self) -> &mut [u16] {
+        &mut self.eeprom.words
+    }
+
     /// The SyncManagers the SII describes.
     pub fn sii_sync_managers(&self) -> &[SiiSyncManager] {
         &self.sync_managers

@@ -23,6 +23,7 @@ impl Wake for Unpark {
 }
 
 /// The running driver; dropping it (or [`stop`](Self::stop)) ends and joins the thread.
+#[derive(Debug)]
 pub struct Driver {
     stop: Arc<AtomicBool>,
     thread: Option<JoinHandle<()>>,
