@@ -15,7 +15,7 @@ use std::time::Instant;
 pub const REPLY_SOURCE: [u8; 6] = [0x12, 0x10, 0x10, 0x10, 0x10, 0x10];
 
 /// Local clocks of the devices start this far apart (real terminals power up at different
-/// times; capture [A] shows clocks at 0x158A.., 0x1636.., 0x15A9..).
+/// times; capture \[A\] shows clocks at 0x158A.., 0x1636.., 0x15A9..).
 const CLOCK_SPREAD_NS: u64 = 0x0B00_0000;
 
 /// What the bus has seen.

@@ -5,7 +5,7 @@
 //! Frames take [`HOP_NS`] from one device to the next, so in a line of N devices a frame
 //! reaches device i at `t + i·HOP_NS` on port 0 and comes back to its port 1 at
 //! `t + (2N − 2 − i)·HOP_NS`: a MainDevice then computes a delay of one hop per device, as it
-//! does on hardware (capture [A]: 140 and 295 ns).
+//! does on hardware (capture \[A\]: 140 and 295 ns).
 
 /// Time a frame takes from one device's port 0 to the next one's (cable plus forwarding).
 pub const HOP_NS: u64 = 140;

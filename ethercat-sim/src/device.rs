@@ -64,8 +64,8 @@ impl Device {
         d
     }
 
-    /// The EK1100 EtherCAT coupler (no process data). ESC registers from capture [A] and a
-    /// TwinCAT scan ([R2]).
+    /// The EK1100 EtherCAT coupler (no process data). ESC registers from capture \[A\] and a
+    /// TwinCAT scan (\[R2\]).
     pub fn ek1100() -> Device {
         let words = sii::parse(include_str!("../data/sii-EK1100-full.txt"));
         Device::from_sii(
@@ -86,7 +86,7 @@ impl Device {
         )
     }
 
-    /// The EL1004, 4 digital inputs (one byte at 0x1000). ESC registers from [R2]; the
+    /// The EL1004, 4 digital inputs (one byte at 0x1000). ESC registers from \[R2\]; the
     /// EEPROM idle status and the missing system-time unit are taken from the EL2828, which
     /// reports the same features (0x01FC).
     pub fn el1004() -> Device {
@@ -95,28 +95,28 @@ impl Device {
     }
 
     /// The EL2004, 4 digital outputs (0x0F00). Its ESC registers were never captured
-    /// except the EEPROM idle status (0x0040, [D]); the rest are the EL2889's.
+    /// except the EEPROM idle status (0x0040, \[D\]); the rest are the EL2889's.
     pub fn el2004() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL2004-full.txt"));
         Device::from_sii(words, Self::terminal_esc(0x0040, 0x00FC, true))
     }
 
     /// The EL2828, 8 digital outputs (0x0F00). Features, DL status and EEPROM status from
-    /// capture [A]; it does not count the DC system-time registers there.
+    /// capture \[A\]; it does not count the DC system-time registers there.
     pub fn el2828() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL2828-full.txt"));
         Device::from_sii(words, Self::terminal_esc(0x0050, 0x01FC, false))
     }
 
-    /// The EL2889, 16 digital outputs (0x0F00, 0x0F01). Registers from capture [A].
+    /// The EL2889, 16 digital outputs (0x0F00, 0x0F01). Registers from capture \[A\].
     pub fn el2889() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL2889-full.txt"));
         Device::from_sii(words, Self::terminal_esc(0x0040, 0x00FC, true))
     }
 
     /// The small ESC of the terminals: 3 FMMUs and 4 SyncManagers (inferred from the reset
-    /// working counters of capture [A]); type, revision, build, RAM and ports as the EL1004
-    /// reported them in [R2].
+    /// working counters of capture \[A\]); type, revision, build, RAM and ports as the EL1004
+    /// reported them in \[R2\].
     fn terminal_esc(sii_idle: u16, features: u16, dc_system_time: bool) -> EscInfo {
         EscInfo {
             esc_type: 0x12,

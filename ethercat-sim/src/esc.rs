@@ -76,7 +76,7 @@ pub struct EscInfo {
     /// Register 0x0008: features (bit 2 DC, bit 3 64-bit DC, bit 8 enhanced DC sync).
     pub features: u16,
     /// Whether the DC system-time unit (0x0910-0x09FF) exists. The EL2828 announces DC but
-    /// does not count these registers (WKC 0 in capture [A]), so this is separate from
+    /// does not count these registers (WKC 0 in capture \[A\]), so this is separate from
     /// `features`.
     pub dc_system_time: bool,
     /// Bits 0-3 of DL status 0x0110 (bit 0 PDI operational, bit 1 PDI watchdog): 0x1 on the
@@ -111,7 +111,7 @@ impl EscInfo {
 }
 
 /// Whether a master write changes the byte at `a`: a write that finds only read-only
-/// registers adds nothing to the working counter (BWR 0x092C gives WKC 0 in capture [A]).
+/// registers adds nothing to the working counter (BWR 0x092C gives WKC 0 in capture \[A\]).
 pub fn writable(a: usize) -> bool {
     !matches!(
         a,

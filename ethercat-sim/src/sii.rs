@@ -5,15 +5,15 @@
 /// Words in an image (2 KiB, as the real dumps hold; word 0x3E = 0x000F).
 pub const WORDS: usize = 1024;
 
-/// How long a read keeps the busy bit set. Capture [A] shows busy up to 676 µs after the read
+/// How long a read keeps the busy bit set. Capture \[A\] shows busy up to 676 µs after the read
 /// command and idle from 711 µs on (every device, every read), so polls see busy as on
 /// hardware: a MainDevice that skips the busy check reads stale data here too.
 pub const READ_BUSY_NS: u64 = 700_000;
-/// How long a write keeps the busy bit set (capture [B]: idle 295 µs after one write, busy
+/// How long a write keeps the busy bit set (capture \[B\]: idle 295 µs after one write, busy
 /// 296.6 µs after another).
 pub const WRITE_BUSY_NS: u64 = 297_000;
 /// The EEPROM chip's internal write cycle: it does not acknowledge commands for this long
-/// after a write, and the ESC reports a command error (bit 13). Capture [B] shows errors up
+/// after a write, and the ESC reports a command error (bit 13). Capture \[B\] shows errors up
 /// to 2.95 ms after a write and success from 3.56 ms on.
 pub const WRITE_CYCLE_NS: u64 = 3_200_000;
 
