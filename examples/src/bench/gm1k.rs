@@ -3129,7 +3129,7 @@ impl Hand1k {
 
     /// Reads every variable from image bytes (little endian, bools as bytes).
     #[inline(never)]
-    pub fn load(&mut self, b: &[u8]) {
+    pub fn load(&mut self, b: &[u8; IMAGE_SIZE]) {
         self.word0 = u16::from_le_bytes(b[0..2].try_into().unwrap());
         self.word1 = u16::from_le_bytes(b[2..4].try_into().unwrap());
         self.word2 = u16::from_le_bytes(b[4..6].try_into().unwrap());
@@ -4087,7 +4087,7 @@ impl Hand1k {
 
     /// Writes every variable into image bytes.
     #[inline(never)]
-    pub fn store(&self, b: &mut [u8]) {
+    pub fn store(&self, b: &mut [u8; IMAGE_SIZE]) {
         b[0..2].copy_from_slice(&self.word0.to_le_bytes());
         b[2..4].copy_from_slice(&self.word1.to_le_bytes());
         b[4..6].copy_from_slice(&self.word2.to_le_bytes());
@@ -5563,6 +5563,31 @@ impl Hand1k {
         self.word15 = (self.word15 & !(1 << 13)) | ((self.mapped253 as u16) << 13);
         self.word15 = (self.word15 & !(1 << 14)) | ((self.mapped254 as u16) << 14);
         self.word15 = (self.word15 & !(1 << 15)) | ((self.mapped255 as u16) << 15);
+    }
+}
+
+impl crate::bench::cycle::HandWritten for Hand1k {
+    const IMAGE_SIZE: usize = IMAGE_SIZE;
+    fn zeroed() -> Self {
+        Hand1k::zeroed()
+    }
+    fn load(&mut self, image: &[u8]) {
+        Hand1k::load(
+            self,
+            image.try_into().expect("an image of IMAGE_SIZE bytes"),
+        )
+    }
+    fn unpack(&mut self) {
+        Hand1k::unpack(self)
+    }
+    fn pack(&mut self) {
+        Hand1k::pack(self)
+    }
+    fn store(&self, image: &mut [u8]) {
+        Hand1k::store(
+            self,
+            image.try_into().expect("an image of IMAGE_SIZE bytes"),
+        )
     }
 }
 

@@ -1,27 +1,17 @@
 //! The quick benchmark runner: `cargo run --release -p examples --bin plc-bench -- --quick`.
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
+//!
+//! `--only cycle,snapshot,process_image,derive,import` runs some groups of figures.
 
+use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
+use examples::bench::derive_check::{Crate, Flavour};
 use examples::bench::gm1k::{Gm1k, Hand1k, IMAGE_SIZE};
+use examples::bench::timing::{median_per_iter, ratio, side_by_side};
 use plc_core::{GlobalMemory, ProcessImage};
 use plc_io::shm::SharedGlobalMemory;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
-
-/// Median time per iteration of `f` over `batches` batches of `iters` iterations.
-fn time(batches: usize, iters: u32, mut f: impl FnMut()) -> Duration {
-    let mut t: Vec<Duration> = (0..batches)
-        .map(|_| {
-            let start = Instant::now();
-            for _ in 0..iters {
-                f();
-            }
-            start.elapsed() / iters
-        })
-        .collect();
-    t.sort();
-    t[t.len() / 2]
-}
 
 /// A 64 KiB image: every word equals `seq` in a consistent snapshot.
 #[derive(GlobalMemory, Clone, Debug)]
@@ -30,6 +20,9 @@ pub struct Big64k {
     data: [u64; 8191],
 }
 
+/// The groups of figures, in the order they run.
+const GROUPS: [&str; 5] = ["cycle", "snapshot", "process_image", "derive", "import"];
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     if args.get(1).map(String::as_str) == Some("--publisher") {
@@ -37,54 +30,48 @@ fn main() {
         return;
     }
     let quick = args.iter().any(|a| a == "--quick");
+    let only: Vec<&str> = match args.iter().position(|a| a == "--only") {
+        Some(i) => args
+            .get(i + 1)
+            .map(|s| s.split(',').collect())
+            .unwrap_or_default(),
+        None => GROUPS.to_vec(),
+    };
+    if let Some(bad) = only.iter().find(|g| !GROUPS.contains(g)) {
+        eprintln!(
+            "plc-bench: no group `{bad}`; the groups are {}",
+            GROUPS.join(", ")
+        );
+        std::process::exit(2);
+    }
     let batches = if quick { 15 } else { 61 };
+    // A cycle takes well under a microsecond: many batches cost little and steady the ratio.
+    let cycle_batches = batches * 4;
     let segment = format!("plc_bench_{}", std::process::id());
-
-    // The cycle: snapshot in, unpack, pack, image out, seqlock publish.
-    let owner = SharedGlobalMemory::<Gm1k>::create(&segment).expect("segment");
-    let mut gm = Gm1k::default();
-    let mut out = gm.to_image();
-    owner.publish_image(&out);
-    let framework = time(batches, 2000, || {
-        let img = owner.snapshot_image().expect("snapshot");
-        gm.load_image(&img);
-        gm.unpack_bits();
-        gm.pack_bits();
-        gm.store_image(&mut out);
-        owner.publish_image(black_box(&out));
-    });
-    let input = vec![0u8; IMAGE_SIZE];
-    let mut output = vec![0u8; IMAGE_SIZE];
-    let mut hand = Hand1k::zeroed();
-    let handwritten = time(batches, 2000, || {
-        hand.load(black_box(&input));
-        hand.unpack();
-        hand.pack();
-        hand.store(&mut output);
-        black_box(&output);
-    });
-    let mut a = vec![1u8; IMAGE_SIZE];
-    let mut b = vec![0u8; IMAGE_SIZE];
-    let memcpy = time(batches, 2000, || {
-        b.copy_from_slice(black_box(&a));
-        a.copy_from_slice(black_box(&b));
-    });
-    drop(owner);
-    println!("cycle_1k_ns: {}", framework.as_nanos());
-    println!("cycle_1k_handwritten_ns: {}", handwritten.as_nanos());
-    println!(
-        "cycle_1k_vs_handwritten: {:.2}",
-        framework.as_secs_f64() / handwritten.as_secs_f64()
-    );
-    println!(
-        "cycle_1k_vs_memcpy: {:.2}",
-        framework.as_secs_f64() / memcpy.as_secs_f64()
-    );
-
-    snapshot_latency(&segment, if quick { 3 } else { 10 });
-    process_image(batches);
-    import_10k();
+    for group in only {
+        match group {
+            "cycle" => cycle(&segment, cycle_batches),
+            "snapshot" => snapshot_latency(&segment, if quick { 3 } else { 10 }),
+            "process_image" => process_image(batches),
+            "derive" => derive_check(if quick { 1 } else { 3 }),
+            _ => import_10k(),
+        }
+    }
     println!("plc-bench: ok");
+}
+
+/// The cycle on Gm1k: framework against the same work hand-written, and against memcpy.
+fn cycle(segment: &str, batches: usize) {
+    let mut framework = FrameworkCycle::<Gm1k>::new(segment).expect("segment");
+    let mut hand = HandCycle::<Hand1k>::default();
+    let mut floor = MemcpyFloor::new(IMAGE_SIZE);
+    let (ours, theirs) = side_by_side(batches, 2000, || framework.step(), || hand.step());
+    let memcpy = median_per_iter(batches, 2000, || floor.step());
+    println!("cycle_1k_ns: {}", ours.as_nanos());
+    println!("cycle_1k_handwritten_ns: {}", theirs.as_nanos());
+    println!("cycle_1k_memcpy_ns: {}", memcpy.as_nanos());
+    println!("cycle_1k_vs_handwritten: {:.2}", ratio(ours, theirs));
+    println!("cycle_1k_vs_memcpy: {:.2}", ratio(ours, memcpy));
 }
 
 /// The other process: publishes a 64 KiB image at 1 kHz.
@@ -104,6 +91,7 @@ fn publisher(segment: &str) {
     }
 }
 
+/// A reader snapshots as fast as it can while another process publishes at 1 kHz.
 fn snapshot_latency(segment: &str, seconds: u64) {
     let name = format!("{segment}_64k");
     let mut child = std::process::Command::new(std::env::current_exe().expect("exe"))
@@ -116,14 +104,15 @@ fn snapshot_latency(segment: &str, seconds: u64) {
         }
         std::thread::sleep(Duration::from_millis(5));
     };
+    let mut image = Big64k::default().to_image();
     let mut lat = Vec::new();
     let mut torn = 0u64;
     let end = Instant::now() + Duration::from_secs(seconds);
     while Instant::now() < end {
         let t = Instant::now();
-        let img = reader.snapshot_image().expect("snapshot");
+        reader.snapshot_image_into(&mut image).expect("snapshot");
         lat.push(t.elapsed());
-        let g = Big64k::from_image(&img);
+        let g = Big64k::from_image(&image);
         if g.data.iter().any(|&w| w != g.seq) {
             torn += 1;
         }
@@ -137,6 +126,7 @@ fn snapshot_latency(segment: &str, seconds: u64) {
     println!("snapshot_torn: {torn}");
 }
 
+/// Three reads and three writes by IEC address, ours against the `process-image` crate.
 fn process_image(batches: usize) {
     let mut buf = vec![0u8; 64];
     // Addresses parsed once, as a program holds them (the derive makes them constants).
@@ -144,31 +134,63 @@ fn process_image(batches: usize) {
         .iter()
         .map(|t| t.parse().expect("address"))
         .collect();
-    let ours = time(batches, 20000, || {
-        let mut pi = ProcessImage::new(&mut buf[..]);
-        let w: u16 = pi.read(&a[0]).unwrap_or(0);
-        let b: bool = pi.read(&a[1]).unwrap_or(false);
-        let d: u32 = pi.read(&a[2]).unwrap_or(0);
-        let _ = pi.write(&a[3], w.wrapping_add(1));
-        let _ = pi.write(&a[4], !b);
-        let _ = pi.write(&a[5], d ^ 1);
-        black_box(pi.as_bytes());
-    });
-    let theirs = time(batches, 20000, || {
-        let w: u16 = process_image::tag!(&buf[..], W, 16);
-        let b: bool = process_image::tag!(&buf[..], X, 3, 4);
-        let d: u32 = process_image::tag!(&buf[..], D, 8);
-        *process_image::tag_mut!(&mut buf[..], W, 2) = w.wrapping_add(1);
-        *process_image::tag_mut!(&mut buf[..], X, 5, 1) = !b;
-        *process_image::tag_mut!(&mut buf[..], D, 12) = d ^ 1;
-        black_box(&buf);
-    });
+    let mut theirs_buf = buf.clone();
+    let (ours, theirs) = side_by_side(
+        batches,
+        20000,
+        || {
+            let mut pi = ProcessImage::new(&mut buf[..]);
+            let w: u16 = pi.read(&a[0]).unwrap_or(0);
+            let b: bool = pi.read(&a[1]).unwrap_or(false);
+            let d: u32 = pi.read(&a[2]).unwrap_or(0);
+            let _ = pi.write(&a[3], w.wrapping_add(1));
+            let _ = pi.write(&a[4], !b);
+            let _ = pi.write(&a[5], d ^ 1);
+            black_box(pi.as_bytes());
+        },
+        || {
+            let buf = &mut theirs_buf;
+            let w: u16 = process_image::tag!(&buf[..], W, 16);
+            let b: bool = process_image::tag!(&buf[..], X, 3, 4);
+            let d: u32 = process_image::tag!(&buf[..], D, 8);
+            *process_image::tag_mut!(&mut buf[..], W, 2) = w.wrapping_add(1);
+            *process_image::tag_mut!(&mut buf[..], X, 5, 1) = !b;
+            *process_image::tag_mut!(&mut buf[..], D, 12) = d ^ 1;
+            black_box(&buf);
+        },
+    );
     println!(
         "process_image_vs_process_image_crate: {:.2}",
-        ours.as_secs_f64() / theirs.as_secs_f64()
+        ratio(ours, theirs)
     );
 }
 
+/// `cargo check` of a 2,000-field struct, our derive against serde's.
+fn derive_check(runs: usize) {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/plc-bench");
+    let ours = Crate::write(&root, "derive-plc-vars", Flavour::PlcVars, 2000).expect("write");
+    let serde = Crate::write(&root, "derive-serde", Flavour::Serde, 2000).expect("write");
+    // The first check of each builds its dependencies (once per machine) and is not counted.
+    for c in [&ours, &serde] {
+        if let Err(e) = c.check() {
+            eprintln!("plc-bench: {e}");
+            std::process::exit(1);
+        }
+    }
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for _ in 0..runs {
+        a.push(ours.check().expect("checked before"));
+        b.push(serde.check().expect("checked before"));
+    }
+    a.sort();
+    b.sort();
+    let (a, b) = (a[a.len() / 2], b[b.len() / 2]);
+    println!("derive_check_s_2000: {:.1}", a.as_secs_f64());
+    println!("derive_check_serde_s_2000: {:.1}", b.as_secs_f64());
+    println!("derive_vs_serde_2000: {:.2}", ratio(a, b));
+}
+
+/// Importing a 10,000-variable JSON file.
 fn import_10k() {
     let mut v = serde_json::Map::new();
     for i in 0..10_000 {
@@ -184,7 +206,7 @@ fn import_10k() {
         v.insert(format!("{name}{i}"), spec);
     }
     let json = serde_json::json!({ "variables": v }).to_string();
-    let t = time(3, 1, || {
+    let t = median_per_iter(3, 1, || {
         black_box(plc_io::import::generate(&json, &Default::default()).expect("import"));
     });
     println!("import_10k_ms: {:.0}", t.as_secs_f64() * 1e3);

@@ -10,8 +10,9 @@ use super::view::View;
 use super::{ShmError, bytes};
 use plc_core::{GlobalMemory, SetError, Value};
 use std::marker::PhantomData;
-use std::mem::{MaybeUninit, size_of};
+use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
+use zerocopy::{FromZeros, IntoBytes};
 
 /// A `GlobalMemory` struct in a named shared-memory segment.
 ///
@@ -132,12 +133,6 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         }
     }
 
-    fn image_ptr(&self) -> *mut T::Image {
-        // SAFETY: IMAGE is inside the mapping (checked at create/attach) and the image type has
-        // alignment 1.
-        unsafe { self.view.base.ptr().add(IMAGE) as *mut T::Image }
-    }
-
     /// Publishes `gm` (owner only): the image goes out under the seqlock, through atomics.
     pub fn publish(&self, gm: &T) -> Result<(), ShmError> {
         self.owner_only()?;
@@ -148,15 +143,14 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
 
     /// Publishes an image already built (the runtime reuses one buffer).
     pub fn publish_image(&self, image: &T::Image) {
-        let seq = self.view.base.word(H_SEQ);
+        let base = &self.view.base;
+        let seq = base.word(H_SEQ);
         let s = seq.load(Ordering::Relaxed);
         seq.store(s + 1, Ordering::Relaxed);
         fence(Ordering::Release);
-        // SAFETY: the destination is the image area of our mapping (see `image_ptr`); readers
-        // only access it atomically, and atomic_store writes it with atomic operations.
-        unsafe { atomic_memcpy::atomic_store(self.image_ptr(), *image, Ordering::Relaxed) };
+        bytes::store(base, IMAGE, image.as_bytes());
         seq.store(s + 2, Ordering::Release);
-        self.view.base.store(S_HEARTBEAT_NS, now_ns());
+        base.store(S_HEARTBEAT_NS, now_ns());
     }
 
     /// A consistent copy of the variables: retries while the owner writes, never torn; an error
@@ -168,15 +162,17 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
 
     /// A consistent copy of the image.
     pub fn snapshot_image(&self) -> Result<T::Image, ShmError> {
-        let raw: MaybeUninit<T::Image> = self.view.consistent(|| {
-            // SAFETY: the source is the image area of the mapping, read with atomic loads only.
-            unsafe {
-                atomic_memcpy::atomic_load(self.image_ptr() as *const T::Image, Ordering::Relaxed)
-            }
-        })?;
-        // SAFETY: every byte was loaded from initialised shared memory, and `T::Image` is
-        // `FromBytes`: any bytes are a valid value.
-        Ok(unsafe { raw.assume_init() })
+        let mut image = T::Image::new_zeroed();
+        self.snapshot_image_into(&mut image)?;
+        Ok(image)
+    }
+
+    /// A consistent copy of the image into `image`, which the caller reuses from cycle to cycle
+    /// (no image-sized value is built or moved). On error `image` holds unspecified bytes.
+    pub fn snapshot_image_into(&self, image: &mut T::Image) -> Result<(), ShmError> {
+        let out = image.as_mut_bytes();
+        self.view
+            .consistent(|| bytes::load(&self.view.base, IMAGE, out))
     }
 
     /// One variable's value (element 0 of an array), by symbol name (case-insensitive).

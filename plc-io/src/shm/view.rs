@@ -142,7 +142,8 @@ impl View {
     pub fn consistent<R>(&self, mut read: impl FnMut() -> R) -> Result<R, ShmError> {
         self.check_owner()?;
         let seq = self.base.word(H_SEQ);
-        let start = Instant::now();
+        // The clock is read only once the owner made us wait: most snapshots succeed at once.
+        let mut start = None;
         let mut spins = 0u32;
         loop {
             let s1 = seq.load(Ordering::Acquire);
@@ -155,7 +156,7 @@ impl View {
             }
             spins += 1;
             if spins.is_multiple_of(64) {
-                if start.elapsed() > SNAPSHOT_PATIENCE {
+                if start.get_or_insert_with(Instant::now).elapsed() > SNAPSHOT_PATIENCE {
                     self.check_owner()?;
                     return Err(ShmError::Stuck(self.name().to_string()));
                 }
