@@ -151,6 +151,21 @@ impl TypeFacts {
         self.is_channel() && self.iec_type.bits() == bits
     }
 
+    /// Whether one element is a number: an integer, a bit string or a real.
+    pub const fn element_is_number(self) -> bool {
+        self.iec_type.is_integer() || self.iec_type.is_real()
+    }
+
+    /// Whether one element is a real (f32 or f64).
+    pub const fn element_is_real(self) -> bool {
+        self.iec_type.is_real()
+    }
+
+    /// Whether one element is a string.
+    pub const fn element_is_string(self) -> bool {
+        matches!(self.iec_type, IecType::String)
+    }
+
     /// Whether `initial = true/false` fits.
     pub const fn initial_bool_fits(self) -> bool {
         matches!(self.iec_type, IecType::Bool)

@@ -162,20 +162,85 @@ impl Initial {
         }
     }
 
-    /// A `const` expression true when the value fits `ty` (for types only the compiler knows).
-    /// The type is named under its own span, so an unsupported type is reported there once.
-    pub fn fits_tokens(&self, krate: &TokenStream, ty: &syn::Type, ty_span: Span) -> TokenStream {
+    /// The checks of the value against `ty`, a type only the compiler knows (an alias): pairs of
+    /// a `const` condition and the message when it is false. First whether the value is of the
+    /// type's kind, then (where that holds) whether it fits, so each mistake gets one message
+    /// that says which it is. The type is named under its own span, so an unsupported type is
+    /// reported there once.
+    pub fn alias_checks(
+        &self,
+        krate: &TokenStream,
+        ty: &syn::Type,
+        ty_span: Span,
+        field: &str,
+    ) -> Vec<(TokenStream, String)> {
         let facts = quote_spanned!(ty_span=> #krate::__private::facts::<#ty>());
+        let text = self.json();
+        let out_of_range =
+            format!("initial value {text} is out of range for the type of `{field}`");
         match &self.value {
-            InitialValue::Bool(_) => quote!(#facts.initial_bool_fits()),
-            InitialValue::Int(n) => quote!(#facts.initial_int_fits(#n)),
-            // Too large for any integer: fits only a real, as a float does.
-            InitialValue::BigInt { value: f, .. } | InitialValue::Float(f) => {
-                quote!(#facts.initial_real_fits(#f))
-            }
+            InitialValue::Bool(_) => vec![(
+                quote!(#facts.initial_bool_fits()),
+                format!("initial value {text} is a bool, but the type of `{field}` is not bool"),
+            )],
+            InitialValue::Int(n) => vec![
+                (
+                    quote!(#facts.element_is_number()),
+                    format!(
+                        "initial value {text} is a number, but the type of `{field}` is not a \
+                         number type"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_number() || #facts.initial_int_fits(#n)),
+                    out_of_range,
+                ),
+            ],
+            // Beyond every integer type: a number, but only a real can hold it.
+            InitialValue::BigInt { value: f, .. } => vec![
+                (
+                    quote!(#facts.element_is_number()),
+                    format!(
+                        "initial value {text} is a number, but the type of `{field}` is not a \
+                         number type"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_number() || #facts.initial_real_fits(#f)),
+                    out_of_range,
+                ),
+            ],
+            InitialValue::Float(f) => vec![
+                (
+                    quote!(#facts.element_is_real()),
+                    format!(
+                        "initial value {text} is a real number, but the type of `{field}` is not \
+                         f32 or f64 (real to integer is never implicit, seed 001)"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_real() || #facts.initial_real_fits(#f)),
+                    out_of_range,
+                ),
+            ],
             InitialValue::Str(s) => {
                 let len = s.len();
-                quote!(#facts.initial_str_fits(#len))
+                vec![
+                    (
+                        quote!(#facts.element_is_string()),
+                        format!(
+                            "initial value {text} is text, but the type of `{field}` is not a \
+                             FixedString"
+                        ),
+                    ),
+                    (
+                        quote!(!#facts.element_is_string() || #facts.initial_str_fits(#len)),
+                        format!(
+                            "initial text {text} is {len} bytes, more than the type of `{field}` \
+                             holds: shorten it or raise the capacity"
+                        ),
+                    ),
+                ]
             }
         }
     }

@@ -131,14 +131,8 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
         ));
     }
     if let Some(init) = &v.initial {
-        out.extend(assert_over(
-            &init.tokens,
-            init.fits_tokens(&c.krate, ty, v.ty_span()),
-            format!(
-                "initial value {} does not fit the type of `{name}` (wrong kind, out of range, or \
-                 too long)",
-                init.json()
-            ),
-        ));
+        for (cond, message) in init.alias_checks(&c.krate, ty, v.ty_span(), &name) {
+            out.extend(assert_over(&init.tokens, cond, message));
+        }
     }
 }
