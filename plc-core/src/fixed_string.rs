@@ -30,27 +30,46 @@ use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 #[repr(transparent)]
 pub struct FixedString<const N: usize>([u8; N]);
 
-/// The error of [`FixedString::try_set`]: the text does not fit.
+/// The error of [`FixedString::try_set`]: the text would not be stored whole, because it is
+/// longer than the capacity or because it holds a NUL (zero) byte, where a zero-padded string
+/// ends.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Truncated {
     /// Bytes of the text that was refused.
     pub len: usize,
     /// The string's capacity in bytes.
     pub capacity: usize,
+    /// The byte offset of the first NUL in the text, if it has one (reading would stop there).
+    pub nul: Option<usize>,
 }
 
 impl fmt::Display for Truncated {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "text of {} bytes does not fit a string of capacity {}: shorten it or raise the capacity",
-            self.len, self.capacity
-        )
+        match self.nul {
+            Some(at) => write!(
+                f,
+                "text of {} bytes has a NUL (zero) byte at byte {at}, where a string ends: \
+                 remove it",
+                self.len
+            ),
+            None => write!(
+                f,
+                "text of {} bytes does not fit a string of capacity {}: shorten it or raise the \
+                 capacity",
+                self.len, self.capacity
+            ),
+        }
     }
 }
 
 #[cfg(feature = "std")]
 impl std::error::Error for Truncated {}
+
+/// `s` up to its first NUL: the text a zero-padded string can hold and give back.
+fn before_nul(s: &str) -> &str {
+    // NUL is one byte and never part of a longer UTF-8 sequence: the cut is a char boundary.
+    s.split('\0').next().unwrap_or_default()
+}
 
 /// The longest prefix of `s` of at most `max` bytes that ends on a character boundary.
 pub(crate) fn floor_char_boundary(s: &str, max: usize) -> &str {
@@ -87,18 +106,36 @@ impl<const N: usize> FixedString<N> {
         out
     }
 
-    /// Stores `s`, silently truncated at the last UTF-8 character boundary that fits (seed 000).
+    /// Stores `s`, silently truncated at the last UTF-8 character boundary that fits (seed 000),
+    /// and at its first NUL if it has one (a zero byte ends the stored text, so what follows it
+    /// could never be read back).
+    ///
+    /// ```
+    /// let mut s = plc_core::FixedString::<8>::new();
+    /// s.set("a\0b");
+    /// assert_eq!(s, "a");
+    /// ```
     pub fn set(&mut self, s: &str) {
-        self.store(floor_char_boundary(s, N));
+        self.store(floor_char_boundary(before_nul(s), N));
     }
 
-    /// Stores `s`, or refuses with [`Truncated`] if it is longer than the capacity (the value
-    /// stays unchanged).
+    /// Stores `s`, or refuses with [`Truncated`] if it is longer than the capacity or holds a
+    /// NUL (the value stays unchanged): what `try_set` accepts, [`as_str`](Self::as_str) gives
+    /// back whole.
+    ///
+    /// ```
+    /// let mut s = plc_core::FixedString::<8>::from_str_truncate("old");
+    /// let e = s.try_set("a\0b").unwrap_err();
+    /// assert_eq!(e.nul, Some(1));
+    /// assert_eq!(s, "old");
+    /// ```
     pub fn try_set(&mut self, s: &str) -> Result<(), Truncated> {
-        if s.len() > N {
+        let nul = s.bytes().position(|b| b == 0);
+        if s.len() > N || nul.is_some() {
             return Err(Truncated {
                 len: s.len(),
                 capacity: N,
+                nul,
             });
         }
         self.store(s);
@@ -131,9 +168,10 @@ impl<const N: usize> FixedString<N> {
         self.as_str().len()
     }
 
-    /// Whether the text is empty.
+    /// Whether the text is empty, as [`len`](Self::len) is 0 (bytes from another process that
+    /// begin with invalid UTF-8 read as empty, too).
     pub fn is_empty(&self) -> bool {
-        self.0.first().is_none_or(|&b| b == 0)
+        self.as_str().is_empty()
     }
 
     /// The capacity `N` in bytes.
@@ -165,10 +203,11 @@ impl<const N: usize> Default for FixedString<N> {
 }
 
 impl<const N: usize> fmt::Write for FixedString<N> {
-    /// Appends `s`; fails (appending what fits, at a character boundary) when full.
+    /// Appends `s`; fails (appending what fits, at a character boundary) when full, or at a
+    /// NUL (appending what comes before it).
     fn write_str(&mut self, s: &str) -> fmt::Result {
         let used = self.len();
-        let fits = floor_char_boundary(s, N - used);
+        let fits = floor_char_boundary(before_nul(s), N - used);
         self.0[used..used + fits.len()].copy_from_slice(fits.as_bytes());
         self.0[used + fits.len()..].fill(0);
         if fits.len() == s.len() {
@@ -296,7 +335,8 @@ mod tests {
             s.try_set("abcde"),
             Err(Truncated {
                 len: 5,
-                capacity: 4
+                capacity: 4,
+                nul: None,
             })
         );
         assert_eq!(s, "abcd", "a refused try_set changes nothing");
@@ -312,6 +352,41 @@ mod tests {
         assert_eq!(s.as_str(), "");
         let s = FixedString::<3>::from_bytes(*b"a\0b");
         assert_eq!(s.as_str(), "a");
+    }
+
+    #[test]
+    fn a_nul_ends_set_and_is_refused_by_try_set() {
+        let mut s = FixedString::<8>::new();
+        s.set("a\0b");
+        assert_eq!(
+            s.as_bytes(),
+            b"a\0\0\0\0\0\0\0",
+            "nothing after the NUL is stored"
+        );
+        assert_eq!(s.as_str(), "a");
+        let e = s.try_set("xy\0z").unwrap_err();
+        assert_eq!(
+            e,
+            Truncated {
+                len: 4,
+                capacity: 8,
+                nul: Some(2)
+            }
+        );
+        assert!(e.to_string().contains("NUL (zero) byte at byte 2"), "{e}");
+        assert_eq!(s, "a", "a refused try_set changes nothing");
+        assert!(write!(s, "b\0c").is_err());
+        assert_eq!(s, "ab");
+    }
+
+    #[test]
+    fn is_empty_agrees_with_len_for_bytes_from_outside() {
+        let invalid_first = FixedString::<4>::from_bytes([0xFF, b'a', 0, 0]);
+        assert_eq!(invalid_first.len(), 0);
+        assert!(invalid_first.is_empty());
+        let text = FixedString::<4>::from_bytes(*b"ab\0\0");
+        assert!(!text.is_empty());
+        assert!(FixedString::<4>::from_bytes([0; 4]).is_empty());
     }
 
     #[test]
@@ -358,10 +433,22 @@ mod tests {
         }
 
         #[test]
+        fn what_try_set_accepts_reads_back_whole(text in "[a\\x00é]{0,20}") {
+            let mut s = FixedString::<16>::new();
+            match s.try_set(&text) {
+                Ok(()) => prop_assert_eq!(s.as_str(), text.as_str()),
+                Err(e) => prop_assert!(text.len() > 16 || e.nul.is_some()),
+            }
+            s.set(&text);
+            prop_assert!(text.starts_with(s.as_str()));
+        }
+
+        #[test]
         fn any_bytes_read_without_panic(bytes in proptest::array::uniform8(any::<u8>())) {
             let s = FixedString::<8>::from_bytes(bytes);
             let text = s.as_str();
             prop_assert!(bytes.starts_with(text.as_bytes()));
+            prop_assert_eq!(s.is_empty(), text.is_empty());
         }
     }
 }

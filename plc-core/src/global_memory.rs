@@ -142,9 +142,12 @@ impl VarInfo {
         n
     }
 
-    /// Bytes of one element.
+    /// Bytes of one element (0 for an array without items, which the derive refuses).
     pub const fn element_size(&self) -> usize {
-        self.size / self.elements()
+        match self.elements() {
+            0 => 0,
+            n => self.size / n,
+        }
     }
 
     /// Capacity in bytes of a `STRING` element (0 for other types).

@@ -49,7 +49,24 @@ pub use fixed_string::{FixedString, Truncated};
 pub use global_memory::{
     Access, BitMapping, Direction, GlobalMemory, SetError, VarInfo, layout_hash,
 };
-pub use plc_rules::{AddressError, Area, IecAddress, IecType, Size, TypeFamily, UnknownType};
+pub use plc_rules::{
+    AddressError, AddressErrorKind, Area, IecAddress, IecType, Size, TypeFamily, UnknownType,
+};
+
+/// The declaration rules the derive applies, for tools that check what a user typed before it
+/// reaches a declaration: [`names`](rules::names) (seed 003), [`link`](rules::link),
+/// [`address`](rules::address), [`capacity`](rules::capacity), [`widening`](rules::widening)
+/// and [`layout`](rules::layout), with their error types ([`NameError`](rules::NameError),
+/// [`LinkError`](rules::LinkError), [`AddressErrorKind`]). This is the `plc-rules` crate, so a
+/// program needs no dependency of its own to name them.
+///
+/// ```
+/// use plc_core::rules::{Link, LinkError, NameError, names};
+/// assert_eq!(names::check_name("motor__speed"), Err(NameError::DoubleUnderscore));
+/// assert_eq!(Link::parse("ethercat.io_0.inputs").map(|l| l.entry), Ok("inputs"));
+/// assert_eq!(Link::parse("modbus.io_0.inputs"), Err(LinkError::UnknownBus));
+/// ```
+pub use plc_rules as rules;
 pub use plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use process_image::{ByteOrder, ProcessImage, ProcessImageError, ProcessValue};
 pub use value::{Value, ValueError};

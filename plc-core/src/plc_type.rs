@@ -19,6 +19,24 @@ pub enum ElementError {
     Value(ValueError),
 }
 
+impl core::fmt::Display for ElementError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            ElementError::OutOfRange { len } => write!(
+                f,
+                "element out of range: the variable has {len} element{} (0..{len})",
+                if *len == 1 { "" } else { "s" }
+            ),
+            ElementError::Value(error) => core::fmt::Display::fmt(error, f),
+        }
+    }
+}
+
+// No `source`: Display already says what the inner `ValueError` says (as `SetError` does), and
+// an error chain would print it twice.
+#[cfg(feature = "std")]
+impl std::error::Error for ElementError {}
+
 mod sealed {
     pub trait Sealed {}
 }
@@ -459,6 +477,24 @@ mod tests {
         assert_eq!(core::mem::align_of::<<[f64; 3] as PlcType>::Repr>(), 1);
         assert!(bool::from_repr(&7));
         assert_eq!(f64::from_repr(&(-2.5f64).to_repr()), -2.5);
+    }
+
+    #[test]
+    fn element_errors_explain_themselves() {
+        let out = ElementError::OutOfRange { len: 6 };
+        assert_eq!(
+            out.to_string(),
+            "element out of range: the variable has 6 elements (0..6)"
+        );
+        let value = [0u8; 1]
+            .set_element(0, Value::Int(-1), IecType::Usint)
+            .unwrap_err();
+        assert_eq!(value.to_string(), "out of range for USINT (0..=255)");
+        #[cfg(feature = "std")]
+        {
+            let boxed: Box<dyn std::error::Error> = Box::new(value);
+            assert_eq!(boxed.to_string(), "out of range for USINT (0..=255)");
+        }
     }
 
     #[test]

@@ -134,9 +134,36 @@ impl TypeFacts {
             && string_ok
     }
 
-    /// Whether the type fits a located address of `bits` bits (1 = X, a bool).
+    /// Whether an array type has at least one item (`[u8; 0]` has none, and no place in the
+    /// image to give a variable); scalars always do.
+    pub const fn has_items(self) -> bool {
+        self.elements >= 1
+    }
+
+    /// Whether the type can be one I/O channel: a scalar, not an array or a string (seed 003).
+    pub const fn is_channel(self) -> bool {
+        self.rank == 0 && !matches!(self.iec_type, IecType::String)
+    }
+
+    /// Whether the type fits a located address of `bits` bits (1 = X, a bool). Only channels
+    /// fit; [`is_channel`](Self::is_channel) says why another type does not.
     pub const fn located_fits(self, bits: u32) -> bool {
-        self.rank == 0 && !matches!(self.iec_type, IecType::String) && self.iec_type.bits() == bits
+        self.is_channel() && self.iec_type.bits() == bits
+    }
+
+    /// Whether one element is a number: an integer, a bit string or a real.
+    pub const fn element_is_number(self) -> bool {
+        self.iec_type.is_integer() || self.iec_type.is_real()
+    }
+
+    /// Whether one element is a real (f32 or f64).
+    pub const fn element_is_real(self) -> bool {
+        self.iec_type.is_real()
+    }
+
+    /// Whether one element is a string.
+    pub const fn element_is_string(self) -> bool {
+        matches!(self.iec_type, IecType::String)
     }
 
     /// Whether `initial = true/false` fits.
@@ -152,11 +179,12 @@ impl TypeFacts {
         }
     }
 
-    /// Whether a real `initial` fits.
+    /// Whether a real `initial` fits: finite (an overflowing literal is infinity, which no
+    /// `initial` means), and within f32's range for REAL.
     pub const fn initial_real_fits(self, v: f64) -> bool {
         match self.iec_type {
-            IecType::Real => !v.is_finite() || (v <= f32::MAX as f64 && v >= -(f32::MAX as f64)),
-            IecType::Lreal => true,
+            IecType::Real => v.is_finite() && v <= f32::MAX as f64 && v >= -(f32::MAX as f64),
+            IecType::Lreal => v.is_finite(),
             _ => false,
         }
     }
@@ -223,4 +251,39 @@ pub fn write_located<T: PlcType, B: AsRef<[u8]> + AsMut<[u8]>>(
     unaligned: bool,
 ) -> Result<(), crate::ProcessImageError> {
     field.__write_located(image, address, order, unaligned)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::facts;
+
+    #[test]
+    fn real_initials_must_be_finite_and_in_range() {
+        let f32_facts = facts::<f32>();
+        let f64_facts = facts::<f64>();
+        assert!(f32_facts.initial_real_fits(1.5));
+        assert!(f32_facts.initial_real_fits(-(f32::MAX as f64)));
+        assert!(!f32_facts.initial_real_fits(1e39));
+        assert!(f64_facts.initial_real_fits(1e300));
+        for v in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            assert!(!f32_facts.initial_real_fits(v), "{v} on f32");
+            assert!(!f64_facts.initial_real_fits(v), "{v} on f64");
+        }
+        assert!(!facts::<u32>().initial_real_fits(1.0));
+    }
+
+    #[test]
+    fn arrays_need_items_and_channels_are_scalars() {
+        assert!(!facts::<[u8; 0]>().has_items());
+        assert!(!facts::<[[u8; 3]; 0]>().has_items());
+        assert!(facts::<[u8; 1]>().has_items() && facts::<u8>().has_items());
+        assert!(facts::<u16>().is_channel() && facts::<bool>().is_channel());
+        assert!(!facts::<[u16; 1]>().is_channel());
+        assert!(!facts::<crate::FixedString<2>>().is_channel());
+        assert!(facts::<u16>().located_fits(16));
+        assert!(
+            !facts::<[u8; 2]>().located_fits(16),
+            "an array is no channel"
+        );
+    }
 }

@@ -2,7 +2,7 @@
 //! parsed and validated on their own, each keeping the span of what the user wrote so later
 //! errors can point at it (serde_derive's `ast`).
 
-use crate::attr::{ContainerAttr, FieldAttr};
+use crate::attr::{self, ContainerAttr, FieldAttr};
 use crate::ctxt::Ctxt;
 use crate::initial::Initial;
 use crate::types::{self, SynType};
@@ -223,7 +223,7 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
         effective_direction: Dir::Internal,
     };
     if let Some(a) = attr {
-        fill_from_attr(&mut var, a, cx);
+        fill_from_attr(&mut var, a, &field.attrs, cx);
     }
     if let Err(e) = names::check_name(&var.symbol.value) {
         cx.error(
@@ -237,7 +237,7 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
     var
 }
 
-fn fill_from_attr(var: &mut Var, a: FieldAttr, cx: &mut Ctxt) {
+fn fill_from_attr(var: &mut Var, a: FieldAttr, attrs: &[syn::Attribute], cx: &mut Ctxt) {
     if let Some(name) = a.name {
         var.symbol = At {
             value: name.to_string(),
@@ -272,13 +272,14 @@ fn fill_from_attr(var: &mut Var, a: FieldAttr, cx: &mut Ctxt) {
     if let Some(b) = &a.bit
         && !(0..=63).contains(&**b)
     {
-        cx.error(
-            b.span(),
-            format!(
-                "bit {} is out of range: bits are 0..=63 (0 = least significant)",
-                **b
-            ),
+        let message = format!(
+            "bit {} is out of range: bits are 0..=63 (0 = least significant)",
+            **b
         );
+        match attr::raw_value(attrs, "bit") {
+            Some(written) => cx.syn(syn::Error::new_spanned(written, message)),
+            None => cx.error(b.span(), message),
+        }
     }
     var.source = a.source.map(|s| At {
         value: s.to_string(),
@@ -309,7 +310,9 @@ fn fill_from_attr(var: &mut Var, a: FieldAttr, cx: &mut Ctxt) {
         }
     }
     if let Some(init) = a.initial {
-        match Initial::parse(&init.0) {
+        let expr = &init.0;
+        let written = attr::raw_value(attrs, "initial").unwrap_or_else(|| quote!(#expr));
+        match Initial::parse(expr, written) {
             Ok(i) => var.initial = Some(i),
             Err(e) => cx.syn(e),
         }

@@ -1,10 +1,10 @@
 //! Checks that involve more than one field: names, bit mappings, addresses, directions, and
 //! the fit of `initial` and `iec_type` to a type the tokens show. Each error points at the
-//! attribute or type to change; where a second declaration clashes with a first, the first is
-//! shown too.
+//! attribute or type to change; where a second declaration clashes with a first, the message
+//! names the first and its line.
 
 use crate::ast::{At, Container, Dir, Var};
-use crate::ctxt::Ctxt;
+use crate::ctxt::{Ctxt, line_of};
 use crate::types::SynType;
 use plc_rules::IecType;
 use plc_rules::address::{Area, Size};
@@ -24,15 +24,15 @@ fn duplicate_names(c: &Container, cx: &mut Ctxt) {
             .iter()
             .find(|w| names::same_name(&w.symbol.value, &v.symbol.value))
         {
-            cx.error_with_previous(
+            cx.error(
                 v.symbol.span,
                 format!(
-                    "the variable name `{}` is already used by `{}`: names are case-insensitive \
-                     (seed 003); rename one, e.g. with `#[plc(name = \"...\")]`",
-                    v.symbol.value, first.symbol.value
+                    "the variable name `{}` is already used by `{}`{}: names are \
+                     case-insensitive (seed 003); rename one, e.g. with `#[plc(name = \"...\")]`",
+                    v.symbol.value,
+                    first.symbol.value,
+                    line_of(first.symbol.span)
                 ),
-                first.symbol.span,
-                format!("`{}` is declared here", first.symbol.value),
             );
         }
     }
@@ -131,15 +131,14 @@ fn bit_mappings(c: &mut Container, cx: &mut Ctxt) {
             .find(|&&(ts, tb, _)| ts == s && tb == bit.value)
         {
             let first_name = c.vars[first].field_name();
-            cx.error_with_previous(
+            let first_line = line_of(c.vars[first].bit.as_ref().map_or(source.span, |b| b.span));
+            cx.error(
                 bit.span,
                 format!(
-                    "bit {} of `{}` is already mapped to `{first_name}`: two bools cannot share \
-                     a bit",
+                    "bit {} of `{}` is already mapped to `{first_name}`{first_line}: two bools \
+                     cannot share a bit",
                     bit.value, source.value
                 ),
-                c.vars[first].bit.as_ref().map_or(source.span, |b| b.span),
-                format!("`{first_name}` maps it here"),
             );
             continue;
         }
@@ -214,15 +213,14 @@ fn addresses(c: &Container, cx: &mut Ctxt) {
             .find(|w| w.at.as_ref().is_some_and(|wa| wa.value.overlaps(&a)))
         {
             let first_at = first.at.as_ref().map_or(at.span, |x| x.span);
-            cx.error_with_previous(
+            cx.error(
                 at.span,
                 format!(
-                    "`{text}` overlaps `{}` of `{}`: each channel has its own bits",
+                    "`{text}` overlaps `{}` of `{}`{}: each channel has its own bits",
                     first.at_text.as_deref().unwrap_or_default(),
-                    first.field_name()
+                    first.field_name(),
+                    line_of(first_at)
                 ),
-                first_at,
-                format!("`{}` is located here", first.field_name()),
             );
         }
     }

@@ -16,19 +16,6 @@ impl Ctxt {
         self.syn(syn::Error::new(span, message));
     }
 
-    /// An error under `span`, with a note pointing at an earlier declaration.
-    pub fn error_with_previous(
-        &mut self,
-        span: Span,
-        message: impl Display,
-        previous: Span,
-        note: impl Display,
-    ) {
-        let mut e = syn::Error::new(span, message);
-        e.combine(syn::Error::new(previous, note));
-        self.syn(e);
-    }
-
     pub fn syn(&mut self, error: syn::Error) {
         self.any = true;
         self.errors.push(error.to_compile_error());
@@ -51,6 +38,16 @@ impl Ctxt {
 
     pub fn into_tokens(self) -> TokenStream {
         self.errors.into_iter().collect()
+    }
+}
+
+/// ` (line N)` for an earlier declaration a message refers to, or nothing where the compiler
+/// gives no line. One error that names the other place, rather than a second `error:` for it:
+/// stable proc macros cannot attach a note, and a second error would count as a second mistake.
+pub fn line_of(span: Span) -> String {
+    match span.start().line {
+        0 => String::new(),
+        line => format!(" (line {line})"),
     }
 }
 
@@ -99,6 +96,14 @@ fn lowercase_first(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::darling_message;
+
+    #[test]
+    fn line_of_names_the_line_of_a_span() {
+        let tokens: proc_macro2::TokenStream = "first\n\n  second".parse().unwrap();
+        let spans: Vec<_> = tokens.into_iter().map(|t| t.span()).collect();
+        assert_eq!(super::line_of(spans[0]), " (line 1)");
+        assert_eq!(super::line_of(spans[1]), " (line 3)");
+    }
 
     #[test]
     fn darling_messages_name_the_attribute() {

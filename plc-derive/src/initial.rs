@@ -5,13 +5,18 @@ use crate::types::KnownType;
 use plc_rules::{IecType, TypeFamily};
 use proc_macro2::{Span, TokenStream};
 use quote::{quote, quote_spanned};
-use syn::spanned::Spanned;
 use syn::{Expr, Lit, UnOp};
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum InitialValue {
     Bool(bool),
     Int(i128),
+    /// A bare integer beyond i128 (only REAL/LREAL can take it): the digits as written and
+    /// the nearest f64.
+    BigInt {
+        text: String,
+        value: f64,
+    },
     Float(f64),
     Str(String),
 }
@@ -19,18 +24,17 @@ pub enum InitialValue {
 #[derive(Clone, Debug)]
 pub struct Initial {
     pub value: InitialValue,
-    pub span: Span,
     /// The tokens written, so an error can cover all of `-1`, not just the `-`.
     pub tokens: TokenStream,
 }
 
 impl Initial {
-    /// Reads a literal, optionally negated: `true`, `1500`, `-0.5`, `"TEST-001"`.
-    pub fn parse(expr: &Expr) -> syn::Result<Initial> {
-        let span = expr.span();
+    /// Reads a literal, optionally negated: `true`, `1500`, `-0.5`, `"TEST-001"`. `written` is
+    /// the value's tokens as the user wrote them, which errors cover.
+    pub fn parse(expr: &Expr, written: TokenStream) -> syn::Result<Initial> {
         let bad = || {
             syn::Error::new_spanned(
-                expr,
+                &written,
                 "`initial` takes a literal: a number (`12.5`, `-3`), `true`/`false`, or a string \
                  (`\"TEST-001\"`)",
             )
@@ -41,32 +45,37 @@ impl Initial {
                 Expr::Lit(l) => (true, &l.lit),
                 _ => return Err(bad()),
             },
-            Expr::Group(g) => return Initial::parse(&g.expr),
-            Expr::Paren(p) => return Initial::parse(&p.expr),
+            Expr::Group(g) => return Initial::parse(&g.expr, written),
+            Expr::Paren(p) => return Initial::parse(&p.expr, written),
             _ => return Err(bad()),
         };
         let value = match lit {
             Lit::Bool(b) if !negative => InitialValue::Bool(b.value),
             Lit::Str(s) if !negative => InitialValue::Str(s.value()),
-            Lit::Int(i) => {
-                let n: i128 = i.base10_parse().map_err(|_| {
-                    syn::Error::new_spanned(
-                        expr,
-                        "this number is too large for any PLC integer type",
-                    )
-                })?;
-                InitialValue::Int(if negative { -n } else { n })
-            }
+            Lit::Int(i) => match i.base10_parse::<i128>() {
+                Ok(n) => InitialValue::Int(if negative { -n } else { n }),
+                // Beyond every integer type, but a bare integer is fine for REAL/LREAL (seed
+                // 001): keep the digits, judge the number against the field's type later.
+                Err(_) => {
+                    let digits = i.base10_digits();
+                    let v: f64 = digits.parse().map_err(|_| bad())?;
+                    finite(v, &written)?;
+                    InitialValue::BigInt {
+                        text: format!("{}{digits}", if negative { "-" } else { "" }),
+                        value: if negative { -v } else { v },
+                    }
+                }
+            },
             Lit::Float(f) => {
                 let v: f64 = f.base10_parse().map_err(|_| bad())?;
+                finite(v, &written)?;
                 InitialValue::Float(if negative { -v } else { v })
             }
             _ => return Err(bad()),
         };
         Ok(Initial {
             value,
-            span,
-            tokens: quote!(#expr),
+            tokens: written,
         })
     }
 
@@ -75,6 +84,7 @@ impl Initial {
         match &self.value {
             InitialValue::Bool(b) => b.to_string(),
             InitialValue::Int(i) => i.to_string(),
+            InitialValue::BigInt { text, .. } => text.clone(),
             InitialValue::Float(f) => format!("{f:?}"),
             InitialValue::Str(s) => json_string(s),
         }
@@ -96,9 +106,19 @@ impl Initial {
                     )
                 })
             }
-            (InitialValue::Float(v), TypeFamily::Real) => {
-                (iec == IecType::Real && v.is_finite() && v.abs() > f32::MAX as f64)
-                    .then(|| format!("initial value {v:e} is out of range for `{field}` (f32)"))
+            (InitialValue::BigInt { text, .. }, _) if iec.is_integer() => {
+                let (lo, hi) = iec.int_range().unwrap_or((0, 0));
+                Some(format!(
+                    "initial value {text} is out of range for `{field}` ({ty} holds {lo}..={hi})"
+                ))
+            }
+            (InitialValue::Float(v) | InitialValue::BigInt { value: v, .. }, TypeFamily::Real) => {
+                (iec == IecType::Real && v.abs() > f32::MAX as f64).then(|| {
+                    format!(
+                        "initial value {v:e} is out of range for `{field}` (f32 holds up to {:e})",
+                        f32::MAX
+                    )
+                })
             }
             (InitialValue::Float(_), _) if iec.is_integer() => {
                 Some(kind("a whole number (real to integer is never implicit)"))
@@ -123,34 +143,121 @@ impl Initial {
     pub fn value_tokens(&self, krate: &TokenStream) -> TokenStream {
         match &self.value {
             InitialValue::Bool(b) => quote!(#krate::Value::Bool(#b)),
-            InitialValue::Int(n) if *n < 0 => {
-                let n = *n as i64;
-                quote!(#krate::Value::Int(#n))
+            // Exact for every integer type; beyond i64/u64 only REAL/LREAL can hold the value
+            // (the range checks reject it for integers), so it goes as the nearest f64.
+            InitialValue::Int(n) => match (i64::try_from(*n), u64::try_from(*n)) {
+                (_, Ok(u)) => quote!(#krate::Value::UInt(#u)),
+                (Ok(i), _) => quote!(#krate::Value::Int(#i)),
+                _ => {
+                    let f = *n as f64;
+                    quote!(#krate::Value::Real(#f))
+                }
+            },
+            InitialValue::BigInt { value: f, .. } | InitialValue::Float(f) => {
+                quote!(#krate::Value::Real(#f))
             }
-            InitialValue::Int(n) => {
-                let n = *n as u64;
-                quote!(#krate::Value::UInt(#n))
-            }
-            InitialValue::Float(f) => quote!(#krate::Value::Real(#f)),
             InitialValue::Str(s) => {
                 quote!(#krate::Value::Text(#krate::FixedString::<255>::from_str_truncate(#s)))
             }
         }
     }
 
-    /// A `const` expression true when the value fits `ty` (for types only the compiler knows).
-    /// The type is named under its own span, so an unsupported type is reported there once.
-    pub fn fits_tokens(&self, krate: &TokenStream, ty: &syn::Type, ty_span: Span) -> TokenStream {
+    /// The checks of the value against `ty`, a type only the compiler knows (an alias): pairs of
+    /// a `const` condition and the message when it is false. First whether the value is of the
+    /// type's kind, then (where that holds) whether it fits, so each mistake gets one message
+    /// that says which it is. The type is named under its own span, so an unsupported type is
+    /// reported there once.
+    pub fn alias_checks(
+        &self,
+        krate: &TokenStream,
+        ty: &syn::Type,
+        ty_span: Span,
+        field: &str,
+    ) -> Vec<(TokenStream, String)> {
         let facts = quote_spanned!(ty_span=> #krate::__private::facts::<#ty>());
+        let text = self.json();
+        let out_of_range =
+            format!("initial value {text} is out of range for the type of `{field}`");
         match &self.value {
-            InitialValue::Bool(_) => quote!(#facts.initial_bool_fits()),
-            InitialValue::Int(n) => quote!(#facts.initial_int_fits(#n)),
-            InitialValue::Float(f) => quote!(#facts.initial_real_fits(#f)),
+            InitialValue::Bool(_) => vec![(
+                quote!(#facts.initial_bool_fits()),
+                format!("initial value {text} is a bool, but the type of `{field}` is not bool"),
+            )],
+            InitialValue::Int(n) => vec![
+                (
+                    quote!(#facts.element_is_number()),
+                    format!(
+                        "initial value {text} is a number, but the type of `{field}` is not a \
+                         number type"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_number() || #facts.initial_int_fits(#n)),
+                    out_of_range,
+                ),
+            ],
+            // Beyond every integer type: a number, but only a real can hold it.
+            InitialValue::BigInt { value: f, .. } => vec![
+                (
+                    quote!(#facts.element_is_number()),
+                    format!(
+                        "initial value {text} is a number, but the type of `{field}` is not a \
+                         number type"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_number() || #facts.initial_real_fits(#f)),
+                    out_of_range,
+                ),
+            ],
+            InitialValue::Float(f) => vec![
+                (
+                    quote!(#facts.element_is_real()),
+                    format!(
+                        "initial value {text} is a real number, but the type of `{field}` is not \
+                         f32 or f64 (real to integer is never implicit, seed 001)"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_real() || #facts.initial_real_fits(#f)),
+                    out_of_range,
+                ),
+            ],
             InitialValue::Str(s) => {
                 let len = s.len();
-                quote!(#facts.initial_str_fits(#len))
+                vec![
+                    (
+                        quote!(#facts.element_is_string()),
+                        format!(
+                            "initial value {text} is text, but the type of `{field}` is not a \
+                             FixedString"
+                        ),
+                    ),
+                    (
+                        quote!(!#facts.element_is_string() || #facts.initial_str_fits(#len)),
+                        format!(
+                            "initial text {text} is {len} bytes, more than the type of `{field}` \
+                             holds: shorten it or raise the capacity"
+                        ),
+                    ),
+                ]
             }
         }
+    }
+}
+
+/// A number too large for f64 parses to infinity, which neither LREAL nor JSON can hold.
+fn finite(v: f64, written: &TokenStream) -> syn::Result<()> {
+    if v.is_finite() {
+        Ok(())
+    } else {
+        Err(syn::Error::new_spanned(
+            written,
+            format!(
+                "this number is too large for any PLC type: LREAL (f64) holds up to {:e}",
+                f64::MAX
+            ),
+        ))
     }
 }
 
@@ -177,8 +284,69 @@ pub fn json_string(s: &str) -> String {
 mod tests {
     use super::*;
 
+    fn parse(src: &str) -> syn::Result<Initial> {
+        let tokens: TokenStream = src.parse().unwrap();
+        Initial::parse(&syn::parse2(tokens.clone()).unwrap(), tokens)
+    }
+
     fn init(src: &str) -> Initial {
-        Initial::parse(&syn::parse_str(src).unwrap()).unwrap()
+        parse(src).unwrap()
+    }
+
+    fn real(iec: IecType) -> KnownType {
+        KnownType {
+            iec,
+            capacity: None,
+            dims: vec![],
+        }
+    }
+
+    #[test]
+    fn numbers_beyond_f64_are_errors_not_infinity() {
+        for src in ["1e400", "-1e400", &"9".repeat(400)] {
+            let e = parse(src).err().unwrap_or_else(|| panic!("{src} accepted"));
+            assert!(e.to_string().contains("too large for any PLC type"), "{e}");
+        }
+    }
+
+    #[test]
+    fn integers_beyond_u64_go_to_reals_as_reals_not_wrapped() {
+        let krate = quote!(::plc_core);
+        let tokens = |src: &str| init(src).value_tokens(&krate).to_string();
+        let big = init("100000000000000000000");
+        assert!(big.misfit(&real(IecType::Lreal), "x").is_none());
+        let expect = |value: TokenStream| quote!(::plc_core::Value::#value).to_string();
+        let (pos, neg) = (1e20f64, -1e20f64);
+        assert_eq!(tokens("100000000000000000000"), expect(quote!(Real(#pos))));
+        assert_eq!(tokens("-100000000000000000000"), expect(quote!(Real(#neg))));
+        assert_eq!(
+            tokens("18446744073709551615"),
+            expect(quote!(UInt(18446744073709551615u64)))
+        );
+        assert_eq!(
+            tokens("-9223372036854775808"),
+            expect(quote!(Int(-9223372036854775808i64)))
+        );
+        // Beyond i128: still a bare integer, so fine for LREAL, out of range for REAL and every
+        // integer type.
+        let huge = init(&format!("1{}", "0".repeat(45)));
+        assert_eq!(huge.json(), format!("1{}", "0".repeat(45)));
+        assert!(huge.misfit(&real(IecType::Lreal), "x").is_none());
+        assert!(
+            huge.value_tokens(&krate)
+                .to_string()
+                .contains("Value :: Real")
+        );
+        let f32_msg = huge.misfit(&real(IecType::Real), "x").unwrap();
+        assert!(
+            f32_msg.contains("out of range for `x` (f32 holds up to"),
+            "{f32_msg}"
+        );
+        let u64_msg = huge.misfit(&real(IecType::Ulint), "x").unwrap();
+        assert!(
+            u64_msg.contains("out of range for `x` (u64 holds 0..="),
+            "{u64_msg}"
+        );
     }
 
     #[test]

@@ -40,11 +40,11 @@ pub fn expects(key: &str) -> Option<&'static str> {
     })
 }
 
-/// `` `a`, `b` or `c` ``.
+/// `` `a`, `b` and `c` ``: all of the keys, as "the keys are ..." lists them.
 pub fn list(keys: &[&str]) -> String {
     let quoted: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
     match quoted.split_last() {
-        Some((last, rest)) if !rest.is_empty() => format!("{} or {last}", rest.join(", ")),
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
         _ => quoted.concat(),
     }
 }
@@ -60,6 +60,15 @@ mod tests {
         e.flatten()
             .into_iter()
             .any(|e| e.to_string().starts_with("Unknown field"))
+    }
+
+    #[test]
+    fn a_list_of_all_keys_ends_with_and() {
+        assert_eq!(
+            super::list(&["crate", "byte_order", "unaligned"]),
+            "`crate`, `byte_order` and `unaligned`"
+        );
+        assert_eq!(super::list(&["crate"]), "`crate`");
     }
 
     #[test]

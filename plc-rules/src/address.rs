@@ -166,13 +166,13 @@ pub enum AddressErrorKind {
     BadSize(char),
     /// There is no byte offset.
     MissingByte,
-    /// The byte offset is not a number or too large.
+    /// The byte offset does not start with a digit (`%IWx4`, `%IW-4`) or is 2^32 or more.
     BadByte,
     /// A bit address without `.bit`.
     MissingBit,
-    /// The bit is not a number.
+    /// The bit does not start with a digit (`%IX0.`, `%IX0.-1`).
     BadBit,
-    /// The bit is beyond 7.
+    /// The bit is beyond 7 (`u32::MAX` for a bit number too large for a `u32`).
     BitOutOfRange(u32),
     /// A byte/word/dword/lword address with a `.bit`.
     BitOnNonBit,
@@ -242,6 +242,9 @@ impl fmt::Display for AddressErrorKind {
                 f.write_str("a bit address needs `.bit` after the byte, e.g. `%IX0.1`")
             }
             AddressErrorKind::BadBit => f.write_str("the bit is not a number"),
+            AddressErrorKind::BitOutOfRange(u32::MAX) => {
+                f.write_str("the bit number is out of range 0..=7")
+            }
             AddressErrorKind::BitOutOfRange(b) => write!(f, "bit {b} out of range 0..=7"),
             AddressErrorKind::BitOnNonBit => f.write_str(
                 "only bit (X) addresses take `.bit`; byte, word, double and long word addresses do not",
@@ -259,6 +262,11 @@ impl fmt::Display for AddressError {
 
 #[cfg(feature = "std")]
 impl std::error::Error for AddressError {}
+
+/// How many ASCII digits `s` starts with.
+fn leading_digits(s: &str) -> usize {
+    s.bytes().take_while(u8::is_ascii_digit).count()
+}
 
 fn parse_number(digits: &str) -> Option<u32> {
     if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
@@ -308,17 +316,24 @@ impl FromStr for IecAddress {
         if byte_text.is_empty() {
             return Err(err(AddressErrorKind::MissingByte));
         }
-        if !byte_text.bytes().all(|b| b.is_ascii_digit()) {
-            return Err(err(AddressErrorKind::Trailing));
+        // A number that does not start with a digit is a bad number (`%IWx4`, `%IW-4`); one
+        // that starts with digits and goes on is an address with something after it (`%IW4x`).
+        match leading_digits(byte_text) {
+            0 => return Err(err(AddressErrorKind::BadByte)),
+            n if n < byte_text.len() => return Err(err(AddressErrorKind::Trailing)),
+            _ => {}
         }
         let byte = parse_number(byte_text).ok_or(err(AddressErrorKind::BadByte))?;
         let bit = match (size, bit_text) {
             (Size::Bit, None) => return Err(err(AddressErrorKind::MissingBit)),
             (Size::Bit, Some(t)) => {
-                if !t.bytes().all(|b| b.is_ascii_digit()) && t.bytes().any(|b| b.is_ascii_digit()) {
-                    return Err(err(AddressErrorKind::Trailing));
+                match leading_digits(t) {
+                    0 => return Err(err(AddressErrorKind::BadBit)),
+                    n if n < t.len() => return Err(err(AddressErrorKind::Trailing)),
+                    _ => {}
                 }
-                let bit = parse_number(t).ok_or(err(AddressErrorKind::BadBit))?;
+                // All digits: only a number beyond u32 fails to parse, and it is out of range.
+                let bit = parse_number(t).unwrap_or(u32::MAX);
                 if bit > 7 {
                     return Err(err(AddressErrorKind::BitOutOfRange(bit)));
                 }
@@ -410,6 +425,40 @@ mod tests {
         assert_eq!(kind("%IW4.1"), AddressErrorKind::BitOnNonBit);
         assert_eq!(kind("%IW4x"), AddressErrorKind::Trailing);
         assert_eq!(kind("%IX1.2z"), AddressErrorKind::Trailing);
+        assert_eq!(kind("%IX1.2.3"), AddressErrorKind::Trailing);
+    }
+
+    #[test]
+    fn a_byte_or_bit_that_is_no_number_is_named_as_such() {
+        assert_eq!(kind("%IWx4"), AddressErrorKind::BadByte);
+        assert_eq!(kind("%IW-4"), AddressErrorKind::BadByte);
+        assert_eq!(kind("%IW+4"), AddressErrorKind::BadByte);
+        assert_eq!(kind("%IX.1"), AddressErrorKind::MissingByte);
+        assert_eq!(kind("%IX0.x"), AddressErrorKind::BadBit);
+        assert_eq!(kind("%IX0.-1"), AddressErrorKind::BadBit);
+        assert_eq!(
+            kind("%IX3.99999999999"),
+            AddressErrorKind::BitOutOfRange(u32::MAX)
+        );
+        assert_eq!(
+            kind("%IX3.4294967295"),
+            AddressErrorKind::BitOutOfRange(u32::MAX)
+        );
+        assert_eq!(
+            kind("%IX3.4294967294"),
+            AddressErrorKind::BitOutOfRange(4294967294)
+        );
+        assert_eq!(
+            "%IX3.99999999999"
+                .parse::<IecAddress>()
+                .unwrap_err()
+                .to_string(),
+            "`%IX3.99999999999`: the bit number is out of range 0..=7"
+        );
+        assert_eq!(
+            "%IWx4".parse::<IecAddress>().unwrap_err().to_string(),
+            "`%IWx4`: the byte offset is not a number below 2^32"
+        );
         assert_eq!(
             "%IX3.8".parse::<IecAddress>().unwrap_err().to_string(),
             "`%IX3.8`: bit 8 out of range 0..=7"

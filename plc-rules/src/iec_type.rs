@@ -24,8 +24,8 @@ use core::str::FromStr;
 /// assert_eq!(IecType::Lreal.to_string(), "LREAL");
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(into = "&'static str", try_from = "&str"))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(into = "&'static str"))]
 pub enum IecType {
     /// Boolean, `bool`.
     Bool,
@@ -318,6 +318,27 @@ impl TryFrom<&str> for IecType {
     }
 }
 
+/// Deserializes from the name as [`FromStr`] reads it. A visitor, not `try_from = "&str"`: that
+/// needs a string borrowed from the input and so fails for owned or escaped strings
+/// (`serde_json::from_value`, `"DI\u004eT"`); `String` would need an allocator.
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for IecType {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = IecType;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("an IEC 61131-3 or Rust type name such as \"DINT\" or \"i32\"")
+            }
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<IecType, E> {
+                v.parse()
+                    .map_err(|_| E::invalid_value(serde::de::Unexpected::Str(v), &self))
+            }
+        }
+        deserializer.deserialize_str(Visitor)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -372,5 +393,26 @@ mod tests {
         );
         assert_eq!(IecType::Word.int_range(), Some((0, 65535)));
         assert_eq!(IecType::Bool.int_range(), None);
+    }
+
+    #[cfg(feature = "serde")]
+    #[test]
+    fn deserializes_from_owned_and_borrowed_strings() {
+        use serde::Deserialize;
+        use serde::de::value::{
+            BorrowedStrDeserializer, Error, StrDeserializer, StringDeserializer,
+        };
+        let owned = StringDeserializer::<Error>::new("dint".into());
+        assert_eq!(IecType::deserialize(owned), Ok(IecType::Dint));
+        let transient = StrDeserializer::<Error>::new("u16");
+        assert_eq!(IecType::deserialize(transient), Ok(IecType::Uint));
+        let borrowed = BorrowedStrDeserializer::<Error>::new("LREAL");
+        assert_eq!(IecType::deserialize(borrowed), Ok(IecType::Lreal));
+        let unknown = IecType::deserialize(StringDeserializer::<Error>::new("INTEGER".into()));
+        let message = unknown.unwrap_err().to_string();
+        assert!(
+            message.contains("\"INTEGER\"") && message.contains("DINT"),
+            "{message}"
+        );
     }
 }

@@ -27,5 +27,8 @@ pub mod link;
 pub mod names;
 pub mod widening;
 
-pub use address::{AddressError, Area, IecAddress, Size};
+pub use address::{AddressError, AddressErrorKind, Area, IecAddress, Size};
 pub use iec_type::{IecType, TypeFamily, UnknownType};
+pub use link::{Link, LinkError};
+pub use names::NameError;
+pub use widening::WideningOptions;

@@ -218,8 +218,10 @@ pub const TYPE_NAMES: &[&str] = &[
     "ANY_CHARS",
 ];
 
-/// Standard functions and function blocks (IEC 61131-3 tables 22-36 and 43-46). Conversion
-/// functions (`<TYPE>_TO_<TYPE>`, `TRUNC`, `BCD_TO_*`) are recognised by pattern as well.
+/// Standard functions and function blocks (IEC 61131-3 ed. 3 tables 22-36 and 43-46), which
+/// seed 003 reserves. The conversion functions (`<TYPE>_TO_<TYPE>`, `TO_<TYPE>`,
+/// `<TYPE>_TRUNC_<TYPE>`, `TRUNC_<TYPE>`, and the BCD forms) are recognised by pattern instead,
+/// as [`reserved_word`] does.
 pub const STANDARD_FUNCTIONS: &[&str] = &[
     "ABS",
     "SQRT",
@@ -294,15 +296,51 @@ pub const STANDARD_FUNCTIONS: &[&str] = &[
     "LTON",
     "LTOF",
     "RTC",
+    // Time and date functions (tables 35 and 36), with their LTIME/LDATE/LTOD/LDT forms.
     "ADD_TIME",
+    "ADD_TOD_TIME",
+    "ADD_DT_TIME",
     "SUB_TIME",
+    "SUB_DATE_DATE",
+    "SUB_TOD_TIME",
+    "SUB_TOD_TOD",
+    "SUB_DT_TIME",
+    "SUB_DT_DT",
     "MUL_TIME",
     "DIV_TIME",
     "CONCAT_DATE_TOD",
+    "CONCAT_DATE",
+    "CONCAT_TOD",
+    "CONCAT_DT",
     "SPLIT_DATE",
     "SPLIT_TOD",
     "SPLIT_DT",
     "DAY_OF_WEEK",
+    "ADD_LTIME",
+    "ADD_LTOD_LTIME",
+    "ADD_LDT_LTIME",
+    "SUB_LTIME",
+    "SUB_LDATE_LDATE",
+    "SUB_LTOD_LTIME",
+    "SUB_LTOD_LTOD",
+    "SUB_LDT_LTIME",
+    "SUB_LDT_LDT",
+    "MUL_LTIME",
+    "DIV_LTIME",
+    "CONCAT_LDATE_LTOD",
+    "CONCAT_LDATE",
+    "CONCAT_LTOD",
+    "CONCAT_LDT",
+    "SPLIT_LDATE",
+    "SPLIT_LTOD",
+    "SPLIT_LDT",
+    // Endianness conversion and validation (ed. 3).
+    "TO_BIG_ENDIAN",
+    "TO_LITTLE_ENDIAN",
+    "BIG_ENDIAN_TO",
+    "LITTLE_ENDIAN_TO",
+    "IS_VALID",
+    "IS_VALID_BCD",
 ];
 
 /// Checks one name against seed 003's rules.
@@ -339,22 +377,54 @@ pub fn reserved_word(name: &str) -> Option<&'static str> {
     conversion_function(name)
 }
 
-/// Recognises the standard conversion functions `<TYPE>_TO_<TYPE>` and `<TYPE>_BCD_TO_<TYPE>`.
+/// Recognises the standard conversion functions by their form (IEC 61131-3 ed. 3 table 22):
+/// typed `<TYPE>_TO_<TYPE>` and `<TYPE>_TRUNC_<TYPE>`, overloaded `TO_<TYPE>` and
+/// `TRUNC_<TYPE>`, and the BCD forms `<TYPE>_BCD_TO_<TYPE>`, `<TYPE>_TO_BCD_<TYPE>`,
+/// `BCD_TO_<TYPE>` and `TO_BCD_<TYPE>`. Returns the form, as the reserved word to report.
 fn conversion_function(name: &str) -> Option<&'static str> {
-    let upper_eq = |a: &str, b: &str| a.eq_ignore_ascii_case(b);
+    let is_type = |t: &str| TYPE_NAMES.iter().any(|w| w.eq_ignore_ascii_case(t));
+    // A source may be BCD-coded (`WORD_BCD`), or just `BCD`; a target likewise (`BCD_WORD`).
+    let source =
+        |t: &str| t.eq_ignore_ascii_case("BCD") || is_type(strip_suffix_ci(t, "_BCD").unwrap_or(t));
+    let target =
+        |t: &str| t.eq_ignore_ascii_case("BCD") || is_type(strip_prefix_ci(t, "BCD_").unwrap_or(t));
+    if let Some(t) = strip_prefix_ci(name, "TO_")
+        && target(t)
+    {
+        return Some("TO_<TYPE>");
+    }
+    if let Some(t) = strip_prefix_ci(name, "TRUNC_")
+        && is_type(t)
+    {
+        return Some("TRUNC_<TYPE>");
+    }
+    let forms: [(&[u8], &'static str); 2] = [
+        (b"_TO_", "<TYPE>_TO_<TYPE>"),
+        (b"_TRUNC_", "<TYPE>_TRUNC_<TYPE>"),
+    ];
     let bytes = name.as_bytes();
-    // Byte-wise search: `_TO_` is ASCII, so both split points are character boundaries.
-    let split = (0..bytes.len().saturating_sub(3))
-        .find(|&i| bytes[i..i + 4].eq_ignore_ascii_case(b"_TO_"))?;
-    let (from, to) = (&name[..split], &name[split + 4..]);
-    let is_type = |t: &str| {
-        let t = t
-            .strip_suffix("_BCD")
-            .or_else(|| t.strip_suffix("_bcd"))
-            .unwrap_or(t);
-        upper_eq(t, "BCD") || TYPE_NAMES.iter().any(|w| upper_eq(w, t))
-    };
-    (is_type(from) && is_type(to)).then_some("<TYPE>_TO_<TYPE>")
+    forms.into_iter().find_map(|(infix, form)| {
+        // Every split point, as a type name may hold an underscore (`TIME_OF_DAY`). The infix
+        // is ASCII, so both ends of a match are character boundaries.
+        (0..bytes.len().saturating_sub(infix.len() - 1))
+            .filter(|&i| bytes[i..i + infix.len()].eq_ignore_ascii_case(infix))
+            .any(|i| source(&name[..i]) && target(&name[i + infix.len()..]))
+            .then_some(form)
+    })
+}
+
+/// `s` without the ASCII prefix `p`, compared case-insensitively.
+fn strip_prefix_ci<'a>(s: &'a str, p: &str) -> Option<&'a str> {
+    let n = p.len();
+    (s.len() >= n && s.as_bytes()[..n].eq_ignore_ascii_case(p.as_bytes())).then(|| &s[n..])
+}
+
+/// `s` without the ASCII suffix `p`, compared case-insensitively.
+fn strip_suffix_ci<'a>(s: &'a str, p: &str) -> Option<&'a str> {
+    let n = s.len().checked_sub(p.len())?;
+    s.as_bytes()[n..]
+        .eq_ignore_ascii_case(p.as_bytes())
+        .then(|| &s[..n])
 }
 
 /// Whether two names are the same name (seed 003: naming is case insensitive).
@@ -402,5 +472,53 @@ mod tests {
         // Names that merely contain a reserved word stay legal.
         assert_eq!(check_name("ton_preset"), Ok(()));
         assert_eq!(check_name("speed_to_motor"), Ok(()));
+    }
+
+    #[test]
+    fn every_form_of_conversion_function_is_reserved() {
+        let reserved = |name: &str| match check_name(name) {
+            Err(NameError::Reserved(form)) => form,
+            other => panic!("{name}: {other:?}"),
+        };
+        assert_eq!(reserved("DINT_TO_INT"), "<TYPE>_TO_<TYPE>");
+        assert_eq!(reserved("time_of_day_to_dint"), "<TYPE>_TO_<TYPE>");
+        assert_eq!(reserved("TO_INT"), "TO_<TYPE>");
+        assert_eq!(reserved("to_lreal"), "TO_<TYPE>");
+        assert_eq!(reserved("TO_BCD_WORD"), "TO_<TYPE>");
+        assert_eq!(reserved("REAL_TRUNC_INT"), "<TYPE>_TRUNC_<TYPE>");
+        assert_eq!(reserved("TRUNC_DINT"), "TRUNC_<TYPE>");
+        assert_eq!(reserved("WORD_BCD_TO_UINT"), "<TYPE>_TO_<TYPE>");
+        assert_eq!(reserved("USINT_TO_BCD_BYTE"), "<TYPE>_TO_<TYPE>");
+        assert_eq!(reserved("BCD_TO_INT"), "<TYPE>_TO_<TYPE>");
+        assert_eq!(reserved("TRUNC"), "TRUNC");
+        // What only looks like one stays legal.
+        for ok in [
+            "to_motor",
+            "trunc_length",
+            "speed_trunc_int",
+            "to_",
+            "x_to_",
+        ] {
+            assert_eq!(check_name(ok), Ok(()), "{ok}");
+        }
+    }
+
+    #[test]
+    fn standard_functions_of_edition_3_are_reserved() {
+        for word in [
+            "SUB_DT_DT",
+            "concat_ltod",
+            "TO_BIG_ENDIAN",
+            "little_endian_to",
+            "IS_VALID",
+            "IS_VALID_BCD",
+            "ADD_TOD_TIME",
+            "split_ldt",
+        ] {
+            assert!(
+                matches!(check_name(word), Err(NameError::Reserved(_))),
+                "{word}"
+            );
+        }
     }
 }

@@ -381,3 +381,37 @@ fn alias_fields_behave_like_the_types_they_name() {
     assert!(gm.top, "the word's bit reached its bool");
     assert_eq!(Aliased::from_image(&gm.to_image()), gm);
 }
+
+type Lreal = f64;
+
+/// Bare integers on reals (seed 001), beyond the integer types included.
+#[derive(GlobalMemory, Debug)]
+pub struct BareIntegers {
+    #[plc(initial = 100000000000000000000)]
+    above_u64: f64,
+    #[plc(initial = -100000000000000000000)]
+    below_i64: f64,
+    #[plc(initial = 100000000000000000000)]
+    above_u64_alias: Lreal,
+    #[plc(initial = 1000000000000000000000000000000000000000000)]
+    above_i128: f64,
+    #[plc(initial = 18446744073709551615)]
+    u64_max_on_f32: f32,
+}
+
+#[test]
+fn bare_integer_initials_on_reals_keep_their_value_beyond_u64() {
+    let gm = BareIntegers::default();
+    assert_eq!(gm.above_u64, 1e20);
+    assert_eq!(gm.below_i64, -1e20);
+    assert_eq!(gm.above_u64_alias, 1e20);
+    assert_eq!(gm.above_i128, 1e42);
+    assert_eq!(gm.u64_max_on_f32, 18446744073709551615u64 as f32);
+    let initial = |i: usize| BareIntegers::VARIABLES[i].initial;
+    assert_eq!(initial(0), Some("100000000000000000000"));
+    assert_eq!(initial(1), Some("-100000000000000000000"));
+    assert_eq!(
+        initial(3),
+        Some("1000000000000000000000000000000000000000000")
+    );
+}

@@ -32,7 +32,9 @@ pub use plc_rules::widening::{WideningOptions, can_widen, can_widen_with};
 #[diagnostic::on_unimplemented(
     message = "`{Self}` does not widen implicitly to `{T}` (IEC 61131-3, seed 001)",
     label = "not an implicit widening",
-    note = "use an explicit conversion from `plc_core::convert::explicit`, e.g. `dint_to_int`"
+    note = "convert explicitly with a `<source>_to_<target>` function of \
+            `plc_core::convert::explicit`, named by the IEC types in snake case, such as \
+            `real_to_lint` (f32 to i64) or `dint_to_int` (i32 to i16)"
 )]
 pub trait Widen<T> {
     /// The value as a `T`.

@@ -6,11 +6,24 @@ use super::private;
 use crate::ast::{Container, Var};
 use crate::types::SynType;
 use plc_rules::address::Size;
-use proc_macro2::{Span, TokenStream};
+use proc_macro2::{Delimiter, Group, Span, TokenStream};
 use quote::{quote, quote_spanned};
 
 fn assert(span: Span, cond: TokenStream, message: String) -> TokenStream {
     quote_spanned!(span=> const _: () = ::core::assert!(#cond, #message);)
+}
+
+/// An assertion reported under all of `written` (e.g. both tokens of `-1`): the compiler spans
+/// a macro call from its path to its closing delimiter, so the path takes the first token's span
+/// and the arguments the last one's.
+fn assert_over(written: &TokenStream, cond: TokenStream, message: String) -> TokenStream {
+    let mut spans = written.clone().into_iter().map(|t| t.span());
+    let first = spans.next().unwrap_or_else(Span::call_site);
+    let last = spans.last().unwrap_or(first);
+    let mut args = Group::new(Delimiter::Parenthesis, quote!(#cond, #message));
+    args.set_span(last);
+    let call = quote_spanned!(first=> ::core::assert!);
+    quote_spanned!(first=> const _: () = #call #args;)
 }
 
 pub fn expand(c: &Container) -> TokenStream {
@@ -26,6 +39,14 @@ pub fn expand(c: &Container) -> TokenStream {
                 format!(
                     "the type of `{name}` must have at most 3 dimensions and 65535 items, and \
                      strings a capacity of 1..=255 bytes (seed 003)"
+                ),
+            ));
+            out.extend(assert(
+                v.ty_span(),
+                quote_spanned!(v.ty_span()=> #p::facts::<#ty>().has_items()),
+                format!(
+                    "the type of `{name}` is an array without items: each dimension needs at \
+                     least one item"
                 ),
             ));
             unknown_type_checks(c, v, &mut out);
@@ -74,14 +95,26 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
     }
     if let Some(at) = &v.at {
         let bits = at.value.size.bits();
+        let text = v.at_text.as_deref().unwrap_or_default();
+        let facts = quote_spanned!(v.ty_span()=> #p::facts::<#ty>());
+        // Two assertions, so an array or string is told it is no channel, not a wrong width.
+        out.extend(assert(
+            at.span,
+            quote!(#facts.is_channel()),
+            format!(
+                "`at` locates one channel: the type of `{name}` must be a scalar, not an array \
+                 or string (seed 003: only internal variables have dimensions; no string \
+                 channels)"
+            ),
+        ));
         let what = match at.value.size {
-            Size::Bit => "a bit: the type of `{name}` must be bool".replace("{name}", &name),
+            Size::Bit => format!("a bit: the type of `{name}` must be bool"),
             _ => format!("{bits} bits wide: the type of `{name}` must have {bits} bits"),
         };
         out.extend(assert(
             at.span,
-            quote_spanned!(v.ty_span()=> #p::facts::<#ty>().located_fits(#bits)),
-            format!("`{}` is {what}", v.at_text.as_deref().unwrap_or_default()),
+            quote!(!#facts.is_channel() || #facts.located_fits(#bits)),
+            format!("`{text}` is {what}"),
         ));
     }
     if let Some(t) = &v.iec_type {
@@ -98,14 +131,8 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
         ));
     }
     if let Some(init) = &v.initial {
-        out.extend(assert(
-            init.span,
-            init.fits_tokens(&c.krate, ty, v.ty_span()),
-            format!(
-                "initial value {} does not fit the type of `{name}` (wrong kind, out of range, or \
-                 too long)",
-                init.json()
-            ),
-        ));
+        for (cond, message) in init.alias_checks(&c.krate, ty, v.ty_span(), &name) {
+            out.extend(assert_over(&init.tokens, cond, message));
+        }
     }
 }
