@@ -50,9 +50,9 @@ pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
     let image = image_ident();
-    let infos = c.vars.iter().map(|v| {
+    let infos = c.vars.iter().enumerate().map(|(i, v)| {
         let ty = v.ty;
-        let ident = v.ident;
+        let path = super::image::field_path(c, i);
         let name = &v.symbol.value;
         let iec = iec_type(c, v);
         let rust_type = type_text(ty);
@@ -77,7 +77,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 name: #name,
                 iec_type: #iec,
                 rust_type: #rust_type,
-                offset: ::core::mem::offset_of!(#image, #ident),
+                offset: ::core::mem::offset_of!(#image, #path),
                 size: ::core::mem::size_of::<<#ty as #p::PlcType>::Repr>(),
                 dims: <#ty as #p::PlcType>::DIMS,
                 bit: #bit,
