@@ -44,14 +44,14 @@ fn main() {
     let owner = SharedGlobalMemory::<Gm1k>::create(&segment).expect("segment");
     let mut gm = Gm1k::default();
     let mut out = gm.to_image();
-    owner.publish_image(&out);
+    owner.publish_image(&out).expect("publish");
     let framework = time(batches, 2000, || {
         let img = owner.snapshot_image().expect("snapshot");
         gm.load_image(&img);
         gm.unpack_bits();
         gm.pack_bits();
         gm.store_image(&mut out);
-        owner.publish_image(black_box(&out));
+        owner.publish_image(black_box(&out)).expect("publish");
     });
     let input = vec![0u8; IMAGE_SIZE];
     let mut output = vec![0u8; IMAGE_SIZE];

@@ -70,6 +70,16 @@ impl StopHandle {
     pub fn is_stopped(&self) -> bool {
         self.0.load(Ordering::Acquire)
     }
+
+    /// Makes SIGINT (Ctrl-C) and SIGTERM ask for a stop instead of ending the process at once,
+    /// so the program (a runtime, or a tool such as `plc log`) can finish cleanly: save, flush,
+    /// release its I/O.
+    pub fn stop_on_signals(&self) -> std::io::Result<()> {
+        for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+            signal_hook::flag::register(sig, self.0.clone())?;
+        }
+        Ok(())
+    }
 }
 
 /// Settings of a [`Runtime`].
@@ -237,9 +247,8 @@ where
             set_realtime(p)?;
         }
         if s.signals {
-            for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-                let _ = signal_hook::flag::register(sig, s.stop.0.clone());
-            }
+            // Without the handlers Ctrl-C still stops the program, only not cleanly.
+            let _ = s.stop.stop_on_signals();
         }
         let mut gm = T::default();
         let retain = match &s.retain {
@@ -262,7 +271,8 @@ where
         let mut image = ctx.gm.to_image();
         let mut retained = nonvolatile_bytes::<T>(&image);
         if let Some(shm) = &shm {
-            shm.publish_image(&image);
+            // Cannot fail: the runtime created the segment, so it is its owner.
+            let _ = shm.publish_image(&image);
             shm.set_run_state(RunState::Running);
         }
         let mut next = Instant::now();
@@ -301,7 +311,7 @@ where
             ctx.gm.pack_bits();
             ctx.gm.store_image(&mut image);
             if let Some(shm) = &shm {
-                shm.publish_image(&image);
+                let _ = shm.publish_image(&image); // the owner's: cannot fail
             }
             if let Some(writer) = &retain {
                 let now = nonvolatile_bytes::<T>(&image);
@@ -337,7 +347,9 @@ where
         };
         s.backend.stop();
         if let Some(writer) = retain {
-            writer.finish(Some(ctx.gm.to_image()));
+            // `image` is the last completed cycle's. After a panic `gm` holds a half-done tick
+            // and zeroed outputs, which must not become the values the next start restores.
+            writer.finish(Some(image));
         }
         if let Some(shm) = &shm {
             shm.set_run_state(if result.is_ok() {

@@ -2,7 +2,7 @@
 
 use super::layout::*;
 use std::fmt;
-use std::time::{Duration, SystemTime, UNIX_EPOCH};
+use std::time::Duration;
 
 /// The owner's own account of itself.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -114,23 +114,42 @@ pub struct Status {
     pub writes_rejected: u64,
     /// Mailbox slots reclaimed from writers that never committed.
     pub writes_reclaimed: u64,
+    /// Mailbox requests discarded as damaged (a reclaimed writer stored into the slot late).
+    pub writes_discarded: u64,
+    /// Requests in the mailbox now: claimed by a writer, not yet taken by the owner.
+    pub writes_pending: u64,
     /// Generation: increases when a new owner takes the segment over.
     pub generation: u64,
 }
 
+/// Nanoseconds of CLOCK_MONOTONIC: one clock for every process on the machine (unlike
+/// `Instant`, whose values cannot be shared), and unlike the wall clock it does not jump when
+/// the time is set, which would make a live owner look stalled or a stalled one alive.
 pub(crate) fn now_ns() -> u64 {
-    SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_nanos() as u64)
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: clock_gettime writes one timespec into the valid one we pass.
+    if unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) } != 0 {
+        return 0;
+    }
+    (ts.tv_sec as u64)
+        .saturating_mul(1_000_000_000)
+        .saturating_add(ts.tv_nsec as u64)
 }
 
 impl Status {
+    pub(crate) fn read_run_state(base: &Base) -> RunState {
+        RunState::from_code(base.load(S_STATE))
+    }
+
     pub(crate) fn read(base: &Base, off: &Offsets) -> Status {
         let d = |o| Duration::from_nanos(base.load(o));
         let flags = base.load(S_BUS_FLAGS);
         Status {
             pid: base.load(S_PID),
-            run_state: RunState::from_code(base.load(S_STATE)),
+            run_state: Self::read_run_state(base),
             period: d(S_PERIOD_NS),
             cycle_count: base.load(S_CYCLES),
             last: d(S_LAST_NS),
@@ -148,6 +167,8 @@ impl Status {
             writes_applied: base.load(S_MB_APPLIED),
             writes_rejected: base.load(S_MB_REJECTED),
             writes_reclaimed: base.load(off.mb_reclaimed()),
+            writes_discarded: base.load(off.mb_discarded()),
+            writes_pending: super::mailbox::pending(base, off),
             generation: base.load(H_GENERATION),
         }
     }
