@@ -52,7 +52,8 @@ pub enum ShmError {
         /// The length needed.
         needed: usize,
     },
-    /// The segment's descriptor cannot be read.
+    /// The segment's header or descriptor is damaged (numbers that do not fit together, JSON
+    /// that does not parse, a hash that does not match).
     Corrupt {
         /// Segment.
         name: String,
@@ -171,8 +172,7 @@ impl fmt::Display for ShmError {
             ),
             ShmError::Corrupt { name, why } => write!(
                 f,
-                "segment `{name}` has an unreadable descriptor ({why}): restart the program that \
-                 owns it"
+                "segment `{name}` is damaged ({why}): restart the program that owns it"
             ),
             ShmError::OwnerGone(n) => write!(
                 f,
