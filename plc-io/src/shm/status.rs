@@ -118,13 +118,14 @@ pub struct Status {
     pub writes_discarded: u64,
     /// Requests in the mailbox now: claimed by a writer, not yet taken by the owner.
     pub writes_pending: u64,
-    /// Generation: increases when a new owner takes the segment over.
+    /// Generation: increases with every new owner of the name (a restart or a takeover).
     pub generation: u64,
 }
 
-/// Nanoseconds of CLOCK_MONOTONIC: one clock for every process on the machine (unlike
-/// `Instant`, whose values cannot be shared), and unlike the wall clock it does not jump when
-/// the time is set, which would make a live owner look stalled or a stalled one alive.
+/// Nanoseconds of CLOCK_MONOTONIC: one clock for every process on the machine (in one time
+/// namespace), unlike `Instant`, whose values cannot be shared; and unlike the wall clock it
+/// does not jump when the time is set, which would make a live owner look stalled or a
+/// stalled one alive.
 pub(crate) fn now_ns() -> u64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
