@@ -1,8 +1,10 @@
 //! The `plc` command against a real program in another process: the test binary runs itself
 //! as the control program (`PLC_TEST_ROLE=owner`), and each test drives the `plc` binary.
 
-use plc_core::{FixedString, GlobalMemory};
+use plc_core::{FixedString, GlobalMemory, Value};
 use plc_io::Runtime;
+use plc_io::shm::DynSegment;
+use std::os::unix::fs::FileExt;
 use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
@@ -187,6 +189,121 @@ fn set_refuses_bad_writes_and_writes_nothing() {
         "nothing was written: {got}"
     );
     assert!(!plc(&["get", "no_such_program", "x"]).status.success());
+}
+
+fn signal(child: &Child, sig: i32) {
+    // SAFETY: signalling a child we spawned.
+    unsafe { libc::kill(child.id() as i32, sig) };
+}
+
+#[test]
+fn set_refuses_a_batch_the_mailbox_has_no_room_for_and_writes_none_of_it() {
+    let owner = Owner::start("full");
+    let s = owner.segment.as_str();
+    // The program stops taking writes (stopped, as by a debugger), and others fill its mailbox.
+    signal(&owner.child, libc::SIGSTOP);
+    let other = DynSegment::attach(s).unwrap();
+    for v in 1..=62 {
+        other.write("speed_setpoint", Value::UInt(v)).unwrap();
+    }
+    let o = plc(&["set", s, "speed_setpoint=999", "recipe=new", "table[0]=5"]);
+    signal(&owner.child, libc::SIGCONT);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("room for 2 writes, not 3") && err.contains("nothing was written"),
+        "{err}"
+    );
+    wait_until("the other writes to apply", || {
+        stdout(&plc(&["get", s, "speed_actual"])).contains("speed_actual = 62")
+    });
+    std::thread::sleep(Duration::from_millis(50));
+    let got = stdout(&plc(&["get", s, "speed_setpoint", "recipe", "table[0]"]));
+    assert!(
+        got.contains("speed_setpoint = 62")
+            && got.contains("recipe = none")
+            && got.contains("table[0] = 0"),
+        "none of the batch was written: {got}"
+    );
+}
+
+/// Changes `variable`'s direction in the descriptor stored in the segment, as a damaged or
+/// hostile process could (the layout hash does not cover directions).
+fn forge_direction(segment: &str, variable: &str, from: &str, to: &str) {
+    assert_eq!(from.len(), to.len());
+    let file = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(format!("/dev/shm/plc.{segment}"))
+        .unwrap();
+    let word = |at: u64| {
+        let mut b = [0u8; 8];
+        file.read_exact_at(&mut b, at).unwrap();
+        u64::from_le_bytes(b)
+    };
+    let (at, len) = (word(48), word(56) as usize);
+    let mut json = vec![0u8; len];
+    file.read_exact_at(&mut json, at).unwrap();
+    let text = String::from_utf8(json).unwrap();
+    let var = text.find(&format!("\"name\":\"{variable}\"")).unwrap();
+    let old = format!("\"direction\":\"{from}\"");
+    let dir = var + text[var..].find(&old).unwrap();
+    let new = format!("\"direction\":\"{to}\"");
+    file.write_all_at(new.as_bytes(), at + dir as u64).unwrap();
+}
+
+#[test]
+fn set_waits_for_the_program_and_reports_the_writes_it_refused() {
+    let owner = Owner::start("refused");
+    let s = owner.segment.as_str();
+    // The tool now believes `speed_actual` (a status) may be written; the program knows better.
+    forge_direction(s, "speed_actual", "status", "output");
+    let o = plc(&["set", s, "speed_setpoint=321", "speed_actual=5"]);
+    assert!(!o.status.success(), "{}", stdout(&o));
+    assert!(
+        stderr(&o).contains("`speed_actual` was refused by the program"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        stdout(&o).contains("speed_setpoint <- 321"),
+        "{}",
+        stdout(&o)
+    );
+    // Applied before `plc set` returned: no waiting needed.
+    let got = stdout(&plc(&["get", s, "speed_setpoint"]));
+    assert!(got.contains("speed_setpoint = 321"), "{got}");
+}
+
+#[test]
+fn log_stopped_with_ctrl_c_keeps_its_rows() {
+    let owner = Owner::start("logint");
+    let file = std::env::temp_dir().join(format!("plc-logint-{}.csv", std::process::id()));
+    let _ = std::fs::remove_file(&file);
+    let child = Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["log", &owner.segment, "counter", "--csv"])
+        .arg(&file)
+        .args(["--rate", "50"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    wait_until("the CSV header", || {
+        std::fs::read_to_string(&file).is_ok_and(|c| c.starts_with("time_s,cycle,counter\n"))
+    });
+    // Well under the once-a-second flush: only the signal handling can save these rows.
+    std::thread::sleep(Duration::from_millis(300));
+    signal(&child, libc::SIGINT);
+    let o = child.wait_with_output().unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(&file).unwrap();
+    let rows = csv.lines().count() - 1;
+    assert!(rows >= 3, "{csv}");
+    assert!(
+        stderr(&o).contains(&format!("{rows} rows written")),
+        "{}",
+        stderr(&o)
+    );
 }
 
 #[test]

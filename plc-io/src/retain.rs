@@ -37,7 +37,7 @@
 //! ```
 
 use plc_core::convert::can_widen;
-use plc_core::{FixedString, GlobalMemory, IecType, Value};
+use plc_core::{FixedString, GlobalMemory, IecType, TypeFamily, Value};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::fs::{self, File};
@@ -145,26 +145,21 @@ fn to_json(v: &Value) -> serde_json::Value {
     }
 }
 
-fn from_json(v: &serde_json::Value) -> Option<Value> {
-    Some(match v {
-        serde_json::Value::Bool(b) => Value::Bool(*b),
-        serde_json::Value::Number(n) => {
-            if let Some(u) = n.as_u64() {
-                Value::UInt(u)
-            } else if let Some(i) = n.as_i64() {
-                Value::Int(i)
-            } else {
-                Value::Real(n.as_f64()?)
-            }
+/// A saved value, read as the type it was saved as: a STRING whose text is `inf` stays text, a
+/// REAL saved as `"NaN"` (JSON has no NaN) is a number.
+fn from_json(v: &serde_json::Value, saved_as: IecType) -> Option<Value> {
+    use serde_json::Value as J;
+    Some(match (saved_as.family(), v) {
+        (TypeFamily::Bool, J::Bool(b)) => Value::Bool(*b),
+        (TypeFamily::SignedInt, J::Number(n)) => Value::Int(n.as_i64()?),
+        (TypeFamily::UnsignedInt | TypeFamily::BitString, J::Number(n)) => Value::UInt(n.as_u64()?),
+        (TypeFamily::Real, J::Number(n)) => Value::Real(n.as_f64()?),
+        (TypeFamily::Real, J::String(s)) => Value::Real(s.parse::<f64>().ok()?),
+        (TypeFamily::String, J::String(s)) => {
+            let mut t = FixedString::<255>::new();
+            t.try_set(s).ok()?;
+            Value::Text(t)
         }
-        serde_json::Value::String(s) => match s.parse::<f64>() {
-            Ok(r) if !r.is_finite() => Value::Real(r),
-            _ => {
-                let mut t = FixedString::<255>::new();
-                t.try_set(s).ok()?;
-                Value::Text(t)
-            }
-        },
         _ => return None,
     })
 }
@@ -240,19 +235,22 @@ impl RetainStore {
             .with_extension(format!("tmp.{}", std::process::id()));
         {
             let mut f = File::create(&tmp).map_err(io)?;
+            fault_point(FaultPoint::BeforeWrite);
             f.write_all(format!("{HEADER}{crc:08x}\n").as_bytes())
                 .and_then(|()| f.write_all(body))
-                .and_then(|()| f.sync_all())
                 .map_err(io)?;
+            fault_point(FaultPoint::BeforeFsync);
+            f.sync_all().map_err(io)?;
         }
-        fault_point(1);
+        fault_point(FaultPoint::BeforeRename);
         fs::rename(&tmp, &self.path).map_err(io)?;
-        fault_point(2);
+        fault_point(FaultPoint::BeforeDirFsync);
         let dir = match self.path.parent() {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         };
         File::open(dir).and_then(|d| d.sync_all()).map_err(io)?;
+        fault_point(FaultPoint::AfterDirFsync);
         Ok(())
     }
 
@@ -325,18 +323,28 @@ impl RetainStore {
                 ));
                 continue;
             }
-            let values: Option<Vec<Value>> = stored
-                .values
-                .iter()
-                .map(|j| from_json(j).and_then(|x| widen(x, stored.iec_type, v.iec_type)))
-                .collect();
-            let Some(values) = values else {
+            if stored.iec_type != v.iec_type && !can_widen(stored.iec_type, v.iec_type) {
                 report.reset.push((
                     v.name.to_string(),
                     format!(
                         "its type changed from {} to {}, which is no implicit widening",
                         stored.iec_type, v.iec_type
                     ),
+                ));
+                continue;
+            }
+            let values: Option<Vec<Value>> = stored
+                .values
+                .iter()
+                .map(|j| {
+                    from_json(j, stored.iec_type)
+                        .and_then(|x| widen(x, stored.iec_type, v.iec_type))
+                })
+                .collect();
+            let Some(values) = values else {
+                report.reset.push((
+                    v.name.to_string(),
+                    format!("a saved value is not a {} value", stored.iec_type),
                 ));
                 continue;
             };
@@ -367,14 +375,36 @@ impl RetainStore {
     }
 }
 
-/// Test hook: when the environment variable `PLC_RETAIN_FAULT` names a step (1: after the
-/// temporary file is written, 2: after the rename), the process aborts there, as a power cut
-/// would stop it.
-fn fault_point(step: u8) {
-    if std::env::var("PLC_RETAIN_FAULT").is_ok_and(|s| s == step.to_string()) {
+/// The steps of a save, where the `fault-injection` test hook can stop the process.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(not(feature = "fault-injection"), allow(dead_code))]
+enum FaultPoint {
+    /// The temporary file is created, nothing written yet.
+    BeforeWrite = 1,
+    /// Written, not yet fsynced.
+    BeforeFsync = 2,
+    /// Fsynced, not yet renamed over the file.
+    BeforeRename = 3,
+    /// Renamed, the directory not yet fsynced.
+    BeforeDirFsync = 4,
+    /// Done.
+    AfterDirFsync = 5,
+}
+
+/// Test hook (feature `fault-injection`, which only this crate's tests enable): when the
+/// environment variable `PLC_RETAIN_FAULT` holds a step's number, the process aborts there, as
+/// a crash would stop it. Without the feature it is nothing: a production program never aborts
+/// because of its environment.
+#[cfg(feature = "fault-injection")]
+fn fault_point(step: FaultPoint) {
+    if std::env::var("PLC_RETAIN_FAULT").is_ok_and(|s| s == (step as u8).to_string()) {
         std::process::abort();
     }
 }
+
+#[cfg(not(feature = "fault-injection"))]
+#[inline(always)]
+fn fault_point(_: FaultPoint) {}
 
 /// Saves retained values on a background thread: at most once per interval, only when they
 /// changed, and a last time when finished.
@@ -394,7 +424,9 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
             .name("plc-retain".into())
             .spawn(move || {
                 let mut pending: Option<I> = None;
-                let mut last_save = Instant::now() - interval;
+                // None: nothing saved yet, so the first change is saved at once.
+                let mut last_save: Option<Instant> = None;
+                let due = |last: Option<Instant>| last.is_none_or(|t| t.elapsed() >= interval);
                 let save = |image: &I| {
                     if let Err(e) = store.save(&T::from_image(image)) {
                         eprintln!("{e}");
@@ -402,7 +434,7 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                 };
                 loop {
                     let wait = if pending.is_some() {
-                        interval.saturating_sub(last_save.elapsed())
+                        last_save.map_or(Duration::ZERO, |t| interval.saturating_sub(t.elapsed()))
                     } else {
                         Duration::from_secs(3600)
                     };
@@ -416,11 +448,11 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                         }
                         Err(RecvTimeoutError::Timeout) => {}
                     }
-                    if pending.is_some() && last_save.elapsed() >= interval {
+                    if pending.is_some() && due(last_save) {
                         if let Some(image) = pending.take() {
                             save(&image);
                         }
-                        last_save = Instant::now();
+                        last_save = Some(Instant::now());
                     }
                 }
             })

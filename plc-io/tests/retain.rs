@@ -150,6 +150,9 @@ fn a_damaged_file_is_an_error_naming_it_and_is_left_untouched() {
     ));
 }
 
+/// kill -9s at arbitrary moments of a save loop (each costs a process start and ~25 ms).
+const KILLS: u64 = 100;
+
 #[test]
 fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
     if role().as_deref() == Some("saver") {
@@ -175,7 +178,8 @@ fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
     let path = dir.join("m.retain");
     let store = RetainStore::new(&path);
     let test = "a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file";
-    for (step, expect) in [("1", -300), ("2", 2)] {
+    // Steps of a save: 1 file created, 2 written, 3 fsynced, 4 renamed, 5 directory fsynced.
+    for (step, expect) in [(1, -300), (2, -300), (3, -300), (4, 2), (5, 2)] {
         store.save(&v1()).unwrap();
         let env = [
             ("RETAIN", path.display().to_string()),
@@ -184,12 +188,27 @@ fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
         let status = spawn_role(test, "saver", &env).wait().unwrap();
         assert!(!status.success(), "the saver was stopped at step {step}");
         let mut gm = V1::default();
-        store.load(&mut gm).unwrap();
-        assert_eq!(gm.cycles, expect, "fault at step {step}");
+        let report = store
+            .load(&mut gm)
+            .unwrap_or_else(|e| panic!("fault at step {step}: {e}"));
+        assert_eq!(
+            gm.cycles, expect,
+            "fault at step {step}: the old or the new file"
+        );
+        assert_eq!(
+            gm,
+            V1 {
+                cycles: expect,
+                not_kept: 0,
+                ..v1()
+            },
+            "fault at step {step}: every value of that file"
+        );
+        assert_eq!(report.restored.len(), 7, "fault at step {step}");
     }
     // And kill -9 at arbitrary moments while saving in a loop.
     let env = [("RETAIN", path.display().to_string())];
-    for i in 0..40 {
+    for i in 0..KILLS {
         let mut child = spawn_role(test, "looper", &env);
         std::thread::sleep(Duration::from_millis(5 + (i * 7) % 40));
         kill9(&mut child);
@@ -202,4 +221,52 @@ fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
             "a consistent file after kill {i}"
         );
     }
+}
+
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct Texts {
+    #[plc(nonvolatile)]
+    a: FixedString<16>,
+    #[plc(nonvolatile)]
+    b: FixedString<16>,
+    #[plc(nonvolatile)]
+    c: FixedString<16>,
+    #[plc(nonvolatile)]
+    nan: f32,
+    #[plc(nonvolatile)]
+    inf: f64,
+}
+
+#[test]
+fn text_that_reads_like_a_number_is_restored_as_text_and_non_finite_reals_as_reals() {
+    let store = RetainStore::new(temp_dir("texts").join("t.retain"));
+    let saved = Texts {
+        a: FixedString::from_str_truncate("inf"),
+        b: FixedString::from_str_truncate("NaN"),
+        c: FixedString::from_str_truncate("-infinity"),
+        nan: f32::NAN,
+        inf: f64::NEG_INFINITY,
+    };
+    store.save(&saved).unwrap();
+    let mut gm = Texts::default();
+    let report = store.load(&mut gm).unwrap();
+    assert!(report.reset.is_empty(), "{:?}", report.reset);
+    assert_eq!(
+        (gm.a.as_str(), gm.b.as_str(), gm.c.as_str()),
+        ("inf", "NaN", "-infinity")
+    );
+    assert!(gm.nan.is_nan());
+    assert_eq!(gm.inf, f64::NEG_INFINITY);
+}
+
+#[test]
+fn a_retain_writer_with_an_enormous_interval_still_saves() {
+    use plc_io::retain::RetainWriter;
+    let path = temp_dir("interval").join("m.retain");
+    let writer = RetainWriter::spawn::<V1>(RetainStore::new(&path), Duration::MAX);
+    writer.offer(v1().to_image());
+    writer.finish(None);
+    let mut gm = V1::default();
+    RetainStore::new(&path).load(&mut gm).unwrap();
+    assert_eq!(gm.cycles, v1().cycles);
 }

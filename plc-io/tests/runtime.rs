@@ -3,9 +3,10 @@
 
 mod common;
 
-use common::{unique, wait_for};
+use common::{role, spawn_role, unique, wait_for};
 use plc_core::{GlobalMemory, Value};
-use plc_io::shm::{DynSegment, OwnerState, SharedGlobalMemory};
+use plc_io::retain::RetainStore;
+use plc_io::shm::{DynSegment, OwnerState, RunState, SharedGlobalMemory, ShmError};
 use plc_io::{Context, IoBackend, IoError, IoStatus, Runtime, RuntimeError};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
@@ -188,4 +189,76 @@ fn context_for_test_runs_a_tick_without_bus_or_segment() {
     ctx.gm.motor_on = ctx.gm.start_button && ctx.inputs_valid;
     assert!(ctx.gm.motor_on);
     assert_eq!(ctx.bus_state, "NONE");
+}
+
+#[test]
+fn a_panic_keeps_the_last_good_cycles_retained_values() {
+    let dir = std::env::temp_dir().join(format!("plc-rt-panic-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("gm.retain");
+    let _ = std::fs::remove_file(&path);
+    let err = Runtime::<Gm>::builder()
+        .period(Duration::from_millis(1))
+        .retain(&path)
+        .handle_signals(false)
+        .build()
+        .run(|ctx| {
+            ctx.gm.total_cycles += 1;
+            if ctx.cycle == 3 {
+                ctx.gm.total_cycles = 999; // half-way through a tick that then fails
+                panic!("sensor table index out of range");
+            }
+        })
+        .unwrap_err();
+    assert!(matches!(err, RuntimeError::Panicked { cycle: 3, .. }));
+    let mut gm = Gm::default();
+    RetainStore::new(&path).load(&mut gm).unwrap();
+    assert_eq!(
+        gm.total_cycles, 2,
+        "the values of the last completed cycle, not of the failed one"
+    );
+}
+
+#[test]
+fn after_a_panic_another_process_sees_the_owner_faulted() {
+    if role().as_deref() == Some("faulting_program") {
+        let err = Runtime::<Gm>::builder()
+            .period(Duration::from_millis(2))
+            .segment(std::env::var("SEGMENT").unwrap())
+            .handle_signals(false)
+            .build()
+            .run(|ctx| {
+                if ctx.gm.setpoint == 4242 {
+                    panic!("the operator found the bug");
+                }
+            })
+            .unwrap_err();
+        assert!(matches!(err, RuntimeError::Panicked { .. }));
+        return;
+    }
+    if role().is_some() {
+        return;
+    }
+    let name = unique("faulted");
+    let mut child = spawn_role(
+        "after_a_panic_another_process_sees_the_owner_faulted",
+        "faulting_program",
+        &[("SEGMENT", name.clone())],
+    );
+    let seg = wait_for(Duration::from_secs(10), || DynSegment::attach(&name).ok());
+    wait_for(Duration::from_secs(5), || {
+        (seg.owner_state() == OwnerState::Running).then_some(())
+    });
+    seg.write("setpoint", Value::UInt(4242)).unwrap();
+    assert!(child.wait().unwrap().success());
+    assert_eq!(seg.status().run_state, RunState::Faulted);
+    let err = seg.snapshot_bytes().unwrap_err();
+    assert_eq!(
+        err,
+        ShmError::Closed {
+            name: name.clone(),
+            faulted: true
+        }
+    );
+    assert!(err.to_string().contains("faulted"), "{err}");
 }

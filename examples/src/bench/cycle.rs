@@ -46,7 +46,7 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
         let owner = SharedGlobalMemory::<T>::create(segment)?;
         let gm = T::default();
         let image = gm.to_image();
-        owner.publish_image(&image);
+        owner.publish_image(&image)?;
         Ok(FrameworkCycle {
             owner,
             gm,
@@ -65,7 +65,9 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
         self.gm.unpack_bits();
         self.gm.pack_bits();
         self.gm.store_image(&mut self.image_out.0);
-        self.owner.publish_image(black_box(&self.image_out.0));
+        self.owner
+            .publish_image(black_box(&self.image_out.0))
+            .expect("the benchmark owns its segment");
     }
 }
 

@@ -1,10 +1,18 @@
 //! `plc log <segment> <names...> --csv FILE [--rate HZ] [--seconds S]`.
+//!
+//! It runs until `--seconds` have passed, the program stops, or Ctrl-C / SIGTERM: the signals
+//! only ask the loop to end, so the rows still buffered are written before it exits. The file is
+//! also flushed every second, so `tail -f` follows it and a `kill -9` loses at most a second.
 
 use super::{Error, resolve, show};
+use plc_io::StopHandle;
 use plc_io::shm::DynSegment;
 use std::io::Write;
 use std::path::Path;
 use std::time::{Duration, Instant};
+
+/// How often the CSV file is flushed while logging.
+const FLUSH_EVERY: Duration = Duration::from_secs(1);
 
 /// A CSV field, quoted per RFC 4180 when it needs to be.
 fn field(s: &str) -> String {
@@ -25,6 +33,9 @@ pub fn run(
     if !(rate > 0.0 && rate <= 10_000.0) {
         return Err("--rate must be between 0 and 10000 samples per second".into());
     }
+    let stop = StopHandle::default();
+    stop.stop_on_signals()
+        .map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
     let seg = DynSegment::attach(segment)?;
     let vars: Vec<_> = names
         .iter()
@@ -39,11 +50,13 @@ pub fn run(
         .chain(names.iter().map(|n| field(n)))
         .collect();
     writeln!(out, "{}", header.join(","))?;
+    out.flush()?;
     let start = Instant::now();
     let period = Duration::from_secs_f64(1.0 / rate);
     let mut next = start;
+    let mut flushed = start;
     let mut rows = 0u64;
-    while seconds.is_none_or(|s| start.elapsed().as_secs_f64() < s) {
+    while !stop.is_stopped() && seconds.is_none_or(|s| start.elapsed().as_secs_f64() < s) {
         let image = match seg.snapshot_bytes() {
             Ok(i) => i,
             Err(e) if rows > 0 => {
@@ -62,10 +75,18 @@ pub fn run(
         );
         writeln!(out, "{}", row.join(","))?;
         rows += 1;
+        if flushed.elapsed() >= FLUSH_EVERY {
+            out.flush()?;
+            flushed = Instant::now();
+        }
         next += period;
-        let now = Instant::now();
-        if next > now {
-            std::thread::sleep(next - now);
+        // Sleep in short steps: a slow rate must not delay the answer to Ctrl-C.
+        while !stop.is_stopped() {
+            let now = Instant::now();
+            if next <= now {
+                break;
+            }
+            std::thread::sleep((next - now).min(Duration::from_millis(50)));
         }
     }
     out.flush()?;

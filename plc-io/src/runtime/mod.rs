@@ -70,6 +70,16 @@ impl StopHandle {
     pub fn is_stopped(&self) -> bool {
         self.0.load(Ordering::Acquire)
     }
+
+    /// Makes SIGINT (Ctrl-C) and SIGTERM ask for a stop instead of ending the process at once,
+    /// so the program (a runtime, or a tool such as `plc log`) can finish cleanly: save, flush,
+    /// release its I/O.
+    pub fn stop_on_signals(&self) -> std::io::Result<()> {
+        for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+            signal_hook::flag::register(sig, self.0.clone())?;
+        }
+        Ok(())
+    }
 }
 
 /// Settings of a [`Runtime`].
@@ -237,9 +247,8 @@ where
             set_realtime(p)?;
         }
         if s.signals {
-            for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-                let _ = signal_hook::flag::register(sig, s.stop.0.clone());
-            }
+            // Without the handlers Ctrl-C still stops the program, only not cleanly.
+            let _ = s.stop.stop_on_signals();
         }
         let mut gm = T::default();
         let retain = match &s.retain {
@@ -259,10 +268,14 @@ where
         let mut ctx = Context::for_test(gm);
         ctx.cycle = 0;
         ctx.stats.period = s.period;
-        let mut image = ctx.gm.to_image();
-        let mut retained = nonvolatile_bytes::<T>(&image);
+        // On a cache line: the image type has alignment 1, and the word copies into shared
+        // memory cost up to three times as much from a buffer that straddles lines.
+        let mut image_buf = Box::new(Aligned(ctx.gm.to_image()));
+        let image = &mut image_buf.0;
+        let mut retained = nonvolatile_bytes::<T>(image);
         if let Some(shm) = &shm {
-            shm.publish_image(&image);
+            // Cannot fail: the runtime created the segment, so it is its owner.
+            let _ = shm.publish_image(image);
             shm.set_run_state(RunState::Running);
         }
         let mut next = Instant::now();
@@ -299,16 +312,14 @@ where
                 });
             }
             ctx.gm.pack_bits();
-            ctx.gm.store_image(&mut image);
+            ctx.gm.store_image(image);
             if let Some(shm) = &shm {
-                shm.publish_image(&image);
+                let _ = shm.publish_image(image); // the owner's: cannot fail
             }
-            if let Some(writer) = &retain {
-                let now = nonvolatile_bytes::<T>(&image);
-                if now != retained {
-                    writer.offer(image);
-                    retained = now;
-                }
+            if let Some(writer) = &retain
+                && nonvolatile_changed::<T>(image, &mut retained)
+            {
+                writer.offer(*image);
             }
             let took = start.elapsed();
             ctx.stats.add(took, ctx.cycle);
@@ -337,7 +348,9 @@ where
         };
         s.backend.stop();
         if let Some(writer) = retain {
-            writer.finish(Some(ctx.gm.to_image()));
+            // `image` is the last completed cycle's. After a panic `gm` holds a half-done tick
+            // and zeroed outputs, which must not become the values the next start restores.
+            writer.finish(Some(*image));
         }
         if let Some(shm) = &shm {
             shm.set_run_state(if result.is_ok() {
@@ -349,6 +362,31 @@ where
         drop(shm);
         result.map(|()| ctx.gm)
     }
+}
+
+/// An image on a cache-line boundary.
+#[repr(C, align(64))]
+struct Aligned<I>(I);
+
+/// Whether the nonvolatile variables' bytes in `image` differ from `last` (as
+/// [`nonvolatile_bytes`] gave them), updating `last`: compared in place, so the cycle does not
+/// allocate.
+fn nonvolatile_changed<T: GlobalMemory>(image: &T::Image, last: &mut [u8]) -> bool {
+    let bytes = image.as_bytes();
+    let mut at = 0;
+    let mut changed = false;
+    for v in T::VARIABLES.iter().filter(|v| v.nonvolatile) {
+        let (now, was) = (
+            &bytes[v.offset..v.offset + v.size],
+            &mut last[at..at + v.size],
+        );
+        if now != was {
+            was.copy_from_slice(now);
+            changed = true;
+        }
+        at += v.size;
+    }
+    changed
 }
 
 /// The image bytes of the nonvolatile variables, to notice a change without decoding.

@@ -57,7 +57,12 @@ pub struct BitDescriptor {
 impl VarDescriptor {
     /// Number of elements (1 for a scalar).
     pub fn elements(&self) -> usize {
-        self.dims.iter().product::<usize>().max(1)
+        // Saturating: a damaged descriptor must not overflow (`check_variables` refuses it).
+        self.dims
+            .iter()
+            .try_fold(1usize, |n, &d| n.checked_mul(d))
+            .unwrap_or(usize::MAX)
+            .max(1)
     }
 
     /// Bytes of one element.
@@ -136,6 +141,54 @@ impl LayoutDescriptor {
             h = h.var(&v.name, v.iec_type.name(), v.offset, v.size, &v.dims, bit);
         }
         h.finish()
+    }
+
+    /// Checks that every variable lies inside an image of `image_size` bytes, its size is a
+    /// whole number of elements, and its bit mapping names a variable: a descriptor read from
+    /// another process is not trusted to be what a compiler produced.
+    pub fn check_variables(&self) -> Result<(), String> {
+        let n_vars = self.variables.len();
+        for v in &self.variables {
+            let at = || {
+                format!(
+                    "variable `{}` (offset {}, {} bytes)",
+                    v.name, v.offset, v.size
+                )
+            };
+            if v.offset
+                .checked_add(v.size)
+                .is_none_or(|end| end > self.image_size)
+            {
+                return Err(format!(
+                    "{} lies outside the image of {} bytes",
+                    at(),
+                    self.image_size
+                ));
+            }
+            let whole = match v.dims.iter().try_fold(1usize, |n, &d| n.checked_mul(d)) {
+                Some(0) => v.size == 0,
+                Some(n) => v.size.is_multiple_of(n),
+                None => false,
+            };
+            if !whole {
+                return Err(format!(
+                    "{} is not a whole number of elements of dims {:?}",
+                    at(),
+                    v.dims
+                ));
+            }
+            if let Some(b) = v.bit
+                && (b.source >= n_vars || b.bit >= 64)
+            {
+                return Err(format!(
+                    "{} maps bit {} of variable {}, which does not exist",
+                    at(),
+                    b.bit,
+                    b.source
+                ));
+            }
+        }
+        Ok(())
     }
 
     /// Index of a variable by name, case-insensitively (seed 003).

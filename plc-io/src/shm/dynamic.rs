@@ -3,6 +3,7 @@
 use super::ShmError;
 use super::codec;
 use super::descriptor::{LayoutDescriptor, VarDescriptor};
+use super::mailbox::{Outcome, Ticket};
 use super::status::{OwnerState, Status};
 use super::view::View;
 use plc_core::Value;
@@ -73,11 +74,47 @@ impl DynSegment {
     /// Posts a write, checked as the owner's `set` would check it (and refused for read-only,
     /// input and status variables).
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, 0, value)
+        self.view.write_element(name, 0, value).map(drop)
     }
 
     /// Posts a write of one array element.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+        self.view.write_element(name, element, value).map(drop)
+    }
+
+    /// Posts a write of one element, checked as [`write_element`](Self::write_element) checks
+    /// it, and returns its ticket, to ask for its [`outcome`](Self::outcome) later.
+    pub fn post_element(
+        &self,
+        name: &str,
+        element: usize,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
         self.view.write_element(name, element, value)
+    }
+
+    /// What became of a posted write: pending, applied, rejected by the owner, discarded, or
+    /// unknown (taken long ago; its slot has been reused since).
+    pub fn outcome(&self, ticket: Ticket) -> Outcome {
+        self.view.outcome(ticket)
+    }
+
+    /// Free mailbox slots just now: a batch of writes fits whole if it is no larger (unless
+    /// another process posts at the same moment).
+    pub fn mailbox_free(&self) -> usize {
+        self.view.mailbox_free()
+    }
+
+    /// Test hook: posts a request without any of the writer's checks, as a misbehaving process
+    /// could, to test that the owner does not trust its mailbox.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn post_unchecked(
+        &self,
+        index: usize,
+        element: usize,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
+        self.view.post(index, element, value)
     }
 }

@@ -52,7 +52,8 @@ pub enum ShmError {
         /// The length needed.
         needed: usize,
     },
-    /// The segment's descriptor cannot be read.
+    /// The segment's header or descriptor is damaged (numbers that do not fit together, JSON
+    /// that does not parse, a hash that does not match).
     Corrupt {
         /// Segment.
         name: String,
@@ -63,6 +64,14 @@ pub enum ShmError {
     OwnerGone(String),
     /// A new owner took the segment over since this handle attached.
     Replaced(String),
+    /// The owner stopped (cleanly, or after a fault) and removed the segment since this handle
+    /// attached: nothing is published into it or taken from its mailbox any more.
+    Closed {
+        /// Segment.
+        name: String,
+        /// The owner stopped because its program faulted (a panic in its cycle).
+        faulted: bool,
+    },
     /// The owner stayed in the middle of a write for longer than a reader waits.
     Stuck(String),
     /// No variable of this name.
@@ -105,17 +114,21 @@ pub enum ShmError {
 
 impl ShmError {
     pub(crate) fn not_writable(variable: &str, read_only: bool, dir: Direction) -> ShmError {
-        let reason = if read_only {
-            "it is read-only"
-        } else if dir == Direction::Input {
-            "it is an input: the hardware writes it every cycle"
-        } else {
-            "it is a status variable: the program reports it"
-        };
         ShmError::NotWritable {
             variable: variable.to_string(),
-            reason,
+            reason: not_writable_reason(read_only, dir),
         }
+    }
+}
+
+/// Why a variable that is read-only, an input or a status cannot be written from outside.
+pub(crate) fn not_writable_reason(read_only: bool, dir: Direction) -> &'static str {
+    if read_only {
+        "it is read-only"
+    } else if dir == Direction::Input {
+        "it is an input: the hardware writes it every cycle"
+    } else {
+        "it is a status variable: the program reports it"
     }
 }
 
@@ -159,8 +172,7 @@ impl fmt::Display for ShmError {
             ),
             ShmError::Corrupt { name, why } => write!(
                 f,
-                "segment `{name}` has an unreadable descriptor ({why}): restart the program that \
-                 owns it"
+                "segment `{name}` is damaged ({why}): restart the program that owns it"
             ),
             ShmError::OwnerGone(n) => write!(
                 f,
@@ -170,6 +182,22 @@ impl fmt::Display for ShmError {
             ShmError::Replaced(n) => write!(
                 f,
                 "segment `{n}` was taken over by a new owner: attach again"
+            ),
+            ShmError::Closed {
+                name,
+                faulted: false,
+            } => write!(
+                f,
+                "the program that owned segment `{name}` stopped and removed it: attach again \
+                 once it runs again"
+            ),
+            ShmError::Closed {
+                name,
+                faulted: true,
+            } => write!(
+                f,
+                "the program that owned segment `{name}` faulted (a panic in its cycle; its \
+                 error output says where) and stopped: attach again once it is restarted"
             ),
             ShmError::Stuck(n) => write!(
                 f,

@@ -6,7 +6,7 @@
 //! 64    status   owner pid, state, period, cycle count, cycle times, overruns, bus state
 //!                and flags, heartbeat, mailbox counters            (16 x u64)
 //! 192   image    T::Image, padded to 8 bytes
-//! ...   mailbox  head, tail, reclaimed, capacity (4 x u64), then SLOTS slots
+//! ...   mailbox  head, tail, reclaimed, discarded (4 x u64), then SLOTS slots
 //! ...   descriptor, JSON
 //! ```
 //! Every shared word is a naturally aligned `u64` used only through `AtomicU64`.
@@ -18,6 +18,10 @@ pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS1");
 /// Written over the magic when a new owner replaces the segment: readers still mapping the old
 /// one learn to re-attach.
 pub const MAGIC_REPLACED: u64 = u64::from_le_bytes(*b"PLCGONE!");
+/// Written over the magic when the owner stops cleanly, before the segment is unlinked:
+/// readers still mapping it learn that nobody publishes into it or drains its mailbox any more,
+/// even after a new owner has created a new segment of the same name.
+pub const MAGIC_CLOSED: u64 = u64::from_le_bytes(*b"PLCSTOP!");
 
 pub const H_MAGIC: usize = 0;
 pub const H_VERSION: usize = 8;
@@ -48,7 +52,7 @@ pub const IMAGE: usize = 192;
 
 /// Mailbox slots per segment (part of the format).
 pub const SLOTS: usize = 64;
-/// Bytes of one slot: sequence, index, element, kind, text length, number, text.
+/// Bytes of one slot: sequence, index and element, kind and checksum, number, text.
 pub const SLOT_SIZE: usize = 8 + 4 + 4 + 4 + 4 + 8 + 256;
 
 pub const fn pad8(n: usize) -> usize {
@@ -65,6 +69,19 @@ pub struct Offsets {
 }
 
 impl Offsets {
+    /// The offsets for an image of `image_size` bytes, or `None` if they do not fit in the
+    /// address space (a damaged header read by a reader).
+    pub const fn checked(image_size: usize) -> Option<Self> {
+        // `new` adds a fixed amount to the padded image size: check that sum first.
+        match image_size.checked_next_multiple_of(8) {
+            Some(padded) if padded <= usize::MAX - (IMAGE + 32 + SLOTS * SLOT_SIZE) => {
+                Some(Self::new(image_size))
+            }
+            _ => None,
+        }
+    }
+
+    /// The offsets for an image of `image_size` bytes (a compiled type's own image).
     pub const fn new(image_size: usize) -> Self {
         let mailbox = IMAGE + pad8(image_size);
         let slots = mailbox + 32;
@@ -85,6 +102,9 @@ impl Offsets {
     }
     pub const fn mb_reclaimed(&self) -> usize {
         self.mailbox + 16
+    }
+    pub const fn mb_discarded(&self) -> usize {
+        self.mailbox + 24
     }
     pub const fn slot(&self, i: usize) -> usize {
         self.slots + (i % SLOTS) * SLOT_SIZE

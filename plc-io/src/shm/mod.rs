@@ -11,7 +11,14 @@
 //! mailbox of write requests, and the layout descriptor as JSON. The owner holds an exclusive
 //! `flock` on `/dev/shm/plc.<name>.lock` for its whole life: a second owner is refused while it
 //! lives, and after it dies (however it dies) a new owner takes the segment over with a new
-//! generation, which attached readers notice.
+//! generation, which attached readers notice ([`ShmError::Replaced`]). An owner that stops
+//! cleanly marks its segment closed before removing it, so readers still attached are told
+//! ([`ShmError::Closed`], saying whether it faulted) instead of reading a frozen image, also
+//! once the program runs again. The lock file stays when the program stops: it keeps the last
+//! generation, and deleting it while an owner holds it would let a second owner start.
+//!
+//! The owner trusts nothing another process wrote: header and descriptor numbers are checked
+//! before use, and each mailbox request is checked again against the program's own declaration.
 
 mod bytes;
 mod codec;

@@ -2,13 +2,14 @@
 //! control program, which publishes) and for typed readers in other processes.
 
 use super::descriptor::LayoutDescriptor;
+use super::error::not_writable_reason;
 use super::layout::*;
-use super::mailbox::{self, Consumer, Request};
+use super::mailbox::{self, Consumer, Rejection, Request};
 use super::segment::{self, Segment};
 use super::status::{CycleReport, OwnerState, RunState, Status, now_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
-use plc_core::{GlobalMemory, SetError, Value};
+use plc_core::{GlobalMemory, Value};
 use std::marker::PhantomData;
 use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
@@ -62,12 +63,11 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
             why: e.to_string(),
         })?;
         let off = Offsets::new(size_of::<T::Image>());
-        let (seg, previous) = Segment::create(&name, off.descriptor + json.len())?;
+        let (seg, generation) = Segment::create(&name, off.descriptor + json.len())?;
         let base = seg.base();
         base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
         base.store(H_LAYOUT_HASH, T::LAYOUT_HASH);
         base.store(H_IMAGE_SIZE, off.image_size as u64);
-        let generation = previous.map_or(1, |g| g + 1);
         base.store(H_GENERATION, generation);
         base.store(H_SEQ, 0);
         base.store(H_DESC_OFFSET, off.descriptor as u64);
@@ -120,7 +120,8 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         self.consumer.is_some()
     }
 
-    /// The generation: 1 for a fresh segment, one more at each takeover.
+    /// The generation: 1 for the first segment of this name, one more at each new owner (after
+    /// a clean stop or a takeover), so a reader can tell two runs apart.
     pub fn generation(&self) -> u64 {
         self.view.generation
     }
@@ -137,12 +138,13 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     pub fn publish(&self, gm: &T) -> Result<(), ShmError> {
         self.owner_only()?;
         let image = gm.to_image();
-        self.publish_image(&image);
-        Ok(())
+        self.publish_image(&image)
     }
 
-    /// Publishes an image already built (the runtime reuses one buffer).
-    pub fn publish_image(&self, image: &T::Image) {
+    /// Publishes an image already built (owner only; the runtime reuses one buffer). A reader
+    /// handle is refused: a second seqlock writer would let readers take torn images.
+    pub fn publish_image(&self, image: &T::Image) -> Result<(), ShmError> {
+        self.owner_only()?;
         let base = &self.view.base;
         let seq = base.word(H_SEQ);
         let s = seq.load(Ordering::Relaxed);
@@ -151,6 +153,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         bytes::store(base, IMAGE, image.as_bytes());
         seq.store(s + 2, Ordering::Release);
         base.store(S_HEARTBEAT_NS, now_ns());
+        Ok(())
     }
 
     /// A consistent copy of the variables: retries while the owner writes, never torn; an error
@@ -188,16 +191,18 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     /// Posts a write to the mailbox; refused up front for unknown names, read-only, input and
     /// status variables, wrong kinds, out-of-range values and over-long strings.
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, 0, value)
+        self.view.write_element(name, 0, value).map(drop)
     }
 
     /// Posts a write of one array element.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, element, value)
+        self.view.write_element(name, element, value).map(drop)
     }
 
     /// Applies the mailbox's requests to `gm` in order (owner only; 0 for readers). Returns
-    /// how many were taken. A request `set` refuses is counted, not applied.
+    /// how many were taken. A request that is refused is counted, not applied: the owner checks
+    /// again that the variable may be written from outside and that `set` accepts the value,
+    /// since any process that maps the segment can post anything.
     pub fn apply_mailbox(&mut self, gm: &mut T) -> usize {
         self.apply_mailbox_with(gm, |_, _| {})
     }
@@ -207,7 +212,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     pub fn apply_mailbox_with(
         &mut self,
         gm: &mut T,
-        mut audit: impl FnMut(&Request, &Result<(), SetError>),
+        mut audit: impl FnMut(&Request, &Result<(), Rejection>),
     ) -> usize {
         let Some(consumer) = self.consumer.as_mut() else {
             return 0;
@@ -215,12 +220,14 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         let base = self.view.base;
         let (mut ok, mut bad) = (0u64, 0u64);
         let n = consumer.drain(&base, &self.view.off, |r| {
-            let result = gm.set(r.index, r.element, r.value);
+            let result = writable::<T>(r.index)
+                .and_then(|()| gm.set(r.index, r.element, r.value).map_err(Rejection::Set));
             match result {
                 Ok(()) => ok += 1,
                 Err(_) => bad += 1,
             }
             audit(&r, &result);
+            result.is_ok()
         });
         if ok > 0 {
             base.word(S_MB_APPLIED).fetch_add(ok, Ordering::Relaxed);
@@ -261,8 +268,27 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     }
 }
 
+/// Whether variable `index` of `T` may be written from outside (its declaration, not the
+/// descriptor in the segment, which any process could have changed).
+fn writable<T: GlobalMemory>(index: usize) -> Result<(), Rejection> {
+    let Some(var) = T::VARIABLES.get(index) else {
+        return Err(Rejection::Set(plc_core::SetError::UnknownIndex { index }));
+    };
+    if var.writable_from_outside() {
+        return Ok(());
+    }
+    let reason = not_writable_reason(var.access == plc_core::Access::ReadOnly, var.direction);
+    Err(Rejection::NotWritable {
+        variable: var.name,
+        reason,
+    })
+}
+
 impl<T: GlobalMemory> Drop for SharedGlobalMemory<T> {
     fn drop(&mut self) {
-        self.set_run_state(RunState::Stopped);
+        // A fault stays visible to readers still attached: only a running owner stops.
+        if self.is_owner() && self.status().run_state != RunState::Faulted {
+            self.set_run_state(RunState::Stopped);
+        }
     }
 }

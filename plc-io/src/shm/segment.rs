@@ -4,13 +4,19 @@
 //! behind; both facts are handled here. Owner liveness is an exclusive `flock` on a lock file
 //! beside the segment: the kernel releases it when the owner dies, however it dies, and unlike
 //! a pid it cannot be reused by an unrelated process.
+//!
+//! The lock file is never deleted. Deleting it while holding the lock would let a second owner
+//! create and lock a new file at the same path while the first still holds the old one: two
+//! live owners. It also keeps the last generation of the name, so generations increase across
+//! clean restarts as they do across takeovers.
 
 use super::ShmError;
-use super::layout::{Base, H_GENERATION, H_MAGIC, MAGIC, MAGIC_REPLACED, S_PID};
+use super::layout::{Base, H_GENERATION, H_MAGIC, MAGIC, MAGIC_CLOSED, MAGIC_REPLACED, S_PID};
 use shared_memory::{Shmem, ShmemConf, ShmemError};
 use std::fs::{File, OpenOptions};
+use std::io::Read;
 use std::os::fd::AsRawFd;
-use std::os::unix::fs::OpenOptionsExt;
+use std::os::unix::fs::{FileExt, OpenOptionsExt};
 use std::path::PathBuf;
 
 /// Prefix of every segment under /dev/shm, so `plc list` finds ours and nothing else.
@@ -58,7 +64,10 @@ pub fn owner_alive(name: &str) -> bool {
 
 /// A mapped segment.
 pub struct Segment {
-    shmem: Shmem,
+    /// Held for its drop, which unmaps (and, for the owner, unlinks) the segment. Fields drop
+    /// in declaration order: the mapping before the lock, so no new owner can create the name
+    /// while ours is still linked.
+    _shmem: Shmem,
     base: Base,
     name: String,
     /// The owner's lock, held for the segment's life (`None` for readers).
@@ -68,9 +77,10 @@ pub struct Segment {
 impl Segment {
     /// Creates segment `name` of `size` bytes as its owner. A segment left behind by a dead
     /// owner is replaced (its readers are told so); one whose owner is alive is refused.
-    /// Returns the new segment and the generation of the one it replaced, if any.
-    pub fn create(name: &str, size: usize) -> Result<(Segment, Option<u64>), ShmError> {
-        let lock = OpenOptions::new()
+    /// Returns the new segment and its generation: one more than the last owner's of this
+    /// name, whether it stopped cleanly or died.
+    pub fn create(name: &str, size: usize) -> Result<(Segment, u64), ShmError> {
+        let mut lock = OpenOptions::new()
             .read(true)
             .write(true)
             .create(true)
@@ -90,16 +100,22 @@ impl Segment {
                 pid,
             });
         }
-        let mut previous = None;
+        let mut text = String::new();
+        let mut last = match lock.read_to_string(&mut text) {
+            Ok(_) => text.trim().parse::<u64>().unwrap_or(0),
+            Err(_) => 0,
+        };
         let shmem = match ShmemConf::new().size(size).os_id(os_id(name)).create() {
             Ok(s) => s,
             Err(ShmemError::MappingIdExists) => {
                 // We hold the lock, so whoever created this mapping is dead.
                 if let Ok(mut old) = ShmemConf::new().os_id(os_id(name)).open() {
-                    // SAFETY: the mapping is at least a page and page aligned.
-                    let base = unsafe { Base::new(old.as_ptr(), old.len()) };
-                    if old.len() >= 64 && base.load(H_MAGIC) == MAGIC {
-                        previous = Some(base.load(H_GENERATION));
+                    if old.len() >= 64 {
+                        // SAFETY: the mapping is at least 64 bytes and page aligned.
+                        let base = unsafe { Base::new(old.as_ptr(), old.len()) };
+                        if matches!(base.load(H_MAGIC), MAGIC | MAGIC_CLOSED) {
+                            last = last.max(base.load(H_GENERATION));
+                        }
                         base.store(H_MAGIC, MAGIC_REPLACED);
                     }
                     old.set_owner(true); // unlinked when dropped
@@ -112,17 +128,23 @@ impl Segment {
             }
             Err(e) => return Err(os_error(name, "cannot create the shared memory", e)),
         };
+        let generation = last + 1;
+        // Best effort: if the lock file cannot be written, only the monotonicity of
+        // generations across clean restarts is lost (takeovers still read the old segment's).
+        let _ = lock
+            .set_len(0)
+            .and_then(|()| lock.write_all_at(format!("{generation}\n").as_bytes(), 0));
         // SAFETY: the mapping is page aligned, `len` bytes long, and lives in `shmem`, which
         // the returned Segment owns together with `base`.
         let base = unsafe { Base::new(shmem.as_ptr(), shmem.len()) };
         Ok((
             Segment {
-                shmem,
+                _shmem: shmem,
                 base,
                 name: name.to_string(),
                 lock: Some(lock),
             },
-            previous,
+            generation,
         ))
     }
 
@@ -138,7 +160,7 @@ impl Segment {
         // SAFETY: as in `create`.
         let base = unsafe { Base::new(shmem.as_ptr(), shmem.len()) };
         Ok(Segment {
-            shmem,
+            _shmem: shmem,
             base,
             name: name.to_string(),
             lock: None,
@@ -164,10 +186,11 @@ impl Segment {
 impl Drop for Segment {
     fn drop(&mut self) {
         if self.lock.is_some() {
-            // The mapping is unlinked by `shmem`'s drop; the lock file goes with it.
-            let _ = std::fs::remove_file(lock_path(&self.name));
+            // Readers still mapping this segment must learn that nobody publishes into it or
+            // drains its mailbox any more, even once a new owner has created the name again.
+            // Then the fields drop: the mapping is unlinked, then the lock is released.
+            self.base.store(H_MAGIC, MAGIC_CLOSED);
         }
-        let _ = self.shmem.len();
     }
 }
 

@@ -114,36 +114,45 @@ pub struct Status {
     pub writes_rejected: u64,
     /// Mailbox slots reclaimed from writers that never committed.
     pub writes_reclaimed: u64,
-    /// Generation: increases when a new owner takes the segment over.
+    /// Mailbox requests discarded as damaged (a reclaimed writer stored into the slot late).
+    pub writes_discarded: u64,
+    /// Requests in the mailbox now: claimed by a writer, not yet taken by the owner.
+    pub writes_pending: u64,
+    /// Generation: increases with every new owner of the name (a restart or a takeover).
     pub generation: u64,
 }
 
-/// The heartbeat clock: CLOCK_MONOTONIC_COARSE, one clock for every process on the machine
-/// (so a reader can age an owner's heartbeat), never stepped by NTP or an operator setting
-/// the date (which would fake or hide a stall), and read from the vDSO in a few nanoseconds:
-/// the owner stamps it on every publish. Its resolution (a few ms) is far below the stall
-/// threshold.
+/// The heartbeat clock, CLOCK_MONOTONIC_COARSE: one clock for every process on the machine
+/// (in one time namespace), unlike `Instant`, whose values cannot be shared; unlike the wall
+/// clock it does not jump when the time is set, which would make a live owner look stalled or
+/// a stalled one alive. The coarse variant is read from the vDSO in a few nanoseconds (the
+/// owner stamps it on every publish); its resolution, a few milliseconds, is far below the
+/// stall threshold.
 pub(crate) fn now_ns() -> u64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
         tv_nsec: 0,
     };
-    // SAFETY: `ts` is a valid timespec for the call to fill; the clock id is a constant that
-    // Linux has provided since 2.6.32.
-    let rc = unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC_COARSE, &mut ts) };
-    if rc != 0 {
+    // SAFETY: clock_gettime writes one timespec into the valid one we pass.
+    if unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC_COARSE, &mut ts) } != 0 {
         return 0;
     }
-    ts.tv_sec as u64 * 1_000_000_000 + ts.tv_nsec as u64
+    (ts.tv_sec as u64)
+        .saturating_mul(1_000_000_000)
+        .saturating_add(ts.tv_nsec as u64)
 }
 
 impl Status {
+    pub(crate) fn read_run_state(base: &Base) -> RunState {
+        RunState::from_code(base.load(S_STATE))
+    }
+
     pub(crate) fn read(base: &Base, off: &Offsets) -> Status {
         let d = |o| Duration::from_nanos(base.load(o));
         let flags = base.load(S_BUS_FLAGS);
         Status {
             pid: base.load(S_PID),
-            run_state: RunState::from_code(base.load(S_STATE)),
+            run_state: Self::read_run_state(base),
             period: d(S_PERIOD_NS),
             cycle_count: base.load(S_CYCLES),
             last: d(S_LAST_NS),
@@ -161,6 +170,8 @@ impl Status {
             writes_applied: base.load(S_MB_APPLIED),
             writes_rejected: base.load(S_MB_REJECTED),
             writes_reclaimed: base.load(off.mb_reclaimed()),
+            writes_discarded: base.load(off.mb_discarded()),
+            writes_pending: super::mailbox::pending(base, off),
             generation: base.load(H_GENERATION),
         }
     }

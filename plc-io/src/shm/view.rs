@@ -4,9 +4,9 @@
 use super::codec;
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
-use super::mailbox::{self, PostError, Request};
+use super::mailbox::{self, Outcome, PostError, Request, Ticket};
 use super::segment::{self, Segment};
-use super::status::{OwnerState, Status};
+use super::status::{OwnerState, RunState, Status};
 use super::{ShmError, bytes};
 use plc_core::Value;
 use std::cell::Cell;
@@ -51,6 +51,9 @@ impl View {
         if magic == MAGIC_REPLACED {
             return Err(ShmError::Replaced(name));
         }
+        if magic == MAGIC_CLOSED {
+            return Err(closed(&base, name));
+        }
         if magic != MAGIC {
             return Err(ShmError::Format {
                 name,
@@ -64,26 +67,43 @@ impl View {
                 found: format!("format version {version}"),
             });
         }
-        let image_size = base.load(H_IMAGE_SIZE) as usize;
-        let off = Offsets::new(image_size);
-        let (d_off, d_len) = (
-            base.load(H_DESC_OFFSET) as usize,
-            base.load(H_DESC_LEN) as usize,
-        );
-        let needed = off.descriptor.max(d_off.saturating_add(d_len));
-        if base.len() < needed || d_off != off.descriptor {
+        // Every number below comes from another process: checked arithmetic only.
+        let header_image_size = base.load(H_IMAGE_SIZE);
+        let off = usize::try_from(header_image_size)
+            .ok()
+            .and_then(Offsets::checked)
+            .ok_or_else(|| ShmError::Corrupt {
+                name: name.clone(),
+                why: format!("its header gives an image size of {header_image_size} bytes"),
+            })?;
+        let image_size = off.image_size;
+        let (d_off, d_len) = (base.load(H_DESC_OFFSET), base.load(H_DESC_LEN));
+        let d_end = d_off.saturating_add(d_len);
+        let needed = usize::try_from(d_end)
+            .unwrap_or(usize::MAX)
+            .max(off.descriptor);
+        if base.len() < needed {
             return Err(ShmError::TooSmall {
                 name,
                 len: base.len(),
                 needed,
             });
         }
-        let mut json = vec![0u8; d_len];
-        bytes::load(&base, d_off, &mut json);
+        if d_off != off.descriptor as u64 {
+            return Err(ShmError::Corrupt {
+                name,
+                why: format!(
+                    "its header puts the descriptor at byte {d_off}, not {}",
+                    off.descriptor
+                ),
+            });
+        }
+        let mut json = vec![0u8; d_len as usize];
+        bytes::load(&base, off.descriptor, &mut json);
         let desc: LayoutDescriptor =
             serde_json::from_slice(&json).map_err(|e| ShmError::Corrupt {
                 name: name.clone(),
-                why: e.to_string(),
+                why: format!("its descriptor is not valid JSON: {e}"),
             })?;
         let hash = base.load(H_LAYOUT_HASH);
         if desc.computed_hash() != hash || desc.layout_hash != hash {
@@ -92,17 +112,19 @@ impl View {
                 why: "the descriptor does not match the layout hash".into(),
             });
         }
-        if desc.image_size != image_size
-            || desc
-                .variables
-                .iter()
-                .any(|v| v.offset + v.size > image_size)
-        {
+        if desc.image_size != image_size {
             return Err(ShmError::Corrupt {
                 name,
-                why: "a variable lies outside the image".into(),
+                why: format!(
+                    "the descriptor gives an image of {} bytes, the header {image_size}",
+                    desc.image_size
+                ),
             });
         }
+        desc.check_variables().map_err(|why| ShmError::Corrupt {
+            name: name.clone(),
+            why,
+        })?;
         Ok(View {
             generation: base.load(H_GENERATION),
             seg,
@@ -117,10 +139,13 @@ impl View {
         self.seg.name()
     }
 
-    /// Errors if the owner was replaced or is gone (liveness checked at most every 20 ms).
+    /// Errors if the owner stopped, was replaced or is gone (liveness checked at most every
+    /// 20 ms).
     pub fn check_owner(&self) -> Result<(), ShmError> {
-        if self.base.load(H_MAGIC) != MAGIC || self.base.load(H_GENERATION) != self.generation {
-            return Err(ShmError::Replaced(self.name().to_string()));
+        match self.base.load(H_MAGIC) {
+            MAGIC if self.base.load(H_GENERATION) == self.generation => {}
+            MAGIC_CLOSED => return Err(closed(&self.base, self.name().to_string())),
+            _ => return Err(ShmError::Replaced(self.name().to_string())),
         }
         if self.seg.is_owner() {
             return Ok(());
@@ -197,7 +222,12 @@ impl View {
     }
 
     /// Checks a write as the owner would and posts it to the mailbox.
-    pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+    pub fn write_element(
+        &self,
+        name: &str,
+        element: usize,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
         let index = self.var_index(name)?;
         let var = &self.desc.variables[index];
         if !var.writable_from_outside() {
@@ -220,6 +250,11 @@ impl View {
                 variable: var.name.clone(),
                 error,
             })?;
+        self.post(index, element, value)
+    }
+
+    /// Posts a request as it is (the checks are the caller's).
+    pub fn post(&self, index: usize, element: usize, value: Value) -> Result<Ticket, ShmError> {
         self.check_owner()?;
         let request = Request {
             index,
@@ -229,8 +264,15 @@ impl View {
         mailbox::post(&self.base, &self.off, &request).map_err(|e| match e {
             PostError::Full => ShmError::MailboxFull(self.name().to_string()),
             PostError::Reclaimed => ShmError::WriteReclaimed(self.name().to_string()),
-        })?;
-        Ok(())
+        })
+    }
+
+    pub fn outcome(&self, ticket: Ticket) -> Outcome {
+        mailbox::outcome(&self.base, &self.off, ticket)
+    }
+
+    pub fn mailbox_free(&self) -> usize {
+        mailbox::free(&self.base, &self.off)
     }
 
     pub fn status(&self) -> Status {
@@ -244,4 +286,10 @@ impl View {
         }
         self.status().owner_state(alive)
     }
+}
+
+/// The error of a segment whose owner stopped, saying whether it stopped because it faulted.
+fn closed(base: &Base, name: String) -> ShmError {
+    let faulted = Status::read_run_state(base) == RunState::Faulted;
+    ShmError::Closed { name, faulted }
 }
