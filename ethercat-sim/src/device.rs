@@ -230,8 +230,8 @@ impl Device {
     }
 
     /// DL status (0x0110) from the position in the line (EMULATOR-NOTES §6): link and
-    /// communication on port 0, and on port 1 unless this is the last device (whose port 1
-    /// loop is closed); ports 2 and 3 closed. 0x5A31 on a passing EK1100, 0x5613 at the end.
+    /// communication on port 0, and on port 1 unless this is the last device or the link to
+    /// the next one is lost (port 1 loop closed); ports 2 and 3 closed. 0x5A31 on a passing EK1100, 0x5613 at the end.
     pub(crate) fn set_dl_status(&mut self) {
         let port1 = self.position.port1_open();
         let low = self.esc.dl_status_pdi as u16 | 0x10 | if port1 { 0x20 } else { 0 };
@@ -327,9 +327,32 @@ impl Device {
     fn on_al_control(&mut self) {
         let control = self.u16_at(reg::AL_CONTROL);
         let refused = self.faults.refusal((control & 0x0F) as u8);
-        let (status, code) = al::on_control(self.al_status(), control, refused);
+        let (status, code) =
+            al::on_control(self.al_status(), control, refused, self.faults.latched);
+        self.faults.latched = (status & al::ERROR != 0 && code != 0).then_some(code);
         self.set_u16(reg::AL_STATUS, status);
         self.set_u16(reg::AL_STATUS_CODE, code);
+    }
+
+    /// The device restarts, as after losing its power: every register and the process RAM
+    /// back to their power-on values (INIT, station address 0, SyncManagers and FMMUs off,
+    /// alias reloaded from the EEPROM), the EEPROM contents kept. Injected faults stay.
+    pub(crate) fn power_on_reset(&mut self) {
+        let fresh = Device::from_sii(self.eeprom.words.clone(), self.esc);
+        self.mem = fresh.mem;
+        self.eeprom = fresh.eeprom;
+        self.faults.latched = None;
+        self.set_dl_status();
+    }
+
+    /// The SyncManager watchdog expired (no process data for longer than its time, e.g. the
+    /// MainDevice stopped cycling): a terminal with a microcontroller drops to SAFE-OP,
+    /// switches its outputs off, and reports AL status code 0x001B until acknowledged.
+    pub(crate) fn trip_watchdog(&mut self) {
+        let state = self.al_state().min(al::SAFE_OP) as u16;
+        self.set_u16(reg::AL_STATUS, state | al::ERROR);
+        self.set_u16(reg::AL_STATUS_CODE, al::SYNC_MANAGER_WATCHDOG);
+        self.faults.latched = Some(al::SYNC_MANAGER_WATCHDOG);
     }
 
     fn on_sii_command(&mut self, now: u64) {

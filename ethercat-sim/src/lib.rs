@@ -59,8 +59,13 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 //!
+//! Faults for tests ([`SimBus`]): a lost link (the device and the ring behind it stop
+//! answering), a power cycle (back in INIT, unaddressed), a tripped SyncManager watchdog
+//! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change.
+//!
 //! Not simulated: mailboxes and CoE (so no EL3004), SYNC0/1 signals, bit-granular FMMUs,
-//! watchdogs, and EEPROM contents the captures do not hold (see `data/README.md`).
+//! watchdog timing (a test trips the watchdog), and EEPROM contents the captures do not hold
+//! (see `data/README.md`).
 #![deny(missing_docs)]
 
 pub mod al;
