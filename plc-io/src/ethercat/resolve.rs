@@ -82,6 +82,11 @@ pub fn resolve<T: GlobalMemory>(layout: &BusLayout) -> Result<Vec<Binding>, Reso
 pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>, ResolveError> {
     let mut bindings: Vec<Binding> = Vec::new();
     let mut problems = Vec::new();
+    // Every output variable linked to an output entry, whether or not its link has other
+    // problems (its type):
+    // a second writer is reported even when the first one is wrong in another way too, so
+    // the user sees all problems of one run at once.
+    let mut writers: Vec<(usize, usize, &'static str)> = Vec::new();
     for (index, v) in vars.iter().enumerate() {
         let Some(link) = v.link else { continue };
         let mut problem = |message: String| {
@@ -194,17 +199,22 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
                 to
             ));
         }
-        if entry.direction == PdoDirection::Output
-            && let Some(other) = bindings
+        // A variable declared for the other direction does not write the entry: its problem
+        // is the direction, not a second writer.
+        if entry.direction == PdoDirection::Output && dir_ok {
+            if let Some(&(_, _, other)) = writers
                 .iter()
-                .find(|b| b.entry.device == entry.device && b.entry.entry == entry.entry)
-        {
-            ok = false;
-            problem(format!(
-                "`{}` is written to this output entry already: an output has one writer; \
-                 link one variable and copy or bit-map the others from it in the program",
-                other.var_name
-            ));
+                .find(|(d, e, _)| *d == entry.device && *e == entry.entry)
+            {
+                ok = false;
+                problem(format!(
+                    "`{other}` is written to this output entry already: an output has one \
+                     writer; link one variable and copy or bit-map the others from it in the \
+                     program"
+                ));
+            } else {
+                writers.push((entry.device, entry.entry, v.name));
+            }
         }
         if ok {
             bindings.push(Binding {
@@ -379,6 +389,38 @@ mod tests {
         ] {
             assert!(text.contains(needle), "missing {needle:?} in\n{text}");
         }
+    }
+
+    #[test]
+    fn a_second_writer_is_reported_even_when_the_first_has_a_type_error() {
+        let vars = [
+            var(
+                "too_wide",
+                IecType::Udint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+            var(
+                "second",
+                IecType::Uint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+        ];
+        let err = resolve_vars(&vars, &layout()).unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), 2, "{text}");
+        assert!(
+            text.contains("`too_wide` (link `ethercat.dq.word`): the variable is UDINT"),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "`second` (link `ethercat.dq.word`): `too_wide` is written to this output entry \
+                 already"
+            ),
+            "{text}"
+        );
     }
 
     #[test]
