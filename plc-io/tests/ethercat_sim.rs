@@ -208,27 +208,108 @@ fn a_wrong_terminal_is_an_identity_error_naming_position_expected_and_found() {
     assert!(text.contains("position 3: expected `dq4`"), "{text}");
 }
 
+/// Only the EL1004 is linked, so descriptions with fewer or more devices still resolve.
+#[derive(GlobalMemory, Debug, Clone)]
+struct DiOnly {
+    #[plc(link = "ethercat.di.input1", direction = "input")]
+    in1: bool,
+}
+
 #[test]
-fn a_missing_or_extra_subdevice_is_an_identity_error() {
+fn a_subdevice_missing_from_the_wire_is_an_identity_error() {
+    // The EL2889 is not plugged in.
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el1004(), Device::el2004()]);
+    let mut backend =
+        EtherCatBackend::<DiOnly>::new(description(), transport(&bus), options()).unwrap();
+    let err = backend.start().unwrap_err();
+    assert!(
+        matches!(err, EtherCatError::Identity(ref p) if p.len() == 1),
+        "{err}"
+    );
+    let text = err.to_string();
+    assert!(
+        text.contains(
+            "position 3: expected `dq16` (vendor 0x2, product 0x0b493052, any revision), found \
+             no SubDevice (the bus has 3)"
+        ),
+        "{text}"
+    );
+    assert_eq!(
+        bus.al_state(DI),
+        ethercat_sim::al::PRE_OP,
+        "nothing went to SAFE-OP"
+    );
+}
+
+#[test]
+fn a_subdevice_on_the_wire_the_description_lacks_is_an_identity_error() {
     let bus = sim();
     let mut config = description();
     config.devices.pop();
-    let mut backend = EtherCatBackend::<Io>::new(config, transport(&bus), options());
-    // `dq16` is gone from the description, so `Io`'s links to it do not resolve.
-    assert!(backend.is_err());
-    let config = BusConfig {
-        devices: vec![
-            devices::ek1100("coupler"),
-            devices::el1004("di"),
-            devices::el2004("dq4"),
-            devices::el2889("dq16"),
-            devices::el2004("more"),
-        ],
-    };
-    backend = EtherCatBackend::<Io>::new(config, transport(&bus), options());
-    let err = backend.unwrap().start().unwrap_err().to_string();
-    assert!(err.contains("position 4: expected `more`"), "{err}");
-    assert!(err.contains("found no SubDevice"), "{err}");
+    let mut backend = EtherCatBackend::<DiOnly>::new(config, transport(&bus), options()).unwrap();
+    let err = backend.start().unwrap_err();
+    assert!(
+        matches!(err, EtherCatError::Identity(ref p) if p.len() == 1),
+        "{err}"
+    );
+    let text = err.to_string();
+    assert!(
+        text.contains(
+            "position 3: found EL2889 (vendor 0x2, product 0x0b493052), which the description \
+             does not list: add it"
+        ),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_revision_other_than_the_described_one_is_an_identity_error() {
+    let bus = sim();
+    let mut config = description();
+    config.devices[DQ4].identity.revision = Some(0x0011_0000);
+    let mut backend =
+        EtherCatBackend::<Io>::new(config.clone(), transport(&bus), options()).unwrap();
+    let text = backend.start().unwrap_err().to_string();
+    assert!(
+        text.contains(
+            "position 2: expected `dq4` (vendor 0x2, product 0x07d43052, revision 0x00110000), \
+             found EL2004 (vendor 0x2, product 0x07d43052, revision 0x00100000)"
+        ),
+        "{text}"
+    );
+    // The revision the terminal has is accepted.
+    config.devices[DQ4].identity.revision = Some(0x0010_0000);
+    let bus = sim();
+    started::<Io>(&bus, config).stop();
+}
+
+#[test]
+fn process_data_beyond_the_max_pdi_cap_is_refused_before_the_bus_is_touched() {
+    let bus = sim();
+    let mut config = description();
+    // 129 LWORD inputs: 1032 bytes, beyond MAX_PDI (1024) with the EL2004 and EL2889 bytes.
+    config.devices[DI].entries = (0..129)
+        .map(|i| {
+            plc_io::ethercat::PdoEntry::new(
+                &format!("word{i}"),
+                PdoDirection::Input,
+                64,
+                plc_core::IecType::Lword,
+            )
+        })
+        .collect();
+    let err = EtherCatBackend::<DiOnly>::new(config, transport(&bus), options()).unwrap_err();
+    assert!(matches!(err, EtherCatError::Config(_)), "{err}");
+    let text = err.to_string();
+    assert!(
+        text.contains(&format!(
+            "the process data of this bus takes 1035 bytes, more than the {} plc-io is built \
+             for (ethercrab's MAX_PDI): raise `plc_io::ethercat::MAX_PDI`",
+            plc_io::ethercat::MAX_PDI
+        )),
+        "{text}"
+    );
+    assert_eq!(bus.frames(), 0, "nothing was sent");
 }
 
 #[test]
