@@ -303,7 +303,8 @@ impl Running {
 /// process data, one `tx_rx`, and, when the working counter is right and every SubDevice is in
 /// OP, the linked inputs into the struct. Otherwise the inputs are flagged invalid and set as
 /// [`InputsOnFault`] says, never left to look fresh. `fault` zeroes the outputs and drops to
-/// SAFE-OP (a panicking program); `stop` zeroes the outputs and returns to INIT.
+/// SAFE-OP (a panicking program), where a later `stop` leaves the bus; otherwise `stop`
+/// zeroes the outputs and returns to INIT.
 ///
 /// Recovery: while the bus is faulty, `exchange` looks at each SubDevice every
 /// [`Options::recovery_interval`] and brings back to OP the ones that answer again but are
@@ -616,27 +617,32 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         self.status.state = BusState::SafeOp;
     }
 
-    /// Outputs to zero, the bus back to INIT, the transport closed. Safe to call twice.
+    /// Outputs to zero, the bus back to INIT, the transport closed. After [`fault`](Self::fault)
+    /// the SubDevices stay in SAFE-OP (outputs off and zero, inputs still readable by a
+    /// diagnostic tool): a program that panicked leaves the bus in its safe state rather
+    /// than looking like a clean shutdown. Safe to call twice.
     pub fn stop(&mut self) {
         let Some(mut running) = self.running.take() else {
             return;
         };
         let md = &running.maindevice;
-        let safe = match running.group.take() {
+        match running.group.take() {
             Some(Stage::Op(g)) => {
                 zero_outputs(&g, md);
                 let _ = block_on(g.tx_rx(md));
-                block_on(g.into_safe_op(md)).ok()
+                if let Ok(g) = block_on(g.into_safe_op(md)) {
+                    zero_outputs(&g, md);
+                    let _ = block_on(g.tx_rx(md));
+                    if let Ok(g) = block_on(g.into_pre_op(md)) {
+                        let _ = block_on(g.into_init(md));
+                    }
+                }
             }
-            Some(Stage::SafeOp(g)) => Some(g),
-            None => None,
-        };
-        if let Some(g) = safe {
-            zero_outputs(&g, md);
-            let _ = block_on(g.tx_rx(md));
-            if let Ok(g) = block_on(g.into_pre_op(md)) {
-                let _ = block_on(g.into_init(md));
+            Some(Stage::SafeOp(g)) => {
+                zero_outputs(&g, md);
+                let _ = block_on(g.tx_rx(md));
             }
+            None => {}
         }
         running.release();
         self.status = BusStatus {
