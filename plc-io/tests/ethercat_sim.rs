@@ -485,6 +485,35 @@ fn a_subdevice_that_lost_power_is_readdressed_reconfigured_and_back_in_op() {
 }
 
 #[test]
+fn a_different_terminal_restarting_in_the_slot_is_not_configured_and_is_reported() {
+    let bus = sim();
+    let mut backend = started::<Io>(&bus, description());
+    let mut gm = Io::default();
+    exchange_until_valid(&mut backend, &mut gm);
+    // The EL2004 is swapped for an EL2828 while the program runs.
+    bus.set_responding(DQ4, false);
+    bus.power_cycle(DQ4);
+    bus.set_identity(DQ4, 2, 0x0B0C_3052, 0x0011_0000);
+    bus.set_responding(DQ4, true);
+    let start = Instant::now();
+    while start.elapsed() < Duration::from_millis(300) {
+        let status = backend.exchange(&mut gm);
+        assert!(status.bus_fault && !status.inputs_valid, "{status:?}");
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let problems = backend.problems().join("\n");
+    assert!(
+        problems.contains(
+            "position 2 (`dq4`, EL2004) is in INIT after a restart, as another device (vendor 0x2, product \
+             0x0b0c3052; it was vendor 0x2, product 0x07d43052)"
+        ),
+        "{problems}"
+    );
+    assert_eq!(bus.al_state(DQ4), ethercat_sim::al::INIT);
+    backend.stop();
+}
+
+#[test]
 fn a_tripped_watchdog_is_acknowledged_and_the_subdevice_returns_to_op() {
     let bus = sim();
     let mut backend = started::<Io>(&bus, description());

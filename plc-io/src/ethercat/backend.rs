@@ -510,6 +510,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
                 pos as u16,
                 sd.configured_address(),
                 sd.name(),
+                (sd.identity().vendor_id, sd.identity().product_id),
             ))
             .map_err(bus("reading back the SyncManager and FMMU settings"))?;
             configured.push(c);
@@ -561,7 +562,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
                 ]);
             } else if due && in_op_stage {
                 running.last_recovery = Some(std::time::Instant::now());
-                let problems = recover(running, &self.layout.names);
+                let problems = recover(running, &self.layout.names, self.options.timeouts.eeprom);
                 self.set_problems(problems);
             }
         }
@@ -703,7 +704,11 @@ impl Drop for JoinOnDrop {
 }
 
 /// One recovery attempt on every SubDevice (see `recovery`); the problems that remain.
-fn recover(running: &Running, names: &[String]) -> Vec<String> {
+fn recover(
+    running: &Running,
+    names: &[String],
+    eeprom_timeout: std::time::Duration,
+) -> Vec<String> {
     let md = &running.maindevice;
     let mut problems = Vec::new();
     let mut cut_off = false;
@@ -714,7 +719,7 @@ fn recover(running: &Running, names: &[String]) -> Vec<String> {
             names.get(pos).map_or("?", String::as_str),
             dev.model
         );
-        match block_on(recovery::attempt(md, dev)) {
+        match block_on(recovery::attempt(md, dev, eeprom_timeout)) {
             Outcome::Op => {}
             Outcome::NotOp(text) => problems.push(format!(
                 "{what} is {text}; inputs stay invalid until it is back in OP"
@@ -724,10 +729,14 @@ fn recover(running: &Running, names: &[String]) -> Vec<String> {
                 // it is silent too: name the first one, where the cable or power is to check.
                 if !cut_off {
                     cut_off = true;
+                    let behind = if pos + 1 < running.configured.len() {
+                        " (the SubDevices behind it are cut off too)"
+                    } else {
+                        ""
+                    };
                     problems.push(format!(
-                        "{what} does not answer: check its power and the cable into it (the \
-                         SubDevices behind it are cut off too); it is brought back to OP when \
-                         it answers again"
+                        "{what} does not answer: check its power and the cable into it{behind}; \
+                         it is brought back to OP when it answers again"
                     ));
                 }
             }

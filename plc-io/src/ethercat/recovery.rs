@@ -18,8 +18,9 @@
 //! start-up, and distributed-clock settings (the backend runs without DC). A device that
 //! cannot be brought back (BOOT, a refused request) stays reported, with its AL status code.
 
-use ethercrab::error::Error as CrabError;
+use ethercrab::error::{Error as CrabError, TimeoutError};
 use ethercrab::{AlStatusCode, Command, MainDevice};
+use std::time::{Duration, Instant};
 
 /// AL control / status register and its bits (ETG.1000.4).
 const AL_CONTROL: u16 = 0x0120;
@@ -43,6 +44,8 @@ pub(super) struct Configured {
     pub(super) address: u16,
     /// Its name as ethercrab read it from the EEPROM (the model, e.g. "EL2004").
     pub(super) model: String,
+    /// Vendor and product ethercrab read at start-up, checked again after a restart.
+    identity: (u32, u32),
     /// Enabled SyncManagers: register address and the 8 bytes ethercrab wrote.
     sync_managers: Vec<(u16, [u8; 8])>,
     /// Enabled FMMUs: register address and their 16 bytes.
@@ -56,6 +59,7 @@ impl Configured {
         position: u16,
         address: u16,
         model: &str,
+        identity: (u32, u32),
     ) -> Result<Self, CrabError> {
         let fmmu_count: u8 = Command::fprd(address, 0x0004).receive(md).await?;
         let sm_count: u8 = Command::fprd(address, 0x0005).receive(md).await?;
@@ -81,6 +85,7 @@ impl Configured {
             position,
             address,
             model: model.to_owned(),
+            identity,
             sync_managers,
             fmmus,
         })
@@ -114,7 +119,12 @@ pub(super) enum Outcome {
 }
 
 /// One attempt to bring the SubDevice `dev` back to OP (see the module documentation).
-pub(super) async fn attempt(md: &MainDevice<'_>, dev: &Configured) -> Outcome {
+/// `eeprom_timeout` bounds the EEPROM reads that check a restarted device's identity.
+pub(super) async fn attempt(
+    md: &MainDevice<'_>,
+    dev: &Configured,
+    eeprom_timeout: Duration,
+) -> Outcome {
     let mut status = match al_status(md, dev.address).await {
         Ok(s) => s,
         Err(_) => match readdress(md, dev).await {
@@ -150,6 +160,20 @@ pub(super) async fn attempt(md: &MainDevice<'_>, dev: &Configured) -> Outcome {
                 state | ERROR_ACK
             }
             (1, None) => {
+                // A restarted slot may hold another terminal now: never give it the old
+                // one's settings.
+                match sii_identity(md, dev.address, eeprom_timeout).await {
+                    Ok(found) if found == dev.identity => {}
+                    Ok((vendor, product)) => {
+                        return Outcome::NotOp(format!(
+                            "in INIT after a restart, as another device (vendor {vendor:#x}, product \
+                             {product:#010x}; it was vendor {:#x}, product {:#010x}): plc-io does \
+                             not configure a replaced device while running: restart the program",
+                            dev.identity.0, dev.identity.1
+                        ));
+                    }
+                    Err(_) => break,
+                }
                 if dev.restore(md).await.is_err() {
                     break;
                 }
@@ -205,6 +229,54 @@ pub(super) async fn attempt(md: &MainDevice<'_>, dev: &Configured) -> Outcome {
         text.push(')');
     }
     Outcome::NotOp(text)
+}
+
+/// Vendor and product from SII words 8-11, read through the ESC's EEPROM interface as
+/// ethercrab does at start-up (read command, wait while busy, read the data register), each
+/// read within `limit` (ethercrab's EEPROM timeout).
+async fn sii_identity(
+    md: &MainDevice<'_>,
+    address: u16,
+    limit: Duration,
+) -> Result<(u32, u32), CrabError> {
+    let word = |b: &[u8]| u32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+    let (first, eight) = sii_read(md, address, 0x0008, limit).await?;
+    if eight {
+        return Ok((word(&first[..4]), word(&first[4..])));
+    }
+    // An ESC with 4-byte reads: the product is two words further on.
+    let (second, _) = sii_read(md, address, 0x000A, limit).await?;
+    Ok((word(&first[..4]), word(&second[..4])))
+}
+
+/// One EEPROM read at word `at`: the 8 data bytes and whether all 8 are valid (control bit 6).
+async fn sii_read(
+    md: &MainDevice<'_>,
+    address: u16,
+    at: u16,
+    limit: Duration,
+) -> Result<([u8; 8], bool), CrabError> {
+    const SII_CONTROL: u16 = 0x0502;
+    const SII_DATA: u16 = 0x0508;
+    const BUSY: u16 = 0x8000;
+    const EIGHT_BYTE_READS: u16 = 0x0040;
+    let [lo, hi] = at.to_le_bytes();
+    // Read command (bit 8) with the word address.
+    Command::fpwr(address, SII_CONTROL)
+        .send(md, [0x00u8, 0x01, lo, hi, 0x00, 0x00])
+        .await?;
+    let started = Instant::now();
+    let status = loop {
+        let status: u16 = Command::fprd(address, SII_CONTROL).receive(md).await?;
+        if status & BUSY == 0 {
+            break status;
+        }
+        if started.elapsed() > limit {
+            return Err(CrabError::Timeout(TimeoutError::Eeprom));
+        }
+    };
+    let data: [u8; 8] = Command::fprd(address, SII_DATA).receive(md).await?;
+    Ok((data, status & EIGHT_BYTE_READS != 0))
 }
 
 async fn al_status(md: &MainDevice<'_>, address: u16) -> Result<u16, CrabError> {
