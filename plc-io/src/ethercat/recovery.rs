@@ -8,9 +8,11 @@
 //! - SAFE-OP with the error bit and AL status code 0x001B (its SyncManager watchdog tripped
 //!   while no process data arrived): acknowledge, then request OP;
 //! - INIT with station address 0 (it lost power): every register is back at its power-on
-//!   value, so give it its station address again (APWR at its ring position), write back the
-//!   SyncManagers and FMMUs ethercrab had configured (read from the device at start-up), and
-//!   step it through PRE-OP and SAFE-OP to OP.
+//!   value, so give it its station address again (APWR at its ring position), check that its
+//!   EEPROM still holds the vendor and product found at start-up (a terminal swapped in is
+//!   reported, never given the old one's settings), write back the SyncManagers and FMMUs
+//!   ethercrab had configured (read from the device at start-up), and step it through PRE-OP
+//!   and SAFE-OP to OP.
 //!
 //! Each attempt sends a few single datagrams per device and never waits for a slow
 //! transition: a device with a microcontroller that takes a while to change state is picked
