@@ -614,3 +614,39 @@ fn the_fault_hook_zeroes_outputs_and_drops_to_safe_op() {
     backend.stop();
     let _ = COUPLER;
 }
+
+#[derive(GlobalMemory, Debug, Clone)]
+struct Analog {
+    #[plc(link = "ethercat.ai.ch2_value", direction = "input")]
+    ch2: i16,
+    /// INT widens to REAL (seed 001).
+    #[plc(link = "ethercat.ai.ch2_value", direction = "input")]
+    ch2_real: f32,
+    #[plc(link = "ethercat.ai.ch2_underrange", direction = "input")]
+    ch2_under: bool,
+    #[plc(link = "ethercat.ai.ch4_value", direction = "input")]
+    ch4: i16,
+}
+
+#[test]
+fn el3004_analog_values_reach_int_and_real_variables_through_its_coe_configured_pdos() {
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004()]);
+    let config = BusConfig {
+        devices: vec![devices::ek1100("coupler"), devices::el3004("ai")],
+    };
+    let mut backend = started::<Analog>(&bus, config);
+    let mut inputs = [0u8; 16];
+    inputs[4] = 0b0000_0001; // channel 2 underrange
+    inputs[6..8].copy_from_slice(&(-1234i16).to_le_bytes());
+    inputs[14..16].copy_from_slice(&0x7FFFi16.to_le_bytes());
+    bus.set_inputs(1, &inputs);
+    let mut gm = Analog::default();
+    for _ in 0..2 {
+        assert!(backend.exchange(&mut gm).inputs_valid);
+    }
+    assert_eq!(
+        (gm.ch2, gm.ch2_real, gm.ch2_under, gm.ch4),
+        (-1234, -1234.0, true, 0x7FFF)
+    );
+    backend.stop();
+}
