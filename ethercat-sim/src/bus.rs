@@ -75,6 +75,7 @@ impl SimBus {
                 index,
                 count,
                 clock_offset: 0x1580_0000 + CLOCK_SPREAD_NS * ((index as u64 * 5) % 3),
+                next_link_lost: false,
             };
             d.set_dl_status();
         }
@@ -196,11 +197,46 @@ impl SimBus {
         self.with(pos, |d| d.al_status_code())
     }
 
-    /// Makes the device at `pos` stop answering: it neither processes datagrams nor adds to
-    /// working counters, while frames still pass it (a terminal that lost its E-bus power
-    /// but still forwards). `true` brings it back.
+    /// Makes the device at `pos` stop answering as a real one does: the link into its port 0
+    /// goes down (the device lost power, or its cable was pulled), so the device before it
+    /// closes its port 1 (DL status shows the lost link) and frames turn back there. Neither
+    /// this device nor any device behind it sees a frame: they do not act on any datagram,
+    /// do not count working counters and do not increment auto-increment addresses (APRD
+    /// and FPRD to them get working counter 0, a BRD counts only the devices before). With
+    /// `pos` 0 no device answers. `true` restores the link; the devices kept their registers,
+    /// as after a pulled and re-plugged cable (add [`power_cycle`](Self::power_cycle) for a
+    /// device that lost its power).
     pub fn set_responding(&self, pos: usize, responding: bool) {
-        self.with(pos, |d| d.faults.silent = !responding)
+        let mut ring = self.ring();
+        let n = ring.devices.len();
+        assert!(pos < n, "no SubDevice at position {pos}: the bus has {n}");
+        ring.devices[pos].faults.link_lost = !responding;
+        for i in 0..n {
+            let lost = ring.devices.get(i + 1).is_some_and(|d| d.faults.link_lost);
+            let d = &mut ring.devices[i];
+            d.position.next_link_lost = lost;
+            d.set_dl_status();
+        }
+    }
+
+    /// Restarts the device at `pos` as after a loss of power: its registers and process
+    /// RAM return to their power-on values (AL state INIT, station address 0, SyncManagers
+    /// and FMMUs off, outputs off, station alias reloaded), its EEPROM keeps its contents.
+    /// A MainDevice must address and configure it again. Call it while the device is off the
+    /// ring ([`set_responding`](Self::set_responding) `false`) to model an outage, or on its
+    /// own for a short power dip.
+    pub fn power_cycle(&self, pos: usize) {
+        self.with(pos, |d| d.power_on_reset())
+    }
+
+    /// The SyncManager watchdog of the device at `pos` expires, as when process data stopped
+    /// arriving for longer than its watchdog time (100 ms by default on Beckhoff terminals):
+    /// the device drops to SAFE-OP (or stays lower), switches its outputs off and reports AL
+    /// status 0x0014 with AL status code 0x001B ([`al::SYNC_MANAGER_WATCHDOG`]). It ignores
+    /// state requests until one carries the error-acknowledge bit (AL control bit 4). The
+    /// simulator has no clock of its own to trip it: a test injects it.
+    pub fn trip_watchdog(&self, pos: usize) {
+        self.with(pos, |d| d.trip_watchdog())
     }
 
     /// Changes the identity the device at `pos` reports from its EEPROM (a different
@@ -270,8 +306,10 @@ fn process_datagram(devices: &mut [Device], d: &mut Datagram<'_>, now: u64) {
     let ado = d.ado as usize;
     let len = d.data.len();
     for dev in devices.iter_mut() {
-        if dev.faults.silent {
-            continue;
+        if dev.faults.link_lost {
+            // The device before closed its port 1: the frame turns back there, and this
+            // device and all behind it never see it.
+            break;
         }
         match d.command {
             Command::Aprd | Command::Apwr | Command::Aprw => {
@@ -442,6 +480,123 @@ mod tests {
         bus.process_frame(&frame(0x02, 0, 0x0103, &[0x01])).unwrap(); // APWR DL control byte 3
         let (data, wkc, _) = answer(&bus.process_frame(&fprd).unwrap(), 2);
         assert_eq!((data, wkc), (vec![0xBC, 0x0A], 1));
+    }
+
+    #[test]
+    fn a_device_that_stops_answering_takes_the_ring_behind_it_away_for_every_addressing_mode() {
+        let bus = SimBus::new(vec![Device::ek1100(), Device::el2004(), Device::el2889()]);
+        for i in 0..3u16 {
+            let apwr = frame(
+                0x02,
+                0u16.wrapping_sub(i),
+                0x0010,
+                &(0x1000 + i).to_le_bytes(),
+            );
+            bus.process_frame(&apwr).unwrap();
+        }
+        bus.set_responding(1, false);
+        // APRD of position 1 (the silent device) and position 2 (behind it): nobody answers,
+        // in particular the EL2889 does not answer as position 1; only the EK1100 increments.
+        for (adp, pos) in [(0xFFFF, 1), (0xFFFE, 2)] {
+            let reply = bus
+                .process_frame(&frame(0x01, adp, 0x0010, &[0, 0]))
+                .unwrap();
+            assert_eq!(
+                answer(&reply, 2),
+                (vec![0, 0], 0, adp.wrapping_add(1)),
+                "APRD {pos}"
+            );
+        }
+        let fprd = |station: u16| {
+            answer(
+                &bus.process_frame(&frame(0x04, station, 0x0010, &[0, 0]))
+                    .unwrap(),
+                2,
+            )
+        };
+        assert_eq!(fprd(0x1000), (vec![0x00, 0x10], 1, 0x1000));
+        assert_eq!(fprd(0x1001).1, 0, "FPRD of the silent device");
+        assert_eq!(fprd(0x1002).1, 0, "FPRD of the device behind it");
+        let brd = bus.process_frame(&frame(0x07, 0, 0x0000, &[0])).unwrap();
+        assert_eq!(
+            answer(&brd, 1),
+            (vec![0x11], 1, 1),
+            "BRD counts the EK1100 only"
+        );
+        // The EK1100 sees the lost link on its port 1 (DL status bit 5 clear, loop closed).
+        assert_eq!(fprd_u16(&bus, 0x1000, 0x0110) & 0x0020, 0);
+        bus.set_responding(1, true);
+        assert_eq!(fprd(0x1002).1, 1);
+        assert_eq!(fprd_u16(&bus, 0x1000, 0x0110), 0x5A31);
+    }
+
+    fn fprd_u16(bus: &SimBus, station: u16, ado: u16) -> u16 {
+        let (data, _, _) = answer(
+            &bus.process_frame(&frame(0x04, station, ado, &[0, 0]))
+                .unwrap(),
+            2,
+        );
+        u16::from_le_bytes([data[0], data[1]])
+    }
+
+    #[test]
+    fn a_power_cycled_device_is_back_in_init_with_its_eeprom_but_no_address() {
+        let mut el2004 = Device::el2004();
+        el2004.eeprom_words_mut()[4] = 0x0042; // alias, reloaded at power-on
+        let bus = SimBus::new(vec![Device::ek1100(), el2004]);
+        bus.process_frame(&frame(0x02, 0xFFFF, 0x0010, &[0x01, 0x10]))
+            .unwrap();
+        bus.process_frame(&frame(
+            0x05,
+            0x1001,
+            0x0800,
+            &[0x00, 0x0F, 1, 0, 0x44, 0, 1, 0],
+        ))
+        .unwrap();
+        bus.process_frame(&frame(0x05, 0x1001, 0x0120, &[0x08, 0]))
+            .unwrap();
+        bus.set_inputs(1, &[0]);
+        assert_eq!(bus.al_state(1), al::OP);
+        bus.power_cycle(1);
+        let d = bus.device(1);
+        assert_eq!((d.al_status(), d.station_address()), (0x0001, 0));
+        let mut sm0 = [0xFFu8; 8];
+        d.register(0x0800, &mut sm0);
+        assert_eq!(sm0, [0; 8]);
+        assert_eq!(d.sii()[4], 0x0042);
+        let mut alias = [0u8; 2];
+        d.register(0x0012, &mut alias);
+        assert_eq!(alias, [0x42, 0]);
+        assert_eq!(fprd_u16(&bus, 0x1001, 0x0130), 0, "the old address is gone");
+    }
+
+    #[test]
+    fn a_tripped_watchdog_holds_safe_op_with_code_0x001b_until_acknowledged() {
+        let bus = SimBus::new(vec![Device::el2004()]);
+        bus.process_frame(&frame(0x02, 0, 0x0010, &[0x00, 0x10]))
+            .unwrap();
+        bus.process_frame(&frame(0x05, 0x1000, 0x0120, &[0x08, 0]))
+            .unwrap();
+        bus.trip_watchdog(0);
+        assert_eq!(
+            (bus.device(0).al_status(), bus.al_status_code(0)),
+            (0x0014, 0x001B)
+        );
+        bus.process_frame(&frame(0x05, 0x1000, 0x0120, &[0x08, 0]))
+            .unwrap();
+        assert_eq!(
+            bus.device(0).al_status(),
+            0x0014,
+            "OP without acknowledge is ignored"
+        );
+        bus.process_frame(&frame(0x05, 0x1000, 0x0120, &[0x14, 0]))
+            .unwrap();
+        bus.process_frame(&frame(0x05, 0x1000, 0x0120, &[0x08, 0]))
+            .unwrap();
+        assert_eq!(
+            (bus.device(0).al_status(), bus.al_status_code(0)),
+            (0x0008, 0)
+        );
     }
 
     #[test]

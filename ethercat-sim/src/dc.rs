@@ -19,12 +19,14 @@ pub(crate) struct Position {
     pub(crate) count: usize,
     /// Local clock minus bus time: real clocks start at power-on, not together.
     pub(crate) clock_offset: u64,
+    /// The link to the next device is down, so port 1 has closed its loop.
+    pub(crate) next_link_lost: bool,
 }
 
 impl Position {
     /// Whether port 1 leads to another device (every device but the last, in a line).
     pub(crate) fn port1_open(&self) -> bool {
-        self.index + 1 < self.count
+        self.index + 1 < self.count && !self.next_link_lost
     }
 
     /// Local time when a frame sent at bus time `t` reaches port 0.
@@ -83,6 +85,7 @@ mod tests {
                 index,
                 count: 3,
                 clock_offset: 77,
+                next_link_lost: false,
             };
             let (ports, _) = latch(&p, 1000);
             ports[1].map_or(0, |p1| p1 - ports[0].unwrap_or(0))

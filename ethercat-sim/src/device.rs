@@ -2,6 +2,7 @@
 //! happens when a datagram reads or writes it, and the models of real Beckhoff terminals.
 
 use crate::al;
+use crate::coe::{self, Dictionary};
 use crate::dc::{self, Position};
 use crate::esc::{self, EscInfo, SPACE, reg};
 use crate::fault::Faults;
@@ -24,7 +25,24 @@ pub struct Device {
     sync_managers: Vec<SiiSyncManager>,
     pub(crate) faults: Faults,
     pub(crate) position: Position,
+    /// The CoE object dictionary of a device with a mailbox.
+    coe: Option<Dictionary>,
+    /// Its contents at power-on (the firmware keeps SDO writes in RAM only).
+    coe_at_power_on: Option<Dictionary>,
+    /// A terminal with a microcontroller runs the AL state machine in firmware: AL status
+    /// does not mirror the acknowledge bit of AL control (EMULATOR-NOTES §5: 0x0001 after
+    /// `BWR 0x0120 = 0x0011`).
+    microcontroller: bool,
 }
+
+/// SII SyncManager kinds of the mailboxes.
+const MAILBOX_OUT: u8 = 1;
+const MAILBOX_IN: u8 = 2;
+/// Mailbox type CoE (low nibble of mailbox header byte 5).
+const MAILBOX_COE: u8 = 3;
+/// SM status bit 3: mailbox full; bit 0: the last access was a write.
+const SM_MAILBOX_FULL: u8 = 0x08;
+const SM_WRITTEN: u8 = 0x01;
 
 /// Registers the EEPROM interface computes when read.
 const SII_REGS: std::ops::Range<usize> = reg::SII_CONTROL..reg::SII_DATA + 8;
@@ -55,6 +73,9 @@ impl Device {
             eeprom: Eeprom::new(words, esc.sii_idle),
             faults: Faults::default(),
             position: Position::default(),
+            coe: None,
+            coe_at_power_on: None,
+            microcontroller: false,
         };
         d.load_from_eeprom();
         d.set_u16(reg::AL_CONTROL, al::INIT as u16);
@@ -112,6 +133,28 @@ impl Device {
     pub fn el2889() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL2889-full.txt"));
         Device::from_sii(words, Self::terminal_esc(0x0040, 0x00FC, true))
+    }
+
+    /// The EL3004, 4 analog inputs ±10 V, with a microcontroller and a CoE mailbox
+    /// (EMULATOR-NOTES §8, §10): ethercrab reads its PDO assignment by SDO uploads (1C12 empty,
+    /// 1C13 = 1A00/1A02/1A04/1A06) and gets 16 input bytes at 0x1180, per channel a status
+    /// word and a 16-bit value. SII from capture \[C\] (words ethercrab never read are 0, or
+    /// erased after the SyncManager category); ESC registers as the EL1004's, which reports
+    /// the same features (0x01FC) and DL status (0x5613).
+    pub fn el3004() -> Device {
+        let words = sii::parse(include_str!("../data/sii-EL3004.txt"));
+        let mut d = Device::from_sii(words, Self::terminal_esc(0x0050, 0x01FC, false));
+        let (vendor, product, revision) = d.identity();
+        d.coe = Some(coe::el3004(vendor, product, revision));
+        d.coe_at_power_on = d.coe.clone();
+        d.microcontroller = true;
+        d
+    }
+
+    /// The value of CoE object `index`:`sub` (None without a mailbox or for an unknown
+    /// object), e.g. the PDO assignment a MainDevice wrote.
+    pub fn sdo(&self, index: u16, sub: u8) -> Option<u32> {
+        self.coe.as_ref()?.get(index, sub)
     }
 
     /// The small ESC of the terminals: 3 FMMUs and 4 SyncManagers (inferred from the reset
@@ -230,8 +273,8 @@ impl Device {
     }
 
     /// DL status (0x0110) from the position in the line (EMULATOR-NOTES §6): link and
-    /// communication on port 0, and on port 1 unless this is the last device (whose port 1
-    /// loop is closed); ports 2 and 3 closed. 0x5A31 on a passing EK1100, 0x5613 at the end.
+    /// communication on port 0, and on port 1 unless this is the last device or the link to
+    /// the next one is lost (port 1 loop closed); ports 2 and 3 closed. 0x5A31 on a passing EK1100, 0x5613 at the end.
     pub(crate) fn set_dl_status(&mut self) {
         let port1 = self.position.port1_open();
         let low = self.esc.dl_status_pdi as u16 | 0x10 | if port1 { 0x20 } else { 0 };
@@ -277,6 +320,50 @@ impl Device {
     pub(crate) fn read(&mut self, ado: usize, out: &mut [u8], now: u64) {
         self.refresh(ado, out.len(), now);
         self.register(ado, out);
+        // Reading the last byte of the input mailbox empties it.
+        if let Some((i, start, len)) = self.mailbox_sm(MAILBOX_IN)
+            && ado < start + len
+            && start + len <= ado + out.len()
+        {
+            self.mem[reg::SM0 + 8 * i + 5] &= !(SM_MAILBOX_FULL | SM_WRITTEN);
+        }
+    }
+
+    /// The mailbox SyncManager of `kind` if the MainDevice configured and enabled it: its
+    /// index, start and length.
+    fn mailbox_sm(&self, kind: u8) -> Option<(usize, usize, usize)> {
+        self.coe.as_ref()?;
+        let i = self.sync_managers.iter().position(|sm| sm.kind == kind)?;
+        let r = reg::SM0 + 8 * i;
+        let (start, len) = (self.u16_at(r) as usize, self.u16_at(r + 2) as usize);
+        (self.mem[r + 6] & 1 != 0 && len >= 16 && start + len <= SPACE).then_some((i, start, len))
+    }
+
+    /// The MainDevice wrote the last byte of the output mailbox: the firmware takes the
+    /// request at once and puts its answer in the input mailbox (a CoE SDO reply echoing the
+    /// request's counter, EMULATOR-NOTES §8).
+    fn on_mailbox_write(&mut self) {
+        let (Some((_, out_start, _)), Some((in_i, in_start, in_len))) =
+            (self.mailbox_sm(MAILBOX_OUT), self.mailbox_sm(MAILBOX_IN))
+        else {
+            return;
+        };
+        let header = &self.mem[out_start..out_start + 6];
+        let len = u16::from_le_bytes([header[0], header[1]]) as usize;
+        let (kind, counter) = (header[5] & 0x0F, header[5] >> 4);
+        if kind != MAILBOX_COE {
+            return;
+        }
+        let body = self.mem[out_start + 6..out_start + 6 + len.min(in_len - 6)].to_vec();
+        let Some(reply) = self.coe.as_mut().and_then(|d| d.serve(&body)) else {
+            return;
+        };
+        let area = &mut self.mem[in_start..in_start + in_len];
+        area.fill(0);
+        area[..2].copy_from_slice(&(reply.len() as u16).to_le_bytes());
+        area[5] = MAILBOX_COE | counter << 4;
+        area[6..6 + reply.len()].copy_from_slice(&reply);
+        self.mem[reg::SM0 + 8 * in_i + 5] |= SM_MAILBOX_FULL | SM_WRITTEN;
     }
 
     /// ORs the bytes at `ado` into `out` (BRD).
@@ -308,6 +395,11 @@ impl Device {
         if touches(reg::AL_CONTROL) {
             self.on_al_control();
         }
+        if let Some((_, start, len)) = self.mailbox_sm(MAILBOX_OUT)
+            && touches(start + len - 1)
+        {
+            self.on_mailbox_write();
+        }
         if touches(reg::SII_CONTROL) || touches(reg::SII_CONTROL + 1) {
             self.on_sii_command(now);
         }
@@ -327,9 +419,39 @@ impl Device {
     fn on_al_control(&mut self) {
         let control = self.u16_at(reg::AL_CONTROL);
         let refused = self.faults.refusal((control & 0x0F) as u8);
-        let (status, code) = al::on_control(self.al_status(), control, refused);
+        let (status, code) =
+            al::on_control(self.al_status(), control, refused, self.faults.latched);
+        self.faults.latched = (status & al::ERROR != 0 && code != 0).then_some(code);
+        let status = if self.microcontroller && code == 0 {
+            status & !al::ERROR
+        } else {
+            status
+        };
         self.set_u16(reg::AL_STATUS, status);
         self.set_u16(reg::AL_STATUS_CODE, code);
+    }
+
+    /// The device restarts, as after losing its power: every register and the process RAM
+    /// back to their power-on values (INIT, station address 0, SyncManagers and FMMUs off,
+    /// alias reloaded from the EEPROM, CoE objects back to their defaults), the EEPROM
+    /// contents kept. Injected faults stay.
+    pub(crate) fn power_on_reset(&mut self) {
+        let fresh = Device::from_sii(self.eeprom.words.clone(), self.esc);
+        self.mem = fresh.mem;
+        self.eeprom = fresh.eeprom;
+        self.coe.clone_from(&self.coe_at_power_on);
+        self.faults.latched = None;
+        self.set_dl_status();
+    }
+
+    /// The SyncManager watchdog expired (no process data for longer than its time, e.g. the
+    /// MainDevice stopped cycling): a terminal with a microcontroller drops to SAFE-OP,
+    /// switches its outputs off, and reports AL status code 0x001B until acknowledged.
+    pub(crate) fn trip_watchdog(&mut self) {
+        let state = self.al_state().min(al::SAFE_OP) as u16;
+        self.set_u16(reg::AL_STATUS, state | al::ERROR);
+        self.set_u16(reg::AL_STATUS_CODE, al::SYNC_MANAGER_WATCHDOG);
+        self.faults.latched = Some(al::SYNC_MANAGER_WATCHDOG);
     }
 
     fn on_sii_command(&mut self, now: u64) {

@@ -1,16 +1,23 @@
 //! Faults a test injects into one simulated SubDevice (see the `SimBus` methods
 //! [`set_responding`](crate::SimBus::set_responding),
+//! [`power_cycle`](crate::SimBus::power_cycle),
+//! [`trip_watchdog`](crate::SimBus::trip_watchdog),
 //! [`set_identity`](crate::SimBus::set_identity) and
 //! [`refuse_transition`](crate::SimBus::refuse_transition)).
 
 /// The faults of one device.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Faults {
-    /// The device does not process datagrams and adds nothing to working counters (a
-    /// terminal whose E-bus contacts lost power but still pass frames on).
-    pub(crate) silent: bool,
+    /// The link into the device's port 0 is down (it lost power, or its cable was pulled):
+    /// frames turn back at the device before it, so neither this device nor any behind it
+    /// sees them.
+    pub(crate) link_lost: bool,
     /// AL states the device refuses, with the AL status code it answers.
     pub(crate) refused: Vec<(u8, u16)>,
+    /// The device itself set the AL error bit (a refused request, a tripped watchdog): it
+    /// ignores state requests until the MainDevice acknowledges (AL control bit 4),
+    /// (ETG.1000.6). Holds the AL status code.
+    pub(crate) latched: Option<u16>,
 }
 
 impl Faults {

@@ -1,10 +1,11 @@
 //! Simulated EtherCAT SubDevices that real [ethercrab](https://crates.io/crates/ethercrab)
 //! drives to OP, so EtherCAT programs run and are tested without hardware.
 //!
-//! - [`Device`]: Beckhoff EK1100, EL1004, EL2004, EL2828 and EL2889, built from the SII
-//!   EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface
+//! - [`Device`]: Beckhoff EK1100, EL1004, EL2004, EL2828, EL2889 and EL3004, built from the
+//!   SII EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface
 //!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed-clock
-//!   registers.
+//!   registers; the EL3004 with a CoE mailbox (expedited SDO upload and download) through
+//!   which ethercrab reads its PDO assignment.
 //! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR,
 //!   LRD/LWR/LRW, FRMW and the read-write variants) with working counters as real ESCs count
 //!   them; inputs, outputs and faults for tests.
@@ -59,12 +60,19 @@
 //! # Ok::<(), std::io::Error>(())
 //! ```
 //!
-//! Not simulated: mailboxes and CoE (so no EL3004), SYNC0/1 signals, bit-granular FMMUs,
-//! watchdogs, and EEPROM contents the captures do not hold (see `data/README.md`).
+//! Faults for tests ([`SimBus`]): a lost link (the device and the ring behind it stop
+//! answering), a power cycle (back in INIT, unaddressed), a tripped SyncManager watchdog
+//! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change.
+//!
+//! Not simulated: mailbox services other than expedited SDO transfers (segmented SDOs, SDO
+//! information, FoE, emergencies), the slower state changes of terminals with a
+//! microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a test trips the
+//! watchdog), and EEPROM contents the captures do not hold (see `data/README.md`).
 #![deny(missing_docs)]
 
 pub mod al;
 mod bus;
+mod coe;
 mod datagram;
 mod dc;
 mod device;

@@ -202,3 +202,58 @@ fn malformed_frames_are_counted_and_ignored() {
     let c = bus.counters();
     assert_eq!((c.processed, c.not_ethercat, c.malformed), (0, 1, 2));
 }
+
+#[test]
+fn an_el3004_reaches_op_through_its_coe_mailbox_and_delivers_16_input_bytes() {
+    let (tx, rx, pdu_loop) = storage!();
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004(), Device::el2004()]);
+    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
+    let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    let ai = group.subdevice(&md, 1).unwrap();
+    assert_eq!(ai.name(), "EL3004");
+    let id = ai.identity();
+    assert_eq!(
+        (id.vendor_id, id.product_id, id.revision),
+        (2, 0x0BBC_3052, 0x0015_0000)
+    );
+    // An SDO upload through the mailbox, as a program reads an object.
+    let product: u32 = block_on(ai.sdo_read(0x1018, 2)).unwrap();
+    assert_eq!(product, 0x0BBC_3052);
+    let group = block_on(group.into_op(&md)).unwrap();
+    assert_eq!(bus.al_state(1), al::OP);
+    let ai = group.subdevice(&md, 1).unwrap();
+    // 1C13 assigns four TxPDOs of 32 bits: 16 bytes, no outputs (1C12 is empty).
+    assert_eq!((ai.inputs_raw().len(), ai.outputs_raw().len()), (16, 0));
+
+    // Channel 2: status 0x0001 (underrange bit), value -1234.
+    let mut inputs = [0u8; 16];
+    inputs[4..6].copy_from_slice(&1u16.to_le_bytes());
+    inputs[6..8].copy_from_slice(&(-1234i16).to_le_bytes());
+    bus.set_inputs(1, &inputs);
+    group.subdevice(&md, 2).unwrap().outputs_raw_mut()[0] = 0b1001;
+    let response = block_on(group.tx_rx(&md)).unwrap();
+    assert_eq!(response.working_counter, 3); // EL3004 reads (+1), EL2004 writes (+2)
+    let ai = group.subdevice(&md, 1).unwrap();
+    let raw = ai.inputs_raw();
+    assert_eq!(i16::from_le_bytes([raw[6], raw[7]]), -1234);
+    assert_eq!(u16::from_le_bytes([raw[4], raw[5]]), 1);
+    assert_eq!(bus.outputs(2), [0b1001]);
+}
+
+#[test]
+fn an_sdo_write_to_the_el3004_changes_its_pdo_assignment() {
+    let (tx, rx, pdu_loop) = storage!();
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004()]);
+    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
+    let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    let ai = group.subdevice(&md, 1).unwrap();
+    // Only channels 1 and 2, as a program does in PRE-OP before going to OP.
+    block_on(ai.sdo_write_array(0x1C13, [0x1A00u16, 0x1A02])).unwrap();
+    assert_eq!(bus.device(1).sdo(0x1C13, 0), Some(2));
+    let err = block_on(ai.sdo_write(0x1A00, 0, 0u8)).unwrap_err();
+    assert!(matches!(err, Error::Mailbox(_)), "{err:?}");
+    let group = block_on(group.into_op(&md)).unwrap();
+    assert_eq!(group.subdevice(&md, 1).unwrap().inputs_raw().len(), 8);
+}

@@ -151,3 +151,18 @@ fn ek1100_el1004_detection_replays() {
     );
     assert_eq!((pairs, matched), (1, 1));
 }
+
+#[test]
+fn ek1100_and_two_el2004_init_and_sii_reads_by_an_early_ethercrab_replay() {
+    // Capture [D]: an early ethercrab counts three SubDevices, resets them, gives them
+    // station addresses and reads identities, General category and strings from their SII
+    // (the EL2004 at 0x1001 among them). The third device reads as an EL2004 too (its identity
+    // at F366). BRD, BWR, APWR, FPRD and FPWR only, no DC register: the exclusions above
+    // never apply, every byte is compared.
+    let (pairs, matched) = replay(
+        "rs-example-sii-el2004",
+        include_bytes!("../data/rs-example-sii-el2004.pcapng"),
+        vec![Device::ek1100(), Device::el2004(), Device::el2004()],
+    );
+    assert_eq!((pairs, matched), (127, 127));
+}

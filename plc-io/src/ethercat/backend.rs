@@ -3,6 +3,7 @@
 
 use super::config::{BusConfig, ConfigError, PdoDirection};
 use super::layout::{BusLayout, LayoutError, read_bits, write_bits};
+use super::recovery::{self, Configured, Outcome};
 use super::resolve::{Binding, ResolveError, resolve};
 use super::{MAX_FRAMES, MAX_PDI, MAX_PDU_DATA, MAX_SUBDEVICES};
 use ethercrab::error::Error as CrabError;
@@ -87,6 +88,10 @@ pub struct Options {
     pub dc_static_sync_iterations: u32,
     /// See [`InputsOnFault`].
     pub inputs_on_fault: InputsOnFault,
+    /// While the bus is faulty, how often `exchange` tries to bring SubDevices that answer
+    /// but are not in OP back to OP (a few datagrams per SubDevice; see
+    /// [`EtherCatBackend::problems`]).
+    pub recovery_interval: std::time::Duration,
 }
 
 impl Options {
@@ -112,6 +117,7 @@ impl Default for Options {
             timeouts: Timeouts::default(),
             dc_static_sync_iterations: MainDeviceConfig::default().dc_static_sync_iterations,
             inputs_on_fault: InputsOnFault::Zero,
+            recovery_interval: std::time::Duration::from_millis(100),
         }
     }
 }
@@ -265,6 +271,10 @@ struct Running {
     maindevice: MainDevice<'static>,
     group: Option<Stage>,
     driver: Option<DriverGuard>,
+    /// What ethercrab configured on each SubDevice, in ring order, to restore after a fault.
+    configured: Vec<Configured>,
+    /// When recovery was last tried.
+    last_recovery: Option<std::time::Instant>,
 }
 
 impl Running {
@@ -274,6 +284,7 @@ impl Running {
             maindevice,
             group,
             driver,
+            ..
         } = self;
         drop(group);
         // SAFETY: no frame is in flight (every ethercrab call above was awaited to the end) and
@@ -291,12 +302,21 @@ impl Running {
 /// description, OP. `exchange` then runs one cycle: linked outputs from the struct into the
 /// process data, one `tx_rx`, and, when the working counter is right and every SubDevice is in
 /// OP, the linked inputs into the struct. Otherwise the inputs are flagged invalid and set as
-/// [`InputsOnFault`] says, never left to look fresh. The bus recovers by itself when it
-/// answers correctly again. `fault` zeroes the outputs and drops to SAFE-OP (a panicking
-/// program); `stop` zeroes the outputs and returns to INIT.
+/// [`InputsOnFault`] says, never left to look fresh. `fault` zeroes the outputs and drops to
+/// SAFE-OP (a panicking program), where a later `stop` leaves the bus; otherwise `stop`
+/// zeroes the outputs and returns to INIT.
 ///
-/// The methods are those of DESIGN.md's `IoBackend<T>` (`start`, `exchange`, `stop`, plus
-/// `fault` for the panic path); the trait impl joins them when `plc_io::Runtime` lands.
+/// Recovery: while the bus is faulty, `exchange` looks at each SubDevice every
+/// [`Options::recovery_interval`] and brings back to OP the ones that answer again but are
+/// not in OP: acknowledging an error (a tripped SyncManager watchdog leaves SAFE-OP with AL
+/// status code 0x001B), or, for one that lost power and restarted in INIT, giving it its
+/// station address and the SyncManager and FMMU settings ethercrab made at start-up again.
+/// Inputs stay invalid until the whole bus is in OP with the right working counter. What is
+/// still wrong is kept in [`problems`](Self::problems), one line per SubDevice, and printed
+/// to stderr when it changes. After `fault` the backend stays in SAFE-OP: no recovery.
+///
+/// Implements `plc_io::IoBackend` (`start`, `exchange`, `fault`, `stop`) for
+/// `plc_io::Runtime`.
 ///
 /// Each started backend leaks ethercrab's frame storage (about 20 KiB): ethercrab needs it
 /// `'static`, and a stopped bus may still see late frames.
@@ -310,6 +330,7 @@ pub struct EtherCatBackend<T> {
     expected_wkc: u16,
     status: BusStatus,
     running: Option<Running>,
+    problems: Vec<String>,
     _gm: PhantomData<fn(&mut T)>,
 }
 
@@ -356,6 +377,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
                 ..BusStatus::default()
             },
             running: None,
+            problems: Vec::new(),
             _gm: PhantomData,
         })
     }
@@ -407,6 +429,8 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             maindevice,
             group: None,
             driver: Some(driver),
+            configured: Vec::new(),
+            last_recovery: None,
         };
         match self.bring_up(&mut running) {
             Ok(()) => {
@@ -479,6 +503,19 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         // SubDevices' outputs valid, as the SyncManager watchdogs expect.
         block_on(group.tx_rx(md)).map_err(bus("the first SAFE-OP exchange"))?;
         let group = block_on(group.into_op(md)).map_err(bus("going to OP"))?;
+        let mut configured = Vec::new();
+        for (pos, sd) in group.iter(md).enumerate() {
+            let c = block_on(Configured::read(
+                md,
+                pos as u16,
+                sd.configured_address(),
+                sd.name(),
+                (sd.identity().vendor_id, sd.identity().product_id),
+            ))
+            .map_err(bus("reading back the SyncManager and FMMU settings"))?;
+            configured.push(c);
+        }
+        running.configured = configured;
         running.group = Some(Stage::Op(group));
         Ok(())
     }
@@ -506,10 +543,27 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             if let Some(Stage::Op(g)) = &running.group {
                 copy_inputs(g, md, gm, &self.inputs);
             }
+            self.set_problems(Vec::new());
         } else {
             self.status.fault_count += 1;
             if self.options.inputs_on_fault == InputsOnFault::Zero {
                 zero_inputs(gm, &self.inputs);
+            }
+            let running = self.running.as_mut().expect("checked above");
+            let due = running
+                .last_recovery
+                .is_none_or(|t| t.elapsed() >= self.options.recovery_interval);
+            let in_op_stage = matches!(running.group, Some(Stage::Op(_)));
+            if state == BusState::NoAnswer {
+                self.set_problems(vec![
+                    "no frame came back from the bus: check the cable from the network \
+                     interface to the first SubDevice, and its power"
+                        .into(),
+                ]);
+            } else if due && in_op_stage {
+                running.last_recovery = Some(std::time::Instant::now());
+                let problems = recover(running, &self.layout.names, self.options.timeouts.eeprom);
+                self.set_problems(problems);
             }
         }
         self.status.inputs_valid = good;
@@ -517,6 +571,28 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         self.status.state = state;
         self.status.working_counter = wkc;
         self.status
+    }
+
+    /// What is wrong with the bus now, one line per SubDevice that is not in OP (naming its
+    /// position, name and model, its state and AL status code, and what was done or what to
+    /// do). Empty while the bus is healthy. It changes only after a recovery attempt
+    /// ([`Options::recovery_interval`]); each change is also printed to stderr.
+    pub fn problems(&self) -> &[String] {
+        &self.problems
+    }
+
+    fn set_problems(&mut self, problems: Vec<String>) {
+        if problems == self.problems {
+            return;
+        }
+        if problems.is_empty() {
+            eprintln!("plc-io EtherCAT: the bus is back in OP");
+        } else {
+            for p in &problems {
+                eprintln!("plc-io EtherCAT: {p}");
+            }
+        }
+        self.problems = problems;
     }
 
     /// The panic path: outputs to zero on the bus, then SAFE-OP (the SubDevices hold their
@@ -542,27 +618,32 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         self.status.state = BusState::SafeOp;
     }
 
-    /// Outputs to zero, the bus back to INIT, the transport closed. Safe to call twice.
+    /// Outputs to zero, the bus back to INIT, the transport closed. After [`fault`](Self::fault)
+    /// the SubDevices stay in SAFE-OP (outputs off and zero, inputs still readable by a
+    /// diagnostic tool): a program that panicked leaves the bus in its safe state rather
+    /// than looking like a clean shutdown. Safe to call twice.
     pub fn stop(&mut self) {
         let Some(mut running) = self.running.take() else {
             return;
         };
         let md = &running.maindevice;
-        let safe = match running.group.take() {
+        match running.group.take() {
             Some(Stage::Op(g)) => {
                 zero_outputs(&g, md);
                 let _ = block_on(g.tx_rx(md));
-                block_on(g.into_safe_op(md)).ok()
+                if let Ok(g) = block_on(g.into_safe_op(md)) {
+                    zero_outputs(&g, md);
+                    let _ = block_on(g.tx_rx(md));
+                    if let Ok(g) = block_on(g.into_pre_op(md)) {
+                        let _ = block_on(g.into_init(md));
+                    }
+                }
             }
-            Some(Stage::SafeOp(g)) => Some(g),
-            None => None,
-        };
-        if let Some(g) = safe {
-            zero_outputs(&g, md);
-            let _ = block_on(g.tx_rx(md));
-            if let Ok(g) = block_on(g.into_pre_op(md)) {
-                let _ = block_on(g.into_init(md));
+            Some(Stage::SafeOp(g)) => {
+                zero_outputs(&g, md);
+                let _ = block_on(g.tx_rx(md));
             }
+            None => {}
         }
         running.release();
         self.status = BusStatus {
@@ -620,6 +701,48 @@ impl Drop for JoinOnDrop {
             let _ = h.join();
         }
     }
+}
+
+/// One recovery attempt on every SubDevice (see `recovery`); the problems that remain.
+fn recover(
+    running: &Running,
+    names: &[String],
+    eeprom_timeout: std::time::Duration,
+) -> Vec<String> {
+    let md = &running.maindevice;
+    let mut problems = Vec::new();
+    let mut cut_off = false;
+    for dev in &running.configured {
+        let pos = usize::from(dev.position);
+        let what = format!(
+            "position {pos} (`{}`, {})",
+            names.get(pos).map_or("?", String::as_str),
+            dev.model
+        );
+        match block_on(recovery::attempt(md, dev, eeprom_timeout)) {
+            Outcome::Op => {}
+            Outcome::NotOp(text) => problems.push(format!(
+                "{what} is {text}; inputs stay invalid until it is back in OP"
+            )),
+            Outcome::NoAnswer => {
+                // Frames turn back before a device whose link is down, so every device behind
+                // it is silent too: name the first one, where the cable or power is to check.
+                if !cut_off {
+                    cut_off = true;
+                    let behind = if pos + 1 < running.configured.len() {
+                        " (the SubDevices behind it are cut off too)"
+                    } else {
+                        ""
+                    };
+                    problems.push(format!(
+                        "{what} does not answer: check its power and the cable into it{behind}; \
+                         it is brought back to OP when it answers again"
+                    ));
+                }
+            }
+        }
+    }
+    problems
 }
 
 fn state_of(states: &[SubDeviceState]) -> BusState {

@@ -37,6 +37,8 @@ pub const EL2004: u32 = 0x07d4_3052;
 pub const EL2828: u32 = 0x0b0c_3052;
 /// Product code of the EL2889 (16 digital outputs).
 pub const EL2889: u32 = 0x0b49_3052;
+/// Product code of the EL3004 (4 analog inputs).
+pub const EL3004: u32 = 0x0bbc_3052;
 
 fn beckhoff(name: &str, product: u32, description: &str, entries: Vec<PdoEntry>) -> DeviceConfig {
     DeviceConfig {
@@ -109,6 +111,32 @@ pub fn el2889(name: &str) -> DeviceConfig {
         "EL2889 16-channel digital output 24 V",
         channels("output", 16, PdoDirection::Output, |i| u8::from(i > 8)),
     )
+}
+
+/// EL3004, 4 analog inputs ±10 V, with its default PDO assignment (TxPDOs 0x1A00, 0x1A02,
+/// 0x1A04, 0x1A06 in SM3, 32 bits per channel). Per channel `N` (1-4): `chN_underrange`,
+/// `chN_overrange` (`BOOL`), `chN_limit1`, `chN_limit2` (2-bit `USINT`), `chN_error` (`BOOL`),
+/// `chN_reserved` (7 bits the terminal leaves unused, `BYTE`), `chN_txpdo_state`,
+/// `chN_txpdo_toggle` (`BOOL`) and `chN_value` (16-bit `INT`, ±10 V = ±0x7FFF).
+pub fn el3004(name: &str) -> DeviceConfig {
+    let input = PdoDirection::Input;
+    let entries = (1..=4)
+        .flat_map(|n| {
+            [
+                PdoEntry::bool(&format!("ch{n}_underrange"), input),
+                PdoEntry::bool(&format!("ch{n}_overrange"), input),
+                PdoEntry::new(&format!("ch{n}_limit1"), input, 2, IecType::Usint),
+                PdoEntry::new(&format!("ch{n}_limit2"), input, 2, IecType::Usint),
+                PdoEntry::bool(&format!("ch{n}_error"), input),
+                PdoEntry::new(&format!("ch{n}_reserved"), input, 7, IecType::Byte),
+                PdoEntry::bool(&format!("ch{n}_txpdo_state"), input),
+                PdoEntry::bool(&format!("ch{n}_txpdo_toggle"), input),
+                PdoEntry::new(&format!("ch{n}_value"), input, 16, IecType::Int),
+            ]
+        })
+        .map(|e| PdoEntry { sm: 3, ..e })
+        .collect();
+    beckhoff(name, EL3004, "EL3004 4-channel analog input ±10 V", entries)
 }
 
 impl DeviceConfig {

@@ -43,6 +43,7 @@ pub mod config;
 pub mod devices;
 mod io_backend;
 pub mod layout;
+mod recovery;
 pub mod resolve;
 
 pub use backend::{

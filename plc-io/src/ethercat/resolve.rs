@@ -82,6 +82,11 @@ pub fn resolve<T: GlobalMemory>(layout: &BusLayout) -> Result<Vec<Binding>, Reso
 pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>, ResolveError> {
     let mut bindings: Vec<Binding> = Vec::new();
     let mut problems = Vec::new();
+    // Every output variable linked to an output entry, whether or not its link has other
+    // problems (its type):
+    // a second writer is reported even when the first one is wrong in another way too, so
+    // the user sees all problems of one run at once.
+    let mut writers: Vec<(usize, usize, &'static str)> = Vec::new();
     for (index, v) in vars.iter().enumerate() {
         let Some(link) = v.link else { continue };
         let mut problem = |message: String| {
@@ -194,17 +199,22 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
                 to
             ));
         }
-        if entry.direction == PdoDirection::Output
-            && let Some(other) = bindings
+        // A variable declared for the other direction does not write the entry: its problem
+        // is the direction, not a second writer.
+        if entry.direction == PdoDirection::Output && dir_ok {
+            if let Some(&(_, _, other)) = writers
                 .iter()
-                .find(|b| b.entry.device == entry.device && b.entry.entry == entry.entry)
-        {
-            ok = false;
-            problem(format!(
-                "`{}` is written to this output entry already: an output has one writer; \
-                 link one variable and copy or bit-map the others from it in the program",
-                other.var_name
-            ));
+                .find(|(d, e, _)| *d == entry.device && *e == entry.entry)
+            {
+                ok = false;
+                problem(format!(
+                    "`{other}` is written to this output entry already: an output has one \
+                     writer; link one variable and copy or bit-map the others from it in the \
+                     program"
+                ));
+            } else {
+                writers.push((entry.device, entry.entry, v.name));
+            }
         }
         if ok {
             bindings.push(Binding {
@@ -366,7 +376,9 @@ mod tests {
         ];
         let err = resolve_vars(&vars, &layout()).unwrap_err();
         let text = err.to_string();
-        assert_eq!(err.problems.len(), 8, "{text}");
+        // `narrow` is the entry's first writer despite its type error, so `first` and
+        // `second` are both second writers.
+        assert_eq!(err.problems.len(), 9, "{text}");
         for needle in [
             "`no_dev` (link `ethercat.nope.input1`): the bus has no device `nope`: use one of `coupler`, `di`, `dq`",
             "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9`: use one of `input1`, `input2`, `input3`, `input4`",
@@ -374,11 +386,111 @@ mod tests {
             "`wrong_dir` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"output\"`",
             "`wrong_type` (link `ethercat.di.input1`): the variable is USINT and the input entry is BOOL (1 bit); BOOL does not widen implicitly to USINT",
             "`narrow` (link `ethercat.dq.word`): the variable is DINT and the output entry is UINT (16 bits); DINT does not widen implicitly to UINT",
-            "`second` (link `ethercat.dq.word`): `first` is written to this output entry already",
+            "`first` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
+            "`second` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
             "`cmd` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"command\"`",
         ] {
             assert!(text.contains(needle), "missing {needle:?} in\n{text}");
         }
+    }
+
+    #[test]
+    fn arrays_strings_and_status_variables_cannot_be_linked() {
+        let array = var_info(VarInfoParts {
+            dims: &[4],
+            size: 4,
+            ..parts(&var(
+                "arr",
+                IecType::Bool,
+                Direction::Input,
+                "ethercat.di.input1",
+            ))
+        });
+        let string = var_info(VarInfoParts {
+            size: 16,
+            rust_type: "FixedString<16>",
+            ..parts(&var(
+                "text",
+                IecType::String,
+                Direction::Input,
+                "ethercat.di.input2",
+            ))
+        });
+        let vars = [
+            array,
+            string,
+            var(
+                "state",
+                IecType::Bool,
+                Direction::Status,
+                "ethercat.di.input3",
+            ),
+        ];
+        let err = resolve_vars(&vars, &layout()).unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), 3, "{text}");
+        for needle in [
+            "`arr` (link `ethercat.di.input1`): only scalar numbers and bools can be linked, \
+             this is a BOOL array: link a scalar variable",
+            "`text` (link `ethercat.di.input2`): only scalar numbers and bools can be linked, \
+             this is a STRING: link a scalar variable",
+            "`state` (link `ethercat.di.input3`): `input3` is an input entry, but the variable \
+             is declared `direction = \"status\"`",
+        ] {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+
+    /// The parts of `v`, to build a variant of it.
+    fn parts(v: &VarInfo) -> VarInfoParts {
+        VarInfoParts {
+            name: v.name,
+            iec_type: v.iec_type,
+            rust_type: v.rust_type,
+            offset: v.offset,
+            size: v.size,
+            dims: v.dims,
+            bit: v.bit,
+            link: v.link,
+            address: v.address,
+            description: v.description,
+            initial: v.initial,
+            nonvolatile: v.nonvolatile,
+            access: v.access,
+            direction: v.direction,
+        }
+    }
+
+    #[test]
+    fn a_second_writer_is_reported_even_when_the_first_has_a_type_error() {
+        let vars = [
+            var(
+                "too_wide",
+                IecType::Udint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+            var(
+                "second",
+                IecType::Uint,
+                Direction::Output,
+                "ethercat.dq.word",
+            ),
+        ];
+        let err = resolve_vars(&vars, &layout()).unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), 2, "{text}");
+        assert!(
+            text.contains("`too_wide` (link `ethercat.dq.word`): the variable is UDINT"),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "`second` (link `ethercat.dq.word`): `too_wide` is written to this output entry \
+                 already"
+            ),
+            "{text}"
+        );
     }
 
     #[test]

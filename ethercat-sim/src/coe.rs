@@ -1,0 +1,190 @@
+//! CoE (CANopen over EtherCAT) SDO server of a simulated SubDevice: an object dictionary and
+//! the expedited upload/download services ethercrab uses (EMULATOR-NOTES §8).
+//!
+//! Frames (after the 6-byte mailbox header): CoE header u16 (service in bits 12-15: 2 SDO
+//! request, 3 SDO response), SDO command byte, index u16, sub-index u8, 4 data bytes.
+
+/// CoE services (bits 12-15 of the CoE header).
+const SDO_REQUEST: u16 = 2;
+const SDO_RESPONSE: u16 = 3;
+
+/// SDO abort codes (ETG.1000.6 table 41).
+const ABORT_UNKNOWN_COMMAND: u32 = 0x0504_0001;
+const ABORT_READ_ONLY: u32 = 0x0601_0002;
+const ABORT_NO_OBJECT: u32 = 0x0602_0000;
+const ABORT_NO_SUB_INDEX: u32 = 0x0609_0011;
+
+/// One object entry: its value and size in bytes (1, 2 or 4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Entry {
+    pub(crate) index: u16,
+    pub(crate) sub: u8,
+    pub(crate) value: u32,
+    pub(crate) size: u8,
+    pub(crate) writable: bool,
+}
+
+/// An object dictionary: entries by index and sub-index.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Dictionary {
+    pub(crate) entries: Vec<Entry>,
+}
+
+impl Dictionary {
+    /// Adds (or replaces) an entry.
+    pub(crate) fn set(&mut self, index: u16, sub: u8, value: u32, size: u8, writable: bool) {
+        self.entries.retain(|e| (e.index, e.sub) != (index, sub));
+        self.entries.push(Entry {
+            index,
+            sub,
+            value,
+            size,
+            writable,
+        });
+    }
+
+    /// Adds a record: sub 0 = number of entries (u8), then `items` of `size` bytes each.
+    pub(crate) fn record(&mut self, index: u16, items: &[u32], size: u8, writable: bool) {
+        self.set(index, 0, items.len() as u32, 1, writable);
+        for (i, &v) in items.iter().enumerate() {
+            self.set(index, i as u8 + 1, v, size, writable);
+        }
+    }
+
+    /// The value of an entry.
+    pub(crate) fn get(&self, index: u16, sub: u8) -> Option<u32> {
+        self.find(index, sub).map(|e| e.value)
+    }
+
+    fn find(&self, index: u16, sub: u8) -> Option<&Entry> {
+        self.entries
+            .iter()
+            .find(|e| (e.index, e.sub) == (index, sub))
+    }
+
+    /// Answers one CoE frame (`request` starts at the CoE header); `None` for a service this
+    /// server does not offer (SDO information, emergencies): the device then answers nothing.
+    pub(crate) fn serve(&mut self, request: &[u8]) -> Option<[u8; 10]> {
+        if request.len() < 10 {
+            return None;
+        }
+        let header = u16::from_le_bytes([request[0], request[1]]);
+        if header >> 12 != SDO_REQUEST {
+            return None;
+        }
+        let command = request[2];
+        let index = u16::from_le_bytes([request[3], request[4]]);
+        let sub = request[5];
+        let data = u32::from_le_bytes([request[6], request[7], request[8], request[9]]);
+        let reply = |command: u8, data: u32| {
+            let mut r = [0u8; 10];
+            r[..2].copy_from_slice(&(SDO_RESPONSE << 12).to_le_bytes());
+            r[2] = command;
+            r[3..5].copy_from_slice(&index.to_le_bytes());
+            r[5] = sub;
+            r[6..].copy_from_slice(&data.to_le_bytes());
+            r
+        };
+        let abort = |code: u32| reply(0x80, code);
+        let entry = match self.find(index, sub) {
+            Some(e) => *e,
+            None if self.entries.iter().any(|e| e.index == index) => {
+                return Some(abort(ABORT_NO_SUB_INDEX));
+            }
+            None => return Some(abort(ABORT_NO_OBJECT)),
+        };
+        // Command specifier in bits 5-7: 2 upload request, 1 download request.
+        Some(match command >> 5 {
+            2 => {
+                // Expedited, size indicated: 0x4F / 0x4B / 0x43 for 1 / 2 / 4 bytes.
+                let unused = 4 - entry.size;
+                reply(0x43 | unused << 2, entry.value)
+            }
+            1 if command & 0x02 != 0 => {
+                if !entry.writable {
+                    abort(ABORT_READ_ONLY)
+                } else {
+                    let size = if command & 0x01 != 0 {
+                        4 - (command >> 2 & 0x03)
+                    } else {
+                        4
+                    };
+                    let mask = if size >= 4 {
+                        u32::MAX
+                    } else {
+                        (1u32 << (8 * size)) - 1
+                    };
+                    self.set(index, sub, data & mask, entry.size, true);
+                    reply(0x60, 0)
+                }
+            }
+            _ => abort(ABORT_UNKNOWN_COMMAND),
+        })
+    }
+}
+
+/// The EL3004's objects that ethercrab reads to reach OP (EMULATOR-NOTES §8, from ethercrab's
+/// capture \[R1\]): no RxPDOs (1C12 empty), four TxPDOs 1A00/1A02/1A04/1A06 of ten entries
+/// each (status bits and a 16-bit value per channel), plus the identity object 0x1018.
+pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
+    let mut d = Dictionary::default();
+    d.record(0x1018, &[vendor, product, revision, 0], 4, false);
+    d.record(0x1C12, &[], 2, true);
+    d.record(0x1C13, &[0x1A00, 0x1A02, 0x1A04, 0x1A06], 2, true);
+    for (n, pdo) in [0x1A00u16, 0x1A02, 0x1A04, 0x1A06].into_iter().enumerate() {
+        // Mapping entries: bit length | sub << 8 | index << 16; a bare number is a gap.
+        let base = 0x6000_0000 + 0x0010_0000 * n as u32;
+        let map = [
+            base | 0x0101,
+            base | 0x0201,
+            base | 0x0302,
+            base | 0x0502,
+            base | 0x0701,
+            0x0000_0001,
+            0x0000_0006,
+            base | 0x0F01,
+            base | 0x1001,
+            base | 0x1110,
+        ];
+        d.record(pdo, &map, 4, false);
+    }
+    d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn request(command: u8, index: u16, sub: u8, data: u32) -> Vec<u8> {
+        let mut r = (SDO_REQUEST << 12).to_le_bytes().to_vec();
+        r.push(command);
+        r.extend_from_slice(&index.to_le_bytes());
+        r.push(sub);
+        r.extend_from_slice(&data.to_le_bytes());
+        r
+    }
+
+    #[test]
+    fn expedited_uploads_give_the_size_in_the_command_byte() {
+        let mut d = el3004(2, 0x0BBC_3052, 0x0015_0000);
+        let r = d.serve(&request(0x40, 0x1C13, 0, 0)).unwrap();
+        assert_eq!(r, [0x00, 0x30, 0x4F, 0x13, 0x1C, 0, 4, 0, 0, 0]);
+        let r = d.serve(&request(0x40, 0x1C13, 2, 0)).unwrap();
+        assert_eq!(r[2], 0x4B);
+        assert_eq!(r[6..8], [0x02, 0x1A]);
+        let r = d.serve(&request(0x40, 0x1A02, 10, 0)).unwrap();
+        assert_eq!((r[2], &r[6..]), (0x43, &[0x10, 0x11, 0x10, 0x60][..]));
+    }
+
+    #[test]
+    fn downloads_change_writable_objects_and_abort_on_others() {
+        let mut d = el3004(2, 0x0BBC_3052, 0x0015_0000);
+        let r = d.serve(&request(0x2F, 0x1C13, 0, 0)).unwrap();
+        assert_eq!(r[2], 0x60);
+        assert_eq!(d.get(0x1C13, 0), Some(0));
+        let r = d.serve(&request(0x2F, 0x1A00, 0, 0)).unwrap();
+        assert_eq!((r[2], &r[6..]), (0x80, &0x0601_0002u32.to_le_bytes()[..]));
+        let r = d.serve(&request(0x40, 0x2000, 0, 0)).unwrap();
+        assert_eq!(&r[6..], &0x0602_0000u32.to_le_bytes());
+    }
+}
