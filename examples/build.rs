@@ -1,5 +1,9 @@
-//! Generates the struct of `project.json` (seed 000's JSON variable list) into `OUT_DIR`, as a
-//! project moving from a JSON file would: edit the JSON, rebuild.
+//! Generates into `OUT_DIR`: the struct of `project.json` (seed 000's JSON variable list), as a
+//! project moving from a JSON file would (edit the JSON, rebuild); and the `Gm1k` benchmark
+//! workload (`src/bench/workload.rs`).
+
+#[path = "src/bench/workload.rs"]
+mod workload;
 
 fn main() {
     let out =
@@ -8,6 +12,12 @@ fn main() {
         plc_io::import::generate_from_file("project.json".as_ref(), &out.join("project.rs"))
     {
         eprintln!("{e}");
+        std::process::exit(1);
+    }
+    println!("cargo:rerun-if-changed=src/bench/workload.rs");
+    let gm1k = workload::source(1, "crate::bench::cycle::HandWritten");
+    if let Err(e) = std::fs::write(out.join("gm1k.rs"), gm1k) {
+        eprintln!("{}: {e}", out.join("gm1k.rs").display());
         std::process::exit(1);
     }
 }

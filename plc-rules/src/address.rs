@@ -128,6 +128,37 @@ pub struct IecAddress {
 }
 
 impl IecAddress {
+    /// An address from its parts, for constants: `bit` is `Some(0..=7)` exactly for
+    /// [`Size::Bit`]. In a `const` a wrong combination is a compile error.
+    ///
+    /// ```
+    /// use plc_rules::{Area, IecAddress, Size};
+    /// const START: IecAddress = IecAddress::new(Area::Input, Size::Bit, 3, Some(4));
+    /// assert_eq!(START, "%IX3.4".parse().unwrap());
+    /// ```
+    ///
+    /// ```compile_fail
+    /// use plc_rules::{Area, IecAddress, Size};
+    /// const BAD: IecAddress = IecAddress::new(Area::Input, Size::Word, 4, Some(1));
+    /// ```
+    ///
+    /// # Panics
+    /// If `bit` is `None` for a bit, `Some` for any other size, or above 7.
+    pub const fn new(area: Area, size: Size, byte: u32, bit: Option<u8>) -> Self {
+        match (size, bit) {
+            (Size::Bit, Some(b)) => assert!(b <= 7, "an IEC address bit is 0..=7"),
+            (Size::Bit, None) => panic!("a bit address (X) needs a bit 0..=7"),
+            (_, Some(_)) => panic!("only a bit address (X) has a bit"),
+            (_, None) => {}
+        }
+        IecAddress {
+            area,
+            size,
+            byte,
+            bit,
+        }
+    }
+
     /// The range of bytes the item occupies.
     pub const fn byte_range(&self) -> core::ops::Range<usize> {
         let start = self.byte as usize;

@@ -13,7 +13,10 @@
 //! ```
 
 /// Version of the segment and descriptor format; part of every layout hash.
-pub const FORMAT_VERSION: u32 = 1;
+///
+/// 2: mailbox slots carry a checksum over ticket and payload, and the owner's outcome (a tool
+/// of format 1 would have its writes discarded by a format 2 owner, so it is refused at attach).
+pub const FORMAT_VERSION: u32 = 2;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

@@ -2,13 +2,14 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,snapshot,process_image,derive,import` runs some groups of figures.
+//! `--only cycle,cycle_10k,snapshot,process_image,derive,import` runs some groups of figures.
+//! `cycle_10k` and `derive` compile generated crates: their first run takes minutes.
 
 use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
 use examples::bench::derive_check::{Crate, Flavour};
 use examples::bench::gm1k::{Gm1k, Hand1k, IMAGE_SIZE};
 use examples::bench::timing::{median_per_iter, ratio, side_by_side};
-use plc_core::{GlobalMemory, ProcessImage};
+use plc_core::{Area, GlobalMemory, IecAddress, ProcessImage, Size};
 use plc_io::shm::SharedGlobalMemory;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -21,7 +22,14 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 5] = ["cycle", "snapshot", "process_image", "derive", "import"];
+const GROUPS: [&str; 6] = [
+    "cycle",
+    "cycle_10k",
+    "snapshot",
+    "process_image",
+    "derive",
+    "import",
+];
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -51,6 +59,10 @@ fn main() {
     for group in only {
         match group {
             "cycle" => cycle(&segment, cycle_batches),
+            "cycle_10k" => match examples::bench::cycle_10k::run(batches) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&e),
+            },
             "snapshot" => snapshot_latency(&segment, if quick { 3 } else { 10 }),
             "process_image" => process_image(batches),
             "derive" => derive_check(if quick { 1 } else { 3 }),
@@ -58,6 +70,12 @@ fn main() {
         }
     }
     println!("plc-bench: ok");
+}
+
+/// Ends the run: a figure could not be measured.
+fn fail(why: &str) -> ! {
+    eprintln!("plc-bench: {why}");
+    std::process::exit(1);
 }
 
 /// The cycle on Gm1k: framework against the same work hand-written, and against memcpy.
@@ -126,28 +144,38 @@ fn snapshot_latency(segment: &str, seconds: u64) {
     println!("snapshot_torn: {torn}");
 }
 
+/// The addresses of the process-image figure, as constants: what the derive generates for
+/// `at = "..."` fields and what the `process-image` crate's macros take.
+const ADDRESSES: [IecAddress; 6] = [
+    IecAddress::new(Area::Input, Size::Word, 16, None),
+    IecAddress::new(Area::Input, Size::Bit, 3, Some(4)),
+    IecAddress::new(Area::Input, Size::DoubleWord, 8, None),
+    IecAddress::new(Area::Output, Size::Word, 2, None),
+    IecAddress::new(Area::Output, Size::Bit, 5, Some(1)),
+    IecAddress::new(Area::Output, Size::DoubleWord, 12, None),
+];
+
+/// Three reads and three writes through a process image at addresses `a`.
+#[inline(always)]
+fn six_accesses(buf: &mut [u8], a: &[IecAddress; 6]) {
+    let mut pi = ProcessImage::new(buf);
+    let w: u16 = pi.read(&a[0]).unwrap_or(0);
+    let b: bool = pi.read(&a[1]).unwrap_or(false);
+    let d: u32 = pi.read(&a[2]).unwrap_or(0);
+    let _ = pi.write(&a[3], w.wrapping_add(1));
+    let _ = pi.write(&a[4], !b);
+    let _ = pi.write(&a[5], d ^ 1);
+    black_box(pi.as_bytes());
+}
+
 /// Three reads and three writes by IEC address, ours against the `process-image` crate.
 fn process_image(batches: usize) {
     let mut buf = vec![0u8; 64];
-    // Addresses parsed once, as a program holds them (the derive makes them constants).
-    let a: Vec<plc_core::IecAddress> = ["%IW16", "%IX3.4", "%ID8", "%QW2", "%QX5.1", "%QD12"]
-        .iter()
-        .map(|t| t.parse().expect("address"))
-        .collect();
     let mut theirs_buf = buf.clone();
     let (ours, theirs) = side_by_side(
         batches,
         20000,
-        || {
-            let mut pi = ProcessImage::new(&mut buf[..]);
-            let w: u16 = pi.read(&a[0]).unwrap_or(0);
-            let b: bool = pi.read(&a[1]).unwrap_or(false);
-            let d: u32 = pi.read(&a[2]).unwrap_or(0);
-            let _ = pi.write(&a[3], w.wrapping_add(1));
-            let _ = pi.write(&a[4], !b);
-            let _ = pi.write(&a[5], d ^ 1);
-            black_box(pi.as_bytes());
-        },
+        || six_accesses(&mut buf, &ADDRESSES),
         || {
             let buf = &mut theirs_buf;
             let w: u16 = process_image::tag!(&buf[..], W, 16);
@@ -159,9 +187,19 @@ fn process_image(batches: usize) {
             black_box(&buf);
         },
     );
+    // The same accesses with addresses parsed at run time (a tool reading a variable list).
+    let parsed: [IecAddress; 6] =
+        ["%IW16", "%IX3.4", "%ID8", "%QW2", "%QX5.1", "%QD12"].map(|t| t.parse().expect("address"));
+    let runtime = median_per_iter(batches, 20000, || {
+        six_accesses(&mut buf, black_box(&parsed))
+    });
     println!(
         "process_image_vs_process_image_crate: {:.2}",
         ratio(ours, theirs)
+    );
+    println!(
+        "process_image_parsed_addresses_vs_process_image_crate: {:.2}",
+        ratio(runtime, theirs)
     );
 }
 
@@ -173,8 +211,7 @@ fn derive_check(runs: usize) {
     // The first check of each builds its dependencies (once per machine) and is not counted.
     for c in [&ours, &serde] {
         if let Err(e) = c.check() {
-            eprintln!("plc-bench: {e}");
-            std::process::exit(1);
+            fail(&e);
         }
     }
     let (mut a, mut b) = (Vec::new(), Vec::new());

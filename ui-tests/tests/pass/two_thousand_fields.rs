@@ -2408,7 +2408,32 @@ pub struct Big {
 }
 
 fn main() {
+    use zerocopy::IntoBytes;
     assert_eq!(Big::VARIABLES.len(), 2000);
-    let big = Big::default();
-    assert_eq!(Big::from_image(&big.to_image()).v7, big.v7);
+    // Above 256 fields the image is built of parts: the layout must stay that of one flat
+    // struct, every variable right after the one before, nothing between or after.
+    let mut end = 0;
+    for v in Big::VARIABLES {
+        assert_eq!(v.offset, end, "{} follows the variable before it", v.name);
+        end += v.size;
+    }
+    assert_eq!(core::mem::size_of::<<Big as GlobalMemory>::Image>(), end);
+    // Values go to the bytes VARIABLES describes, in every part.
+    let mut big = Big::default();
+    big.v7 = 0xBEEF;
+    big.v1997 = 0x1234;
+    big.v1995 = 2.5;
+    let image = big.to_image();
+    let bytes = image.as_bytes();
+    for (name, want) in [("v7", &0xBEEFu16.to_le_bytes()[..]), ("v1997", &0x1234u16.to_le_bytes()[..]), ("v1995", &2.5f32.to_le_bytes()[..])] {
+        let v = &Big::VARIABLES[Big::index_of(name).unwrap()];
+        assert_eq!(&bytes[v.offset..v.offset + v.size], want, "{name}");
+    }
+    let back = Big::from_image(&image);
+    assert_eq!((back.v7, back.v1997, back.v1995), (0xBEEF, 0x1234, 2.5));
+    let mut loaded = Big::default();
+    loaded.load_image(&image);
+    let mut stored = Big::default().to_image();
+    loaded.store_image(&mut stored);
+    assert_eq!(stored.as_bytes(), bytes);
 }
