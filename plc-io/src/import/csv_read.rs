@@ -175,6 +175,34 @@ fn header(record: &csv::StringRecord) -> Result<Vec<&'static str>, Vec<String>> 
     }
 }
 
+/// The line a record starts on. The csv crate's own record line lags by one after a CRLF (the
+/// LF is taken as the start of the next record), so lines are counted here from the record's
+/// byte offset, skipping the line break it may begin with; incrementally, to stay linear.
+struct LineCounter<'a> {
+    text: &'a [u8],
+    offset: usize,
+    line: u64,
+}
+
+impl LineCounter<'_> {
+    fn at(&mut self, byte: u64) -> u64 {
+        let mut start = usize::try_from(byte)
+            .unwrap_or(usize::MAX)
+            .min(self.text.len());
+        while start < self.text.len() && matches!(self.text[start], b'\r' | b'\n') {
+            start += 1;
+        }
+        if start >= self.offset {
+            let breaks = self.text[self.offset..start]
+                .iter()
+                .filter(|&&b| b == b'\n');
+            self.line += breaks.count() as u64;
+            self.offset = start;
+        }
+        self.line
+    }
+}
+
 /// Reads a CSV variable list. A quoting or header error ends the reading (rows cannot be told
 /// apart reliably then); errors of single rows are collected in [`Table::row_errors`].
 pub fn parse(text: &str) -> Result<Table, Vec<String>> {
@@ -198,9 +226,14 @@ pub fn parse(text: &str) -> Result<Table, Vec<String>> {
         row_errors: Vec::new(),
     };
     let type_col = cols.iter().position(|c| *c == "type");
+    let mut lines = LineCounter {
+        text: text.as_bytes(),
+        offset: 0,
+        line: 1,
+    };
     for record in records {
         let record = record.map_err(|e| vec![format!("CSV error: {e}")])?;
-        let line = record.position().map_or(0, csv::Position::line);
+        let line = lines.at(record.position().map_or(0, csv::Position::byte));
         // Spreadsheets end a sheet with rows of empty cells.
         if record.iter().all(|c| c.trim().is_empty()) {
             continue;
