@@ -1,13 +1,17 @@
-//! Generates the struct of `project.json` (seed 000's JSON variable list) into `OUT_DIR`, as a
-//! project moving from a JSON file would: edit the JSON, rebuild.
+//! Generates the structs of `project.json` (seed 000's JSON variable list) and `project.csv`
+//! (the same kind of list kept as a spreadsheet) into `OUT_DIR`, as a project moving from such
+//! a file would: edit the file, rebuild.
 
 fn main() {
     let out =
         std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR is set by cargo"));
-    if let Err(e) =
-        plc_io::import::generate_from_file("project.json".as_ref(), &out.join("project.rs"))
-    {
-        eprintln!("{e}");
-        std::process::exit(1);
+    for (input, output) in [
+        ("project.json", "project.rs"),
+        ("project.csv", "project_csv.rs"),
+    ] {
+        if let Err(e) = plc_io::import::generate_from_file(input.as_ref(), &out.join(output)) {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
     }
 }
