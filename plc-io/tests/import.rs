@@ -544,7 +544,10 @@ fn field_value(field: &'static str) -> BoxedStrategy<Value> {
         .prop_map(Value::from)
         .boxed(),
         "nonvolatile" | "read_only" | "retain" => any::<bool>().prop_map(Value::Bool).boxed(),
-        "description" => "\\PC{0,20}".prop_map(Value::String).boxed(),
+        // Any characters, control characters included: they end up in doc comments.
+        "description" => prop::collection::vec(any::<char>(), 0..8)
+            .prop_map(|c| Value::String(c.into_iter().collect()))
+            .boxed(),
         _ => any_json().boxed(),
     };
     prop_oneof![8 => likely, 1 => any_json()].boxed()
