@@ -99,7 +99,7 @@ enum Command {
         #[arg(long = "struct", default_value = "Gm")]
         struct_name: String,
     },
-    /// The declaration of a running program as a JSON variable list (seed 000's format).
+    /// The declaration of a running program as a JSON variable list (seed 000's format), or CSV.
     Export {
         /// Segment name.
         segment: String,

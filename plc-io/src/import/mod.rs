@@ -54,7 +54,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             struct_name: "Gm".into(),
-            origin: "a JSON variable list".into(),
+            origin: "a variable list".into(),
         }
     }
 }
