@@ -210,7 +210,7 @@ fn header_mistakes_are_errors() {
 }
 
 #[test]
-fn row_mistakes_are_errors_and_the_other_rows_are_still_checked() {
+fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() {
     let e = csv_errors(&table(&[
         "a,u8,,,,,,,,,,,,extra",
         ",u8,,,,,,,,,,,",
@@ -222,8 +222,8 @@ fn row_mistakes_are_errors_and_the_other_rows_are_still_checked() {
         [
             "line 2: 14 cells but the header names 13 columns: put a cell that holds a comma in double quotes",
             "line 3, column name: empty: every row needs the variable's name",
-            "line 5, variable B: declared twice (names are case-insensitive, seed 003)",
             "line 4, variable b, column initial: 300 is out of range for USINT (0..=255)",
+            "line 5, variable B: declared twice (names are case-insensitive, seed 003)",
         ]
     );
 }

@@ -122,7 +122,21 @@ pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErr
             None => format!("{line}variable {name}: {}", i.message),
         }
     };
-    finish(&table.parsed, options, table.row_errors.clone(), place)
+    finish(&table.parsed, options, table.row_errors.clone(), place).map_err(|mut e| {
+        // In the order of the file, as a user fixes them going down the sheet (the sort is
+        // stable: one row's errors keep their column order).
+        e.0.sort_by_key(|m| line_of(m));
+        e
+    })
+}
+
+/// The line a CSV message starts with (`line 4, ...`); messages about no line go last.
+fn line_of(message: &str) -> u64 {
+    message
+        .strip_prefix("line ")
+        .and_then(|m| m.split([',', ':']).next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(u64::MAX)
 }
 
 fn subject_name<'a>(parsed: &'a Parsed, subject: &'a Subject) -> &'a str {
