@@ -87,9 +87,9 @@ enum Command {
         /// The JSON file (a whole project file works: only its "variables" are read), or the
         /// CSV file with --csv (a name ending in .csv is read as CSV anyway).
         project: PathBuf,
-        /// Read a CSV table: a header line naming the columns (name,type,direction,link,
-        /// description,initial,source,bit,max_length,nonvolatile,read_only,at,dims), one row per
-        /// variable, RFC 4180 quoting.
+        /// Read a CSV table: one row per variable under a header line naming the columns,
+        /// RFC 4180 quoting. Columns, in any order:
+        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims
         #[arg(long)]
         csv: bool,
         /// Write the module here instead of standard output.
