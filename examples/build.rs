@@ -1,6 +1,7 @@
-//! Generates into `OUT_DIR`: the struct of `project.json` (seed 000's JSON variable list), as a
-//! project moving from a JSON file would (edit the JSON, rebuild); and the `Gm1k` benchmark
-//! workload (`src/bench/workload.rs`).
+//! Generates into `OUT_DIR`: the structs of `project.json` (seed 000's JSON variable list) and
+//! `project.csv` (the same kind of list kept as a spreadsheet), as a project moving from such a
+//! file would (edit the file, rebuild); and the `Gm1k` benchmark workload
+//! (`src/bench/workload.rs`).
 
 #[path = "src/bench/workload.rs"]
 mod workload;
@@ -8,11 +9,14 @@ mod workload;
 fn main() {
     let out =
         std::path::PathBuf::from(std::env::var_os("OUT_DIR").expect("OUT_DIR is set by cargo"));
-    if let Err(e) =
-        plc_io::import::generate_from_file("project.json".as_ref(), &out.join("project.rs"))
-    {
-        eprintln!("{e}");
-        std::process::exit(1);
+    for (input, output) in [
+        ("project.json", "project.rs"),
+        ("project.csv", "project_csv.rs"),
+    ] {
+        if let Err(e) = plc_io::import::generate_from_file(input.as_ref(), &out.join(output)) {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
     }
     println!("cargo:rerun-if-changed=src/bench/workload.rs");
     let gm1k = workload::source(1, "crate::bench::cycle::HandWritten");

@@ -8,7 +8,9 @@
 //! plc watch tensile_tester --filter ls_
 //! plc log tensile_tester force_kn elongation_mm --csv run.csv --rate 100
 //! plc export tensile_tester > project.json
+//! plc export tensile_tester --csv > variables.csv
 //! plc import project.json -o src/gm.rs --struct Gm
+//! plc import --csv variables.csv -o src/gm.rs
 //! ```
 
 mod cmd;
@@ -18,7 +20,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// Inspect and control running plc-vars programs through their shared-memory segments, and
-/// import JSON variable lists.
+/// import JSON or CSV variable lists.
 #[derive(Parser)]
 #[command(name = "plc", version)]
 struct Cli {
@@ -80,10 +82,16 @@ enum Command {
         #[arg(long)]
         seconds: Option<f64>,
     },
-    /// A JSON variable list (seed 000's format) to the equivalent Rust struct.
+    /// A JSON variable list (seed 000's format), or a CSV one, to the equivalent Rust struct.
     Import {
-        /// The JSON file (a whole project file works: only its "variables" are read).
+        /// The JSON file (a whole project file works: only its "variables" are read), or the
+        /// CSV file with --csv (a name ending in .csv is read as CSV anyway).
         project: PathBuf,
+        /// Read a CSV table: one row per variable under a header line naming the columns,
+        /// RFC 4180 quoting. Columns, in any order:
+        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims
+        #[arg(long)]
+        csv: bool,
         /// Write the module here instead of standard output.
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -91,10 +99,13 @@ enum Command {
         #[arg(long = "struct", default_value = "Gm")]
         struct_name: String,
     },
-    /// The declaration of a running program as a JSON variable list (seed 000's format).
+    /// The declaration of a running program as a JSON variable list (seed 000's format), or CSV.
     Export {
         /// Segment name.
         segment: String,
+        /// Write a CSV table instead (the columns `plc import --csv` reads).
+        #[arg(long)]
+        csv: bool,
     },
 }
 
@@ -124,10 +135,11 @@ fn main() -> ExitCode {
         } => cmd::log::run(&segment, &names, &csv, rate, seconds),
         Command::Import {
             project,
+            csv,
             output,
             struct_name,
-        } => cmd::import::run(&project, output.as_deref(), &struct_name),
-        Command::Export { segment } => cmd::export::run(&segment),
+        } => cmd::import::run(&project, csv, output.as_deref(), &struct_name),
+        Command::Export { segment, csv } => cmd::export::run(&segment, csv),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -442,7 +442,8 @@ fn import_writes_the_struct_or_nothing() {
     assert!(o.status.success(), "{}", stderr(&o));
     let code = std::fs::read_to_string(&out).unwrap();
     assert!(
-        code.contains("pub struct Line") && code.contains("#[plc(initial = 3)]"),
+        code.contains("pub struct Line")
+            && code.contains("#[plc(initial = 3, description = \"\")]"),
         "{code}"
     );
 
@@ -460,4 +461,52 @@ fn import_writes_the_struct_or_nothing() {
         code,
         "nothing was written"
     );
+}
+
+/// `plc export --csv` and `plc import --csv` are the JSON pair's equals: the CSV export of a
+/// running program imports to the struct its JSON export imports to, and a bad table is refused
+/// with its lines named and nothing written.
+#[test]
+fn csv_export_and_import_agree_with_json() {
+    let owner = Owner::start("export_csv");
+    let dir = std::env::temp_dir().join(format!("plc-import-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = plc(&["export", &owner.segment, "--csv"]);
+    assert!(csv.status.success(), "{}", stderr(&csv));
+    let table = stdout(&csv);
+    assert!(
+        table.starts_with("name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims\r\n"),
+        "{table}"
+    );
+    assert!(
+        table.contains("\r\nrecipe,string,command,,,none,,,16,,,,\r\n"),
+        "{table}"
+    );
+    let json = plc(&["export", &owner.segment]);
+    // One file name in two folders, so the generated comments are the same too; no `.csv`
+    // ending, so `--csv` is what makes it read as CSV.
+    let (csv_file, json_file) = (dir.join("csv/vars"), dir.join("json/vars"));
+    std::fs::create_dir_all(dir.join("csv")).unwrap();
+    std::fs::create_dir_all(dir.join("json")).unwrap();
+    std::fs::write(&csv_file, &csv.stdout).unwrap();
+    std::fs::write(&json_file, &json.stdout).unwrap();
+    let from_csv = plc(&["import", "--csv", csv_file.to_str().unwrap()]);
+    let from_json = plc(&["import", json_file.to_str().unwrap()]);
+    assert!(from_csv.status.success(), "{}", stderr(&from_csv));
+    assert_eq!(stdout(&from_csv), stdout(&from_json));
+
+    let out = dir.join("gm.rs");
+    std::fs::write(&out, "// old\n").unwrap();
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "name,type,bit\nspeed,u16,\nton,bool,x\n").unwrap();
+    let o = plc(&["import", bad.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("line 3, variable ton: invalid variable name")
+            && err.contains("line 3, variable ton, column bit: needs `source`"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "// old\n");
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -1,12 +1,17 @@
-//! `plc export <segment>`: the running program's declaration as a JSON variable list in seed
-//! 000's format (plus direction, read_only, at and dims, which plc-vars adds).
+//! `plc export <segment> [--csv]`: the running program's declaration as a JSON variable list in
+//! seed 000's format (plus direction, read_only, at and dims, which plc-vars adds), or as the CSV
+//! table `plc import --csv` reads.
 
 use super::Error;
 use plc_io::shm::DynSegment;
 
-pub fn run(segment: &str) -> Result<(), Error> {
+pub fn run(segment: &str, csv: bool) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
-    let json = plc_io::import::descriptor_to_json(seg.descriptor());
-    println!("{}", serde_json::to_string_pretty(&json)?);
+    if csv {
+        print!("{}", plc_io::import::descriptor_to_csv(seg.descriptor()));
+    } else {
+        let json = plc_io::import::descriptor_to_json(seg.descriptor());
+        println!("{}", serde_json::to_string_pretty(&json)?);
+    }
     Ok(())
 }

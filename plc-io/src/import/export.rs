@@ -1,5 +1,6 @@
 //! The way back: a declaration (a compiled type's `VARIABLES`, or a running program's
-//! descriptor) as a JSON variable list in seed 000's format, plus the keys plc-vars adds.
+//! descriptor) as a JSON variable list in seed 000's format, plus the keys plc-vars adds; and
+//! the same as CSV.
 
 use crate::shm::LayoutDescriptor;
 use plc_core::{Access, Direction, GlobalMemory, IecType, TypeFamily};
@@ -71,4 +72,31 @@ pub fn descriptor_to_json(desc: &LayoutDescriptor) -> Value {
 pub fn export_json<T: GlobalMemory>() -> String {
     let value = descriptor_to_json(&LayoutDescriptor::of::<T>());
     serde_json::to_string_pretty(&value).unwrap_or_default()
+}
+
+/// The CSV variable list of a descriptor: the columns of [`COLUMNS`](super::COLUMNS), the
+/// same content as [`descriptor_to_json`].
+pub fn descriptor_to_csv(desc: &LayoutDescriptor) -> String {
+    super::csv_write::to_csv(&descriptor_to_json(desc))
+}
+
+/// The CSV variable list of a compiled `GlobalMemory` type (as [`export_json`], as CSV).
+///
+/// ```
+/// use plc_core::GlobalMemory;
+/// #[derive(GlobalMemory, Debug, Clone)]
+/// struct Gm {
+///     /// Offset, in mm
+///     #[plc(nonvolatile, initial = 12.5)]
+///     press_home_offset_mm: f64,
+/// }
+/// let csv = plc_io::import::export_csv::<Gm>();
+/// assert_eq!(
+///     csv,
+///     "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims\r\n\
+///      press_home_offset_mm,f64,,,\"Offset, in mm\",12.5,,,,true,,,\r\n"
+/// );
+/// ```
+pub fn export_csv<T: GlobalMemory>() -> String {
+    descriptor_to_csv(&LayoutDescriptor::of::<T>())
 }

@@ -1,4 +1,5 @@
-//! JSON variable lists (seed 000's project files) to Rust, and back.
+//! Variable lists (seed 000's JSON project files, and CSV tables with the same columns) to Rust,
+//! and back.
 //!
 //! ```
 //! let json = r#"{ "variables": {
@@ -8,16 +9,34 @@
 //! } }"#;
 //! let generated = plc_io::import::generate(json, &plc_io::import::Options::default()).unwrap();
 //! assert!(generated.code.contains("pub info_test_id: FixedString<64>,"));
-//! assert!(generated.code.contains("#[plc(source = \"impact67_0_digital_inputs\", bit = 0)]"));
+//! assert!(generated.code.contains("#[plc(source = \"impact67_0_digital_inputs\", bit = 0"));
+//! ```
+//!
+//! The same variables as CSV ([`COLUMNS`]; RFC 4180 quoting, a header line naming the columns
+//! in any order, empty cells for what a variable does not declare):
+//!
+//! ```
+//! let csv = "name,type,link,source,bit,description\r\n\
+//!            impact67_0_digital_inputs,u16,ethercat.impact67_0.digital_inputs,,,\r\n\
+//!            ls_centering_neg,bool,,impact67_0_digital_inputs,0,\r\n\
+//!            info_test_id,string,,,,\"Test identifier, as printed\"\r\n";
+//! let generated = plc_io::import::generate_csv(csv, &plc_io::import::Options::default()).unwrap();
+//! assert!(generated.code.contains("/// Test identifier, as printed"));
 //! ```
 
+mod csv_read;
+mod csv_write;
 mod emit;
 mod export;
 mod parse;
 mod validate;
 
-pub use export::{descriptor_to_json, export_json};
+pub use csv_read::COLUMNS;
+pub use export::{descriptor_to_csv, descriptor_to_json, export_csv, export_json};
 pub use validate::Spec;
+
+use parse::Parsed;
+use validate::{Issue, Subject};
 
 use std::fmt;
 use std::path::Path;
@@ -35,7 +54,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             struct_name: "Gm".into(),
-            origin: "a JSON variable list".into(),
+            origin: "a variable list".into(),
         }
     }
 }
@@ -62,22 +81,94 @@ impl fmt::Display for ImportErrors {
 impl std::error::Error for ImportErrors {}
 
 /// Checks a JSON variable list and generates the equivalent `#[derive(GlobalMemory)]` struct.
+///
+/// Errors and warnings read `variables.<name>.<field>: <what is wrong>`.
 pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let parsed = parse::parse(json).map_err(|e| ImportErrors(vec![e]))?;
-    let checked = validate::check(&parsed);
-    let mut errors = checked.errors;
+    let place = |i: &Issue| {
+        let name = subject_name(&parsed, &i.subject);
+        match &i.field {
+            Some(f) => format!("variables.{name}.{f}: {}", i.message),
+            None => format!("variables.{name}: {}", i.message),
+        }
+    };
+    finish(&parsed, options, Vec::new(), place)
+}
+
+/// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same
+/// rules as [`generate`].
+///
+/// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`.
+pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErrors> {
+    let table = csv_read::parse(csv).map_err(ImportErrors)?;
+    let lines: std::collections::HashMap<&str, u64> = table
+        .parsed
+        .variables
+        .iter()
+        .zip(&table.lines)
+        .map(|((n, _), l)| (n.as_str(), *l))
+        .collect();
+    let place = |i: &Issue| {
+        let (name, line) = match &i.subject {
+            Subject::Var(n) => (n.as_str(), lines.get(n.as_str()).copied()),
+            Subject::Duplicate(k) => (
+                table.parsed.duplicates[*k].as_str(),
+                table.duplicate_lines.get(*k).copied(),
+            ),
+        };
+        let line = line.map_or_else(String::new, |l| format!("line {l}, "));
+        match &i.field {
+            Some(f) => format!("{line}variable {name}, column {f}: {}", i.message),
+            None => format!("{line}variable {name}: {}", i.message),
+        }
+    };
+    finish(&table.parsed, options, table.row_errors.clone(), place).map_err(|mut e| {
+        // In the order of the file, as a user fixes them going down the sheet (the sort is
+        // stable: one row's errors keep their column order).
+        e.0.sort_by_key(|m| line_of(m));
+        e
+    })
+}
+
+/// The line a CSV message starts with (`line 4, ...`); messages about no line go last.
+fn line_of(message: &str) -> u64 {
+    message
+        .strip_prefix("line ")
+        .and_then(|m| m.split([',', ':']).next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(u64::MAX)
+}
+
+fn subject_name<'a>(parsed: &'a Parsed, subject: &'a Subject) -> &'a str {
+    match subject {
+        Subject::Var(n) => n,
+        Subject::Duplicate(k) => &parsed.duplicates[*k],
+    }
+}
+
+/// Validation and emission, shared by the JSON and CSV front ends; `place` words an issue for
+/// the input's format.
+fn finish(
+    parsed: &Parsed,
+    options: &Options,
+    mut errors: Vec<String>,
+    place: impl Fn(&Issue) -> String,
+) -> Result<Generated, ImportErrors> {
+    let checked = validate::check(parsed);
+    errors.extend(checked.errors.iter().map(&place));
     if !plc_rules::link::is_identifier(&options.struct_name) {
         errors.push(format!(
-            "struct name {:?} is not a Rust identifier",
+            "struct name {:?} is not a Rust identifier: use letters, digits and underscores, not starting with a digit (such as Gm)",
             options.struct_name
         ));
     }
     for s in &checked.specs {
         if emit::UNUSABLE.contains(&s.name.as_str()) {
-            errors.push(format!(
-                "variables.{}: this name cannot be a Rust field; rename it",
-                s.name
-            ));
+            errors.push(place(&Issue {
+                subject: Subject::Var(s.name.clone()),
+                field: None,
+                message: "this name cannot be a Rust field; rename it".into(),
+            }));
         }
     }
     if !errors.is_empty() {
@@ -87,12 +178,13 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
         .map_err(|e| ImportErrors(vec![e]))?;
     Ok(Generated {
         code,
-        warnings: checked.warnings,
+        warnings: checked.warnings.iter().map(place).collect(),
     })
 }
 
-/// For `build.rs`: generates `out` from the JSON file `path` (written atomically, and only when
-/// it changed), prints the warnings as cargo warnings and `cargo:rerun-if-changed`.
+/// For `build.rs`: generates `out` from the JSON file `path` (a CSV file if its name ends in
+/// `.csv`), written atomically and only when it changed; prints the warnings as cargo warnings
+/// and `cargo:rerun-if-changed`.
 pub fn generate_from_file(path: &Path, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     println!("cargo:rerun-if-changed={}", path.display());
     let json = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
@@ -104,7 +196,12 @@ pub fn generate_from_file(path: &Path, out: &Path) -> Result<(), Box<dyn std::er
         origin,
         ..Options::default()
     };
-    let generated = generate(&json, &options).map_err(|e| format!("{}:\n{e}", path.display()))?;
+    let generated = if is_csv(path) {
+        generate_csv(&json, &options)
+    } else {
+        generate(&json, &options)
+    }
+    .map_err(|e| format!("{}:\n{e}", path.display()))?;
     for w in &generated.warnings {
         println!("cargo:warning={w}");
     }
@@ -112,12 +209,50 @@ pub fn generate_from_file(path: &Path, out: &Path) -> Result<(), Box<dyn std::er
     Ok(())
 }
 
-/// Writes a file whole or not at all (temporary file, then rename).
+/// Whether a file is a CSV variable list, by its name (`.csv`, any case).
+pub fn is_csv(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"))
+}
+
+/// Writes a file whole or not at all: a temporary file beside it, synced, renamed over it, and
+/// the directory synced, so that a crash leaves the old file or the new one. On an error the
+/// temporary file is removed and the old file is untouched. An unchanged file is not rewritten
+/// (cargo would otherwise rebuild what includes it).
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    use std::io::Write;
     if std::fs::read(path).is_ok_and(|old| old == bytes) {
         return Ok(());
     }
-    let tmp = path.with_extension(format!("tmp.{}", std::process::id()));
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path)
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().ok_or_else(|| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!("{} is not a file name", path.display()),
+        )
+    })?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(name);
+    tmp_name.push(format!(".tmp.{}", std::process::id()));
+    let tmp = dir.join(tmp_name);
+    let written = (|| {
+        let mut f = std::fs::File::create(&tmp)?;
+        f.write_all(bytes)?;
+        f.sync_all()?;
+        drop(f);
+        std::fs::rename(&tmp, path)
+    })();
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(e);
+    }
+    // The rename is durable once the directory entry is; a directory that cannot be opened
+    // for sync (some file systems) still has the new file in place.
+    if let Ok(d) = std::fs::File::open(dir) {
+        d.sync_all()?;
+    }
+    Ok(())
 }

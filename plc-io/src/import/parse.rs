@@ -4,12 +4,37 @@
 
 use serde::de::{self, DeserializeSeed, MapAccess, Visitor};
 use serde_json::Value;
+use std::collections::HashSet;
 use std::fmt;
 
 /// The variables of a project file, in file order, and the names given more than once.
 pub struct Parsed {
     pub variables: Vec<(String, Value)>,
     pub duplicates: Vec<String>,
+    /// The names so far in lower case: a set, so a 10,000-variable file is not quadratic.
+    seen: HashSet<String>,
+}
+
+impl Parsed {
+    pub fn new() -> Parsed {
+        Parsed {
+            variables: Vec::new(),
+            duplicates: Vec::new(),
+            seen: HashSet::new(),
+        }
+    }
+
+    /// Adds a variable; a name already given (in any case) goes to `duplicates` instead, and
+    /// `false` is returned.
+    pub fn push(&mut self, name: String, value: Value) -> bool {
+        if self.seen.insert(name.to_ascii_lowercase()) {
+            self.variables.push((name, value));
+            true
+        } else {
+            self.duplicates.push(name);
+            false
+        }
+    }
 }
 
 struct Variables<'a>(&'a mut Parsed);
@@ -29,16 +54,7 @@ impl<'de> Visitor<'de> for Variables<'_> {
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<(), A::Error> {
         while let Some(name) = map.next_key::<String>()? {
             let value: Value = map.next_value()?;
-            if self
-                .0
-                .variables
-                .iter()
-                .any(|(n, _)| n.eq_ignore_ascii_case(&name))
-            {
-                self.0.duplicates.push(name);
-            } else {
-                self.0.variables.push((name, value));
-            }
+            self.0.push(name, value);
         }
         Ok(())
     }
@@ -67,10 +83,7 @@ impl<'de> Visitor<'de> for Project<'_> {
 
 /// Parses `json`; the error text gives line and column of a syntax error.
 pub fn parse(json: &str) -> Result<Parsed, String> {
-    let mut parsed = Parsed {
-        variables: Vec::new(),
-        duplicates: Vec::new(),
-    };
+    let mut parsed = Parsed::new();
     let mut found = false;
     let mut de = serde_json::Deserializer::from_str(json);
     de::Deserializer::deserialize_map(&mut de, Project(&mut parsed, &mut found))
