@@ -2,10 +2,9 @@
 //! test) compiled as a user's crate compiles it: it passes the derive's checks,
 //! `#![deny(missing_docs)]` and clippy, and declares what `press.json` says.
 #![deny(missing_docs)]
-// The derive's image struct repeats the field names without the `#[allow(non_snake_case)]`
-// that the emitted struct carries, so `Speed` warns there (a plc-derive bug, not the
-// importer's); remove this when the derive forwards the allow.
-#![allow(non_snake_case)]
+// No crate-wide allow of non-snake-case names: the emitted struct allows its own `Speed`, and
+// the derive's image struct allows the names it repeats, so a warning here would be a bug.
+#![deny(non_snake_case)]
 
 include!("../../plc-io/tests/golden/press.rs");
 

@@ -102,6 +102,9 @@ fn layout_struct(
         )]
         #[zerocopy(crate = #zerocopy_path)]
         #[doc(hidden)]
+        // The fields repeat the user's names, which the user may have allowed to be non-snake
+        // case (an imported `Speed`); the warning belongs on their struct, not on ours.
+        #[allow(non_snake_case)]
         pub struct #ident #bounds {
             #(#fields,)*
         }
