@@ -5,6 +5,7 @@ pub mod cycle;
 pub mod cycle_10k;
 pub mod derive_check;
 pub mod hand_seqlock;
+pub mod located;
 pub mod timing;
 pub mod workload;
 

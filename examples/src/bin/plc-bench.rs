@@ -8,8 +8,9 @@
 use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
 use examples::bench::derive_check::{Crate, Flavour};
 use examples::bench::gm1k::{Gm1k, Hand1k, IMAGE_SIZE};
+use examples::bench::located;
 use examples::bench::timing::{median_per_iter, ratio, side_by_side};
-use plc_core::{Area, GlobalMemory, IecAddress, ProcessImage, Size};
+use plc_core::{GlobalMemory, IecAddress};
 use plc_io::shm::SharedGlobalMemory;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -144,54 +145,19 @@ fn snapshot_latency(segment: &str, seconds: u64) {
     println!("snapshot_torn: {torn}");
 }
 
-/// The addresses of the process-image figure, as constants: what the derive generates for
-/// `at = "..."` fields and what the `process-image` crate's macros take.
-const ADDRESSES: [IecAddress; 6] = [
-    IecAddress::new(Area::Input, Size::Word, 16, None),
-    IecAddress::new(Area::Input, Size::Bit, 3, Some(4)),
-    IecAddress::new(Area::Input, Size::DoubleWord, 8, None),
-    IecAddress::new(Area::Output, Size::Word, 2, None),
-    IecAddress::new(Area::Output, Size::Bit, 5, Some(1)),
-    IecAddress::new(Area::Output, Size::DoubleWord, 12, None),
-];
-
-/// Three reads and three writes through a process image at addresses `a`.
-#[inline(always)]
-fn six_accesses(buf: &mut [u8], a: &[IecAddress; 6]) {
-    let mut pi = ProcessImage::new(buf);
-    let w: u16 = pi.read(&a[0]).unwrap_or(0);
-    let b: bool = pi.read(&a[1]).unwrap_or(false);
-    let d: u32 = pi.read(&a[2]).unwrap_or(0);
-    let _ = pi.write(&a[3], w.wrapping_add(1));
-    let _ = pi.write(&a[4], !b);
-    let _ = pi.write(&a[5], d ^ 1);
-    black_box(pi.as_bytes());
-}
-
 /// Three reads and three writes by IEC address, ours against the `process-image` crate.
 fn process_image(batches: usize) {
-    let mut buf = vec![0u8; 64];
-    let mut theirs_buf = buf.clone();
+    let (mut buf, mut theirs_buf) = ([0u8; located::BUFFER], [0u8; located::BUFFER]);
     let (ours, theirs) = side_by_side(
         batches,
         20000,
-        || six_accesses(&mut buf, &ADDRESSES),
-        || {
-            let buf = &mut theirs_buf;
-            let w: u16 = process_image::tag!(&buf[..], W, 16);
-            let b: bool = process_image::tag!(&buf[..], X, 3, 4);
-            let d: u32 = process_image::tag!(&buf[..], D, 8);
-            *process_image::tag_mut!(&mut buf[..], W, 2) = w.wrapping_add(1);
-            *process_image::tag_mut!(&mut buf[..], X, 5, 1) = !b;
-            *process_image::tag_mut!(&mut buf[..], D, 12) = d ^ 1;
-            black_box(&buf);
-        },
+        || located::ours(&mut buf, &located::ADDRESSES),
+        || located::theirs(&mut theirs_buf),
     );
     // The same accesses with addresses parsed at run time (a tool reading a variable list).
-    let parsed: [IecAddress; 6] =
-        ["%IW16", "%IX3.4", "%ID8", "%QW2", "%QX5.1", "%QD12"].map(|t| t.parse().expect("address"));
+    let parsed = located::TEXTS.map(|t| t.parse::<IecAddress>().expect("address"));
     let runtime = median_per_iter(batches, 20000, || {
-        six_accesses(&mut buf, black_box(&parsed))
+        located::ours(&mut buf, black_box(&parsed))
     });
     println!(
         "process_image_vs_process_image_crate: {:.2}",
