@@ -276,6 +276,17 @@ mod tests {
         })
     }
 
+    /// Resolving `vars` on [`layout`] fails with exactly these problems (each a part of the
+    /// message).
+    fn assert_problems(vars: &[VarInfo], needles: &[&str]) {
+        let err = resolve_vars(vars, &layout()).unwrap_err();
+        let text = err.to_string();
+        assert_eq!(err.problems.len(), needles.len(), "{text}");
+        for needle in needles {
+            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
+        }
+    }
+
     fn layout() -> BusLayout {
         BusLayout::new(&BusConfig {
             devices: vec![
@@ -374,24 +385,22 @@ mod tests {
                 "ethercat.di.input1",
             ),
         ];
-        let err = resolve_vars(&vars, &layout()).unwrap_err();
-        let text = err.to_string();
         // `narrow` is the entry's first writer despite its type error, so `first` and
         // `second` are both second writers.
-        assert_eq!(err.problems.len(), 9, "{text}");
-        for needle in [
-            "`no_dev` (link `ethercat.nope.input1`): the bus has no device `nope`: use one of `coupler`, `di`, `dq`",
-            "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9`: use one of `input1`, `input2`, `input3`, `input4`",
-            "`coupler_io` (link `ethercat.coupler.x`): device `coupler` has no process data",
-            "`wrong_dir` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"output\"`",
-            "`wrong_type` (link `ethercat.di.input1`): the variable is USINT and the input entry is BOOL (1 bit); BOOL does not widen implicitly to USINT",
-            "`narrow` (link `ethercat.dq.word`): the variable is DINT and the output entry is UINT (16 bits); DINT does not widen implicitly to UINT",
-            "`first` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
-            "`second` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
-            "`cmd` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"command\"`",
-        ] {
-            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
-        }
+        assert_problems(
+            &vars,
+            &[
+                "`no_dev` (link `ethercat.nope.input1`): the bus has no device `nope`: use one of `coupler`, `di`, `dq`",
+                "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9`: use one of `input1`, `input2`, `input3`, `input4`",
+                "`coupler_io` (link `ethercat.coupler.x`): device `coupler` has no process data",
+                "`wrong_dir` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"output\"`",
+                "`wrong_type` (link `ethercat.di.input1`): the variable is USINT and the input entry is BOOL (1 bit); BOOL does not widen implicitly to USINT",
+                "`narrow` (link `ethercat.dq.word`): the variable is DINT and the output entry is UINT (16 bits); DINT does not widen implicitly to UINT",
+                "`first` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
+                "`second` (link `ethercat.dq.word`): `narrow` is written to this output entry already",
+                "`cmd` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"command\"`",
+            ],
+        );
     }
 
     #[test]
@@ -426,19 +435,17 @@ mod tests {
                 "ethercat.di.input3",
             ),
         ];
-        let err = resolve_vars(&vars, &layout()).unwrap_err();
-        let text = err.to_string();
-        assert_eq!(err.problems.len(), 3, "{text}");
-        for needle in [
-            "`arr` (link `ethercat.di.input1`): only scalar numbers and bools can be linked, \
+        assert_problems(
+            &vars,
+            &[
+                "`arr` (link `ethercat.di.input1`): only scalar numbers and bools can be linked, \
              this is a BOOL array: link a scalar variable",
-            "`text` (link `ethercat.di.input2`): only scalar numbers and bools can be linked, \
+                "`text` (link `ethercat.di.input2`): only scalar numbers and bools can be linked, \
              this is a STRING: link a scalar variable",
-            "`state` (link `ethercat.di.input3`): `input3` is an input entry, but the variable \
+                "`state` (link `ethercat.di.input3`): `input3` is an input entry, but the variable \
              is declared `direction = \"status\"`",
-        ] {
-            assert!(text.contains(needle), "missing {needle:?} in\n{text}");
-        }
+            ],
+        );
     }
 
     /// The parts of `v`, to build a variant of it.
