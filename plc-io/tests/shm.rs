@@ -666,3 +666,22 @@ fn the_heartbeat_is_on_the_monotonic_clock_every_process_shares() {
     );
     assert!(DynSegment::attach(&name).unwrap().status().heartbeat_age < Duration::from_secs(5));
 }
+
+#[test]
+fn a_tool_probing_liveness_does_not_make_a_new_owner_fail() {
+    use std::os::fd::AsRawFd;
+    let name = unique("probe");
+    drop(SharedGlobalMemory::<Counters>::create(&name).unwrap());
+    // What `owner_alive` does for a moment at every probe (`plc watch` probes each refresh):
+    // a shared lock on the owner's lock file, here held for 30 ms while a new owner starts.
+    let lock = std::fs::File::open(format!("/dev/shm/plc.{name}.lock")).unwrap();
+    // SAFETY: flock on a descriptor this test owns.
+    assert_eq!(unsafe { libc::flock(lock.as_raw_fd(), libc::LOCK_SH) }, 0);
+    let probe = std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(30));
+        drop(lock);
+    });
+    let owner = SharedGlobalMemory::<Counters>::create(&name);
+    probe.join().unwrap();
+    assert!(owner.is_ok(), "refused: {:?}", owner.err());
+}

@@ -18,6 +18,7 @@ use std::io::Read;
 use std::os::fd::AsRawFd;
 use std::os::unix::fs::{FileExt, OpenOptionsExt};
 use std::path::PathBuf;
+use std::time::{Duration, Instant};
 
 /// Prefix of every segment under /dev/shm, so `plc list` finds ours and nothing else.
 pub const PREFIX: &str = "plc.";
@@ -62,6 +63,24 @@ pub fn owner_alive(name: &str) -> bool {
     !got
 }
 
+/// Takes the owner's exclusive lock on `file`. A tool probing liveness ([`owner_alive`]) holds
+/// a shared lock on the same file for a few microseconds, and `plc watch` probes at every
+/// refresh: a refusal is tried again for a moment before the owner is taken to be alive, so a
+/// dead owner's segment is not refused to its successor because a reader looked at it.
+fn lock_exclusive(file: &File) -> bool {
+    let deadline = Instant::now() + Duration::from_millis(100);
+    loop {
+        // SAFETY: flock on a valid descriptor we own; no memory is involved.
+        if unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } == 0 {
+            return true;
+        }
+        if Instant::now() >= deadline {
+            return false;
+        }
+        std::thread::sleep(Duration::from_millis(1));
+    }
+}
+
 /// A mapped segment.
 pub struct Segment {
     /// Held for its drop, which unmaps (and, for the owner, unlinks) the segment. Fields drop
@@ -92,8 +111,7 @@ impl Segment {
                 what: format!("cannot open the lock file {}", lock_path(name).display()),
                 error: e.to_string(),
             })?;
-        // SAFETY: flock on a valid descriptor we own.
-        if unsafe { libc::flock(lock.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } != 0 {
+        if !lock_exclusive(&lock) {
             let pid = Segment::open(name).map(|s| s.base.load(S_PID)).unwrap_or(0);
             return Err(ShmError::OwnerAlive {
                 name: name.to_string(),
