@@ -49,3 +49,99 @@ fn tensile_tester_refuses_an_unknown_option_with_its_usage_and_exit_1() {
         "{stderr}"
     );
 }
+
+/// A running `tensile_tester`, killed if the test fails before stopping it.
+struct Program(Option<std::process::Child>);
+
+impl Drop for Program {
+    fn drop(&mut self) {
+        if let Some(mut child) = self.0.take() {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
+}
+
+/// Starts `tensile_tester` on segment `segment` with retain directory `retain`, until stopped.
+fn start(segment: &str, retain: &std::path::Path) -> Program {
+    let child = Command::new(env!("CARGO_BIN_EXE_tensile_tester"))
+        .args(["--segment", segment])
+        .arg("--retain")
+        .arg(retain)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("tensile_tester starts");
+    Program(Some(child))
+}
+
+/// The program's segment once it runs (the bus comes up first: allow a busy machine time).
+fn attach(segment: &str) -> plc_io::shm::DynSegment {
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    loop {
+        if let Ok(seg) = plc_io::shm::DynSegment::attach(segment) {
+            return seg;
+        }
+        assert!(std::time::Instant::now() < deadline, "no segment {segment}");
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+}
+
+/// SIGTERM, as a service manager stops it; returns its exit status and what it printed.
+fn terminate(mut program: Program) -> (std::process::ExitStatus, String) {
+    let child = program.0.take().expect("running");
+    // SAFETY: kill(2) on the pid of a child we spawned and have not reaped.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGTERM) }, 0);
+    let out = child.wait_with_output().expect("tensile_tester exits");
+    (
+        out.status,
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+#[test]
+fn a_setpoint_written_by_the_hmi_reader_is_applied_retained_and_restored_after_sigterm() {
+    let id = std::process::id();
+    let segment = format!("tt_hmi_{id}");
+    let retain = std::env::temp_dir().join(format!("tensile-hmi-{id}"));
+    let program = start(&segment, &retain);
+    let seg = attach(&segment);
+    let hmi = Command::new(env!("CARGO_BIN_EXE_hmi_reader"))
+        .args([&segment, "test_speed_mm_s=3.5", "--seconds", "1"])
+        .output()
+        .expect("hmi_reader starts");
+    assert!(
+        hmi.status.success(),
+        "hmi_reader: {}",
+        String::from_utf8_lossy(&hmi.stderr)
+    );
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
+    while seg.read("test_speed_mm_s").unwrap() != plc_core::Value::Real(3.5) {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the setpoint never arrived"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    drop(seg);
+
+    let (status, stdout) = terminate(program);
+    assert!(status.success(), "exit {status:?} after SIGTERM\n{stdout}");
+    assert!(stdout.contains("tensile_tester: stopped,"), "{stdout}");
+    assert!(
+        plc_io::shm::DynSegment::attach(&segment).is_err(),
+        "the segment is removed at a clean stop"
+    );
+
+    // The setpoint is nonvolatile: the next start restores it from the retain file.
+    let program = start(&segment, &retain);
+    let seg = attach(&segment);
+    assert_eq!(
+        seg.read("test_speed_mm_s").unwrap(),
+        plc_core::Value::Real(3.5)
+    );
+    drop(seg);
+    let (status, stdout) = terminate(program);
+    assert!(status.success(), "exit {status:?}\n{stdout}");
+    let _ = std::fs::remove_dir_all(&retain);
+}

@@ -4,7 +4,7 @@
 //! ```sh
 //! cargo run --release -p examples --bin tensile_tester &        # the control program
 //! cargo run --release -p examples --bin hmi_reader -- tensile_tester \
-//!     info_specimen_name="S235 bar" auto_start=false
+//!     test_speed_mm_s=3.5 info_specimen_name="S235 bar"
 //! ```
 //!
 //! Usage: `hmi_reader [SEGMENT] [NAME=VALUE]... [--seconds N]` (default segment

@@ -103,6 +103,9 @@ pub struct Gm {
     /// Lift zero offset in mm
     #[plc(nonvolatile, initial = 0.0)]
     pub lift_zero_offset_mm: f64,
+    /// Test speed setpoint in mm/s (the HMI's to set, 0.1 to 10; kept across restarts)
+    #[plc(direction = "command", nonvolatile, initial = 2.0)]
+    pub test_speed_mm_s: f64,
     /// Start the next test by itself 1 s after the last one
     #[plc(direction = "command", initial = true)]
     pub auto_start: bool,
@@ -198,8 +201,9 @@ fn fault(gm: &mut Gm, text: &str) {
     go(gm, State::Fault);
 }
 
-/// Test speed in mm/s and a made-up stiffness in kN/mm, for the force display.
-const TEST_SPEED_MM_S: f64 = 2.0;
+/// The range the test drive accepts for `test_speed_mm_s`, and a made-up stiffness in kN/mm for
+/// the force display.
+const TEST_SPEED_MM_S: std::ops::RangeInclusive<f64> = 0.1..=10.0;
 const STIFFNESS_KN_MM: f64 = 9.0;
 
 /// One cycle of the tensile tester's program.
@@ -259,7 +263,10 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             gm.cr_centering_drive = true;
             gm.cr_lift_brake = true;
             gm.cr_test_drive = true;
-            gm.elongation_mm += TEST_SPEED_MM_S * dt;
+            let speed = gm
+                .test_speed_mm_s
+                .clamp(*TEST_SPEED_MM_S.start(), *TEST_SPEED_MM_S.end());
+            gm.elongation_mm += speed * dt;
             // Elastic, then yielding: a curve that looks like a test on an HMI.
             let e = gm.elongation_mm;
             gm.force_kn = STIFFNESS_KN_MM * e / (1.0 + e / 2.0);

@@ -264,7 +264,6 @@ where
             Some(name) => Some(SharedGlobalMemory::<T>::create(name).map_err(RuntimeError::Shm)?),
             None => None,
         };
-        s.backend.start().map_err(RuntimeError::Io)?;
         let mut ctx = Context::for_test(gm);
         ctx.cycle = 0;
         ctx.stats.period = s.period;
@@ -273,9 +272,14 @@ where
         let mut image_buf = Box::new(Aligned(ctx.gm.to_image()));
         let image = &mut image_buf.0;
         let mut retained = nonvolatile_bytes::<T>(image);
+        // The initial and restored values go out before the bus starts (which can take
+        // seconds): a tool attaching meanwhile reads them, not a zeroed image.
         if let Some(shm) = &shm {
             // Cannot fail: the runtime created the segment, so it is its owner.
             let _ = shm.publish_image(image);
+        }
+        s.backend.start().map_err(RuntimeError::Io)?;
+        if let Some(shm) = &shm {
             shm.set_run_state(RunState::Running);
         }
         let mut next = Instant::now();
