@@ -401,6 +401,13 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
         "bools under their word:\n{}",
         screen()
     );
+    let header = screen();
+    assert!(
+        header.contains("owner running (pid")
+            && header.contains("cycle time last/min/mean/max")
+            && header.contains("overruns"),
+        "owner state and cycle statistics in the header:\n{header}"
+    );
 
     tmux(&["send-keys", "-t", &session, "/", "speed_set", "Enter"]);
     wait_until("the filter", || screen().contains("1 of 8 variables"));

@@ -96,12 +96,13 @@ impl Watch {
         let st = self.seg.status();
         let state = self.seg.owner_state();
         let header = format!(
-            "{} | owner {} (pid {}) | cycle {} | cycle time last/mean/max {}/{}/{} us | overruns {} | bus {}{}",
+            "{} | owner {} (pid {}) | cycle {} | cycle time last/min/mean/max {}/{}/{}/{} us | overruns {} | bus {}{}",
             self.seg.name(),
             state,
             st.pid,
             st.cycle_count,
             st.last.as_micros(),
+            st.min.as_micros(),
             st.mean.as_micros(),
             st.max.as_micros(),
             st.overruns,
