@@ -43,6 +43,8 @@ use std::fmt;
 use std::fs::{self, File};
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -411,6 +413,7 @@ fn fault_point(_: FaultPoint) {}
 pub struct RetainWriter<I: Send + 'static> {
     tx: Option<mpsc::Sender<Option<I>>>,
     thread: Option<JoinHandle<()>>,
+    failed_saves: Arc<AtomicU64>,
 }
 
 impl<I: Copy + Send + 'static> RetainWriter<I> {
@@ -420,6 +423,8 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
         T: GlobalMemory<Image = I>,
     {
         let (tx, rx) = mpsc::channel::<Option<I>>();
+        let failed_saves = Arc::new(AtomicU64::new(0));
+        let failed = failed_saves.clone();
         let thread = std::thread::Builder::new()
             .name("plc-retain".into())
             .spawn(move || {
@@ -427,9 +432,13 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                 // None: nothing saved yet, so the first change is saved at once.
                 let mut last_save: Option<Instant> = None;
                 let due = |last: Option<Instant>| last.is_none_or(|t| t.elapsed() >= interval);
-                let save = |image: &I| {
-                    if let Err(e) = store.save(&T::from_image(image)) {
-                        eprintln!("{e}");
+                // A failed save (disk full, directory gone) keeps the values pending: they are
+                // tried again at the next interval, never dropped, and the failure is counted.
+                let save = |image: I, pending: &mut Option<I>| {
+                    if let Err(e) = store.save(&T::from_image(&image)) {
+                        failed.fetch_add(1, Ordering::Relaxed);
+                        eprintln!("{e}; the values are kept and saved again later");
+                        pending.get_or_insert(image);
                     }
                 };
                 loop {
@@ -442,7 +451,7 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                         Ok(Some(image)) => pending = Some(image),
                         Ok(None) | Err(RecvTimeoutError::Disconnected) => {
                             if let Some(image) = pending.take() {
-                                save(&image);
+                                save(image, &mut pending);
                             }
                             return;
                         }
@@ -450,17 +459,32 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                     }
                     if pending.is_some() && due(last_save) {
                         if let Some(image) = pending.take() {
-                            save(&image);
+                            save(image, &mut pending);
                         }
                         last_save = Some(Instant::now());
                     }
                 }
-            })
-            .ok();
+            });
+        let thread = match thread {
+            Ok(t) => Some(t),
+            Err(e) => {
+                // Without the thread nothing would ever be saved: say so once, loudly.
+                eprintln!("retained values will not be saved: cannot start the retain writer: {e}");
+                failed_saves.fetch_add(1, Ordering::Relaxed);
+                None
+            }
+        };
         RetainWriter {
             tx: Some(tx),
             thread,
+            failed_saves,
         }
+    }
+
+    /// How many saves failed so far (each failure was printed, and its values kept to be
+    /// saved again).
+    pub fn failed_saves(&self) -> u64 {
+        self.failed_saves.load(Ordering::Relaxed)
     }
 
     /// Hands over a copy of the image whose nonvolatile values changed (never blocks).

@@ -270,3 +270,33 @@ fn a_retain_writer_with_an_enormous_interval_still_saves() {
     RetainStore::new(&path).load(&mut gm).unwrap();
     assert_eq!(gm.cycles, v1().cycles);
 }
+
+#[test]
+fn a_failed_save_keeps_the_values_and_saves_them_when_it_can_again() {
+    use plc_io::retain::RetainWriter;
+    let dir = temp_dir("failing");
+    let path = dir.join("gone").join("m.retain");
+    // The directory does not exist yet: every save fails, as on a full or unmounted disk.
+    let writer = RetainWriter::spawn::<V1>(RetainStore::new(&path), Duration::from_millis(20));
+    writer.offer(v1().to_image());
+    let deadline = std::time::Instant::now() + Duration::from_secs(10);
+    while writer.failed_saves() == 0 {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the save never failed"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    while !path.exists() {
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the values were dropped"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    writer.finish(None);
+    let mut gm = V1::default();
+    RetainStore::new(&path).load(&mut gm).unwrap();
+    assert_eq!(gm.cycles, v1().cycles);
+}
