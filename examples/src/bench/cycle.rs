@@ -71,6 +71,21 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
     }
 }
 
+impl<T: GlobalMemory> FrameworkCycle<T> {
+    /// What `plc_io::Runtime` itself does around the tick: no snapshot in (inputs come from
+    /// the bus straight into the struct, tools' writes through the mailbox), so `unpack_bits`,
+    /// `pack_bits`, the image out and the publish.
+    #[inline(never)]
+    pub fn runtime_step(&mut self) {
+        self.gm.unpack_bits();
+        self.gm.pack_bits();
+        self.gm.store_image(&mut self.image_out.0);
+        self.owner
+            .publish_image(black_box(&self.image_out.0))
+            .expect("the benchmark owns its segment");
+    }
+}
+
 /// The same cycle, hand-written: its own seqlock, manual conversions.
 pub struct HandCycle<H: HandWritten> {
     lock: HandSeqlock,

@@ -86,11 +86,13 @@ fn cycle(segment: &str, batches: usize) {
     let mut floor = MemcpyFloor::new(IMAGE_SIZE);
     let (ours, theirs) = side_by_side(batches, 2000, || framework.step(), || hand.step());
     let memcpy = median_per_iter(batches, 2000, || floor.step());
+    let runtime = median_per_iter(batches, 2000, || framework.runtime_step());
     println!("cycle_1k_ns: {}", ours.as_nanos());
     println!("cycle_1k_handwritten_ns: {}", theirs.as_nanos());
     println!("cycle_1k_memcpy_ns: {}", memcpy.as_nanos());
     println!("cycle_1k_vs_handwritten: {:.2}", ratio(ours, theirs));
     println!("cycle_1k_vs_memcpy: {:.2}", ratio(ours, memcpy));
+    println!("cycle_1k_runtime_vs_memcpy: {:.2}", ratio(runtime, memcpy));
 }
 
 /// The other process: publishes a 64 KiB image at 1 kHz.
