@@ -14,10 +14,11 @@
 //! (the tick starts after it), and after a late cycle the runtime starts the next one at
 //! once, so a very short period follows a long one.
 
-use ethercat_sim::{Device, SimBus};
+#[path = "common/sim_bench.rs"]
+mod sim_bench;
+
 use plc_core::GlobalMemory;
 use plc_io::Runtime;
-use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport, devices};
 use std::io::Write;
 use std::time::{Duration, Instant};
 
@@ -45,24 +46,8 @@ fn bus_period_through_the_runtime_on_the_simulated_bus() {
     let secs = env_u64("PLC_BUS_SECS", 10);
     let cycles = (secs * 1_000_000 / period.as_micros() as u64).max(2);
 
-    let bus = SimBus::new(vec![
-        Device::ek1100(),
-        Device::el1004(),
-        Device::el2004(),
-        Device::el2889(),
-    ]);
-    let config = BusConfig {
-        devices: vec![
-            devices::ek1100("coupler"),
-            devices::el1004("di"),
-            devices::el2004("dq4"),
-            devices::el2889("dq16"),
-        ],
-    };
-    let sim = bus.clone();
-    let transport =
-        Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, sim)?)));
-    let backend = EtherCatBackend::<Io>::new(config, transport, Options::simulated()).unwrap();
+    let bus = sim_bench::sim();
+    let backend = sim_bench::backend::<Io>(&bus, sim_bench::description());
 
     let mut starts: Vec<Instant> = Vec::with_capacity(cycles as usize);
     let mut invalid = 0u64;

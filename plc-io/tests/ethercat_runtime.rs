@@ -1,10 +1,14 @@
 //! `EtherCatBackend` under `plc_io::Runtime` on the simulated bus: what a panicking program
 //! and a clean stop leave on the SubDevices.
 
-use ethercat_sim::{Device, SimBus, al};
+#[path = "common/sim_bench.rs"]
+mod sim_bench;
+
+use ethercat_sim::{SimBus, al};
 use plc_core::GlobalMemory;
-use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport, devices};
+use plc_io::ethercat::EtherCatBackend;
 use plc_io::{Runtime, RuntimeError};
+use sim_bench::sim;
 use std::time::Duration;
 
 const DI: usize = 1;
@@ -21,28 +25,8 @@ struct Io {
     q16_9: bool,
 }
 
-fn sim() -> SimBus {
-    SimBus::new(vec![
-        Device::ek1100(),
-        Device::el1004(),
-        Device::el2004(),
-        Device::el2889(),
-    ])
-}
-
 fn backend(bus: &SimBus) -> EtherCatBackend<Io> {
-    let config = BusConfig {
-        devices: vec![
-            devices::ek1100("coupler"),
-            devices::el1004("di"),
-            devices::el2004("dq4"),
-            devices::el2889("dq16"),
-        ],
-    };
-    let bus = bus.clone();
-    let transport =
-        Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)));
-    EtherCatBackend::new(config, transport, Options::simulated()).unwrap()
+    sim_bench::backend(bus, sim_bench::description())
 }
 
 /// The bytes in the output SyncManager memory of the device at `pos` (what it drives once

@@ -1,12 +1,16 @@
 //! End-to-end tests of `plc_io::ethercat` on the simulated bus of `ethercat-sim`: real ethercrab
 //! drives simulated EK1100 + EL1004 + EL2004 + EL2889 through the in-process transport.
 
+#[path = "common/sim_bench.rs"]
+mod sim_bench;
+
 use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
 use plc_io::ethercat::{
     BusConfig, BusState, EtherCatBackend, EtherCatError, InputsOnFault, Options, PdoDirection,
-    Transport, devices,
+    devices,
 };
+use sim_bench::{description, sim, transport};
 use std::time::{Duration, Instant};
 
 /// Ring positions of the simulated bus.
@@ -34,37 +38,12 @@ struct Io {
     q16_16: bool,
 }
 
-fn sim() -> SimBus {
-    SimBus::new(vec![
-        Device::ek1100(),
-        Device::el1004(),
-        Device::el2004(),
-        Device::el2889(),
-    ])
-}
-
-fn description() -> BusConfig {
-    BusConfig {
-        devices: vec![
-            devices::ek1100("coupler"),
-            devices::el1004("di"),
-            devices::el2004("dq4"),
-            devices::el2889("dq16"),
-        ],
-    }
-}
-
-fn transport(bus: &SimBus) -> Transport {
-    let bus = bus.clone();
-    Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)))
-}
-
 fn options() -> Options {
     Options::simulated()
 }
 
 fn started<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
-    let mut backend = EtherCatBackend::<T>::new(config, transport(bus), options()).unwrap();
+    let mut backend = sim_bench::backend::<T>(bus, config);
     backend.start().unwrap();
     backend
 }

@@ -1,0 +1,41 @@
+//! The simulated test bench most EtherCAT tests run on: EK1100, EL1004, EL2004 and EL2889, and
+//! the bus description that names them `coupler`, `di`, `dq4` and `dq16`.
+// Each test binary uses a different subset of these helpers.
+#![allow(dead_code)]
+
+use ethercat_sim::{Device, SimBus};
+use plc_core::GlobalMemory;
+use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport, devices};
+
+/// The simulated devices, in ring order.
+pub fn sim() -> SimBus {
+    SimBus::new(vec![
+        Device::ek1100(),
+        Device::el1004(),
+        Device::el2004(),
+        Device::el2889(),
+    ])
+}
+
+/// The bus description of [`sim`].
+pub fn description() -> BusConfig {
+    BusConfig {
+        devices: vec![
+            devices::ek1100("coupler"),
+            devices::el1004("di"),
+            devices::el2004("dq4"),
+            devices::el2889("dq16"),
+        ],
+    }
+}
+
+/// ethercrab's network on `bus`, in process.
+pub fn transport(bus: &SimBus) -> Transport {
+    let bus = bus.clone();
+    Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)))
+}
+
+/// A backend for `T` on `bus` with `config`, not started.
+pub fn backend<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
+    EtherCatBackend::<T>::new(config, transport(bus), Options::simulated()).unwrap()
+}
