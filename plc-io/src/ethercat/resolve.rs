@@ -484,19 +484,13 @@ mod tests {
                 "ethercat.dq.word",
             ),
         ];
-        let err = resolve_vars(&vars, &layout()).unwrap_err();
-        let text = err.to_string();
-        assert_eq!(err.problems.len(), 2, "{text}");
-        assert!(
-            text.contains("`too_wide` (link `ethercat.dq.word`): the variable is UDINT"),
-            "{text}"
-        );
-        assert!(
-            text.contains(
+        assert_problems(
+            &vars,
+            &[
+                "`too_wide` (link `ethercat.dq.word`): the variable is UDINT",
                 "`second` (link `ethercat.dq.word`): `too_wide` is written to this output entry \
-                 already"
-            ),
-            "{text}"
+                 already",
+            ],
         );
     }
 
