@@ -16,7 +16,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
-use zerocopy::IntoBytes;
+use zerocopy::{Immutable, IntoBytes};
 
 /// Why the runtime stopped with an error.
 #[derive(Debug)]
@@ -271,7 +271,7 @@ where
         // memory cost up to three times as much from a buffer that straddles lines.
         let mut image_buf = Box::new(Aligned(ctx.gm.to_image()));
         let image = &mut image_buf.0;
-        let mut retained = nonvolatile_bytes::<T>(image);
+        let mut retained = RetainedBytes::new::<T>(image);
         // The initial and restored values go out before the bus starts (which can take
         // seconds): a tool attaching meanwhile reads them, not a zeroed image.
         if let Some(shm) = &shm {
@@ -321,7 +321,7 @@ where
                 let _ = shm.publish_image(image); // the owner's: cannot fail
             }
             if let Some(writer) = &retain
-                && nonvolatile_changed::<T>(image, &mut retained)
+                && retained.changed(image)
             {
                 writer.offer(*image);
             }
@@ -372,33 +372,42 @@ where
 #[repr(C, align(64))]
 struct Aligned<I>(I);
 
-/// Whether the nonvolatile variables' bytes in `image` differ from `last` (as
-/// [`nonvolatile_bytes`] gave them), updating `last`: compared in place, so the cycle does not
-/// allocate.
-fn nonvolatile_changed<T: GlobalMemory>(image: &T::Image, last: &mut [u8]) -> bool {
-    let bytes = image.as_bytes();
-    let mut at = 0;
-    let mut changed = false;
-    for v in T::VARIABLES.iter().filter(|v| v.nonvolatile) {
-        let (now, was) = (
-            &bytes[v.offset..v.offset + v.size],
-            &mut last[at..at + v.size],
-        );
-        if now != was {
-            was.copy_from_slice(now);
-            changed = true;
-        }
-        at += v.size;
-    }
-    changed
+/// The image bytes of the nonvolatile variables as last handed to the retain writer, to notice
+/// a change without decoding. Their ranges are found once, so a cycle compares bytes in place
+/// and neither walks `VARIABLES` nor allocates.
+struct RetainedBytes {
+    ranges: Vec<std::ops::Range<usize>>,
+    last: Vec<u8>,
 }
 
-/// The image bytes of the nonvolatile variables, to notice a change without decoding.
-fn nonvolatile_bytes<T: GlobalMemory>(image: &T::Image) -> Vec<u8> {
-    let bytes = image.as_bytes();
-    T::VARIABLES
-        .iter()
-        .filter(|v| v.nonvolatile)
-        .flat_map(|v| bytes[v.offset..v.offset + v.size].iter().copied())
-        .collect()
+impl RetainedBytes {
+    fn new<T: GlobalMemory>(image: &T::Image) -> Self {
+        let ranges: Vec<_> = T::VARIABLES
+            .iter()
+            .filter(|v| v.nonvolatile)
+            .map(|v| v.offset..v.offset + v.size)
+            .collect();
+        let bytes = image.as_bytes();
+        let last = ranges
+            .iter()
+            .flat_map(|r| bytes[r.clone()].iter().copied())
+            .collect();
+        RetainedBytes { ranges, last }
+    }
+
+    /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).
+    fn changed<I: IntoBytes + Immutable>(&mut self, image: &I) -> bool {
+        let bytes = image.as_bytes();
+        let mut at = 0;
+        let mut changed = false;
+        for r in &self.ranges {
+            let (now, was) = (&bytes[r.clone()], &mut self.last[at..at + r.len()]);
+            if now != was {
+                was.copy_from_slice(now);
+                changed = true;
+            }
+            at += r.len();
+        }
+        changed
+    }
 }
