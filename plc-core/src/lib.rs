@@ -36,6 +36,7 @@
 pub mod convert;
 mod fixed_string;
 mod global_memory;
+mod image_bytes;
 mod plc_type;
 mod process_image;
 mod value;

@@ -6,6 +6,7 @@ pub use plc_rules;
 pub use zerocopy;
 
 pub use crate::global_memory::layout_hash;
+pub use crate::image_bytes::{image_size, offsets, repr_at, repr_at_mut};
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;
 
@@ -101,6 +102,7 @@ pub struct TypeFacts {
     rank: usize,
     elements: usize,
     string_capacity: usize,
+    repr_size: usize,
 }
 
 /// The facts of field type `T`.
@@ -110,10 +112,16 @@ pub const fn facts<T: PlcType>() -> TypeFacts {
         rank: T::RANK,
         elements: T::ELEMENTS,
         string_capacity: T::STRING_CAPACITY,
+        repr_size: core::mem::size_of::<T::Repr>(),
     }
 }
 
 impl TypeFacts {
+    /// Bytes of the type's stored form in the image.
+    pub const fn repr_size(self) -> usize {
+        self.repr_size
+    }
+
     /// Whether the type is an integer scalar (a bit source).
     pub const fn is_integer(self) -> bool {
         self.iec_type.is_integer() && self.rank == 0

@@ -10,6 +10,7 @@ use plc_core::{
 };
 use proptest::prelude::*;
 use zerocopy::IntoBytes;
+use zerocopy::byteorder::little_endian::{F32, F64, I32, U16};
 
 /// Seed 000's variables, as a control program declares them.
 #[derive(GlobalMemory, Debug, Clone, PartialEq)]
@@ -41,20 +42,56 @@ pub struct Gm {
 
 type Image = <Gm as GlobalMemory>::Image;
 
+/// `Gm`'s image as DESIGN.md describes it: a `#[repr(C)]` struct of the stored forms in
+/// declaration order. The derive's image is a byte array; it must have exactly these bytes.
+#[derive(zerocopy::IntoBytes, zerocopy::Immutable)]
+#[repr(C)]
+struct ReferenceImage {
+    impact67_0_digital_inputs: U16,
+    impact67_0_digital_outputs: U16,
+    ls_centering_neg: u8,
+    ls_centering_pos: u8,
+    ls_lift_neg: u8,
+    cr_lift_brake: u8,
+    info_test_id: FixedString<64>,
+    info_specimen_name: FixedString<128>,
+    press_home_offset_mm: F64,
+    speed: I32,
+    recipe_speeds: [[F32; 4]; 3],
+}
+
+impl ReferenceImage {
+    fn of(gm: &Gm) -> Self {
+        ReferenceImage {
+            impact67_0_digital_inputs: gm.impact67_0_digital_inputs.into(),
+            impact67_0_digital_outputs: gm.impact67_0_digital_outputs.into(),
+            ls_centering_neg: gm.ls_centering_neg.into(),
+            ls_centering_pos: gm.ls_centering_pos.into(),
+            ls_lift_neg: gm.ls_lift_neg.into(),
+            cr_lift_brake: gm.cr_lift_brake.into(),
+            info_test_id: gm.info_test_id,
+            info_specimen_name: gm.info_specimen_name,
+            press_home_offset_mm: gm.press_home_offset_mm.into(),
+            speed: gm.speed.into(),
+            recipe_speeds: gm.recipe_speeds.map(|row| row.map(F32::from)),
+        }
+    }
+}
+
 #[test]
-fn offsets_are_offset_of_on_the_image_and_there_is_no_padding() {
+fn offsets_are_those_of_the_reference_struct_and_there_is_no_padding() {
     let offsets = [
-        core::mem::offset_of!(Image, impact67_0_digital_inputs),
-        core::mem::offset_of!(Image, impact67_0_digital_outputs),
-        core::mem::offset_of!(Image, ls_centering_neg),
-        core::mem::offset_of!(Image, ls_centering_pos),
-        core::mem::offset_of!(Image, ls_lift_neg),
-        core::mem::offset_of!(Image, cr_lift_brake),
-        core::mem::offset_of!(Image, info_test_id),
-        core::mem::offset_of!(Image, info_specimen_name),
-        core::mem::offset_of!(Image, press_home_offset_mm),
-        core::mem::offset_of!(Image, speed),
-        core::mem::offset_of!(Image, recipe_speeds),
+        core::mem::offset_of!(ReferenceImage, impact67_0_digital_inputs),
+        core::mem::offset_of!(ReferenceImage, impact67_0_digital_outputs),
+        core::mem::offset_of!(ReferenceImage, ls_centering_neg),
+        core::mem::offset_of!(ReferenceImage, ls_centering_pos),
+        core::mem::offset_of!(ReferenceImage, ls_lift_neg),
+        core::mem::offset_of!(ReferenceImage, cr_lift_brake),
+        core::mem::offset_of!(ReferenceImage, info_test_id),
+        core::mem::offset_of!(ReferenceImage, info_specimen_name),
+        core::mem::offset_of!(ReferenceImage, press_home_offset_mm),
+        core::mem::offset_of!(ReferenceImage, speed),
+        core::mem::offset_of!(ReferenceImage, recipe_speeds),
     ];
     let vars = Gm::VARIABLES;
     assert_eq!(vars.len(), offsets.len());
@@ -65,8 +102,25 @@ fn offsets_are_offset_of_on_the_image_and_there_is_no_padding() {
         next += v.size;
     }
     assert_eq!(core::mem::size_of::<Image>(), next);
+    assert_eq!(core::mem::size_of::<ReferenceImage>(), next);
     assert_eq!(core::mem::align_of::<Image>(), 1);
     assert_eq!(next, 2 + 2 + 4 + 64 + 128 + 8 + 4 + 48);
+}
+
+#[test]
+fn the_image_has_the_bytes_of_the_reference_struct() {
+    let mut gm = Gm::default();
+    gm.impact67_0_digital_inputs = 0xA5C3;
+    gm.impact67_0_digital_outputs = 0x0102;
+    gm.unpack_bits();
+    gm.info_specimen_name.set("S-17");
+    gm.recipe_speeds[2][3] = -0.25;
+    gm.recipe_speeds[0][1] = 7.5;
+    assert_eq!(gm.to_image().as_bytes(), ReferenceImage::of(&gm).as_bytes());
+    let mut image = gm.to_image();
+    gm.speed = 123_456;
+    gm.store_image(&mut image);
+    assert_eq!(image.as_bytes(), ReferenceImage::of(&gm).as_bytes());
 }
 
 #[test]
@@ -371,10 +425,7 @@ fn alias_fields_behave_like_the_types_they_name() {
     let v = Aliased::VARIABLES;
     assert_eq!((v[0].iec_type, v[0].size), (IecType::Word, 2));
     assert_eq!(v[1].bit.map(|b| (b.source, b.bit)), Some((0, 15)));
-    assert_eq!(
-        v[2].offset,
-        core::mem::offset_of!(<Aliased as GlobalMemory>::Image, label)
-    );
+    assert_eq!(v[2].offset, 2 + 1, "after the word and the bool");
     gm.set(1, 0, Value::Bool(false)).expect("bool");
     assert_eq!(gm.w, 0x0001, "the bool's bit reached its word");
     gm.set(0, 0, Value::UInt(0x8000)).expect("word");

@@ -1,9 +1,14 @@
-//! The image struct and the conversions between it and the user's struct.
+//! The image type and the conversions between it and the user's struct.
+//!
+//! The image is one byte array (`plc_core`'s `image_bytes` says why not a struct of fields):
+//! `__PLC_SIZES` holds the size of each variable's stored form, `__PLC_OFFSETS` where it
+//! starts, in declaration order and without gaps, so the bytes are those a `#[repr(C)]` struct
+//! of the stored forms would have.
 
 use super::{image_ident, private};
 use crate::ast::Container;
-use proc_macro2::{Group, Span, TokenStream, TokenTree};
-use quote::{format_ident, quote};
+use proc_macro2::{Group, Literal, Span, TokenStream, TokenTree};
+use quote::quote;
 
 /// `tokens` with every span set to `span`.
 fn respan(tokens: TokenStream, span: Span) -> TokenStream {
@@ -21,75 +26,38 @@ fn respan(tokens: TokenStream, span: Span) -> TokenStream {
         .collect()
 }
 
-/// Fields per part of the image of a large struct. zerocopy's derives build expressions whose
-/// depth grows with the number of fields (the padding check sums every field's size), and
-/// rustc overflows its stack on them somewhere below 10,000 fields. Structs with more fields
-/// than this get an image of parts, each a `#[repr(C)]` struct of at most this many fields;
-/// since every part and field has alignment 1, the parts lay the fields out exactly as one
-/// flat struct would (same offsets, no padding). Smaller structs keep the flat image.
-pub const PART: usize = 256;
-
-fn chunked(c: &Container) -> bool {
-    c.vars.len() > PART
+/// Where variable `i` starts in the image, as a constant: an inline `const` block, because
+/// indexing the `const` array itself would copy all of it onto the stack at every use in an
+/// unoptimised build (a 2,000-variable struct overflowed the stack).
+pub fn offset(i: usize) -> TokenStream {
+    let i = Literal::usize_unsuffixed(i);
+    quote!(const { __PLC_OFFSETS[#i] })
 }
 
-fn part_ident(k: usize) -> syn::Ident {
-    format_ident!("{}Part{}", super::IMAGE, k)
+/// `__PLC_SIZES[i]`: the bytes of variable `i` in the image.
+pub fn size(i: usize) -> TokenStream {
+    let i = Literal::usize_unsuffixed(i);
+    quote!(__PLC_SIZES[#i])
 }
 
-fn part_field(k: usize) -> syn::Ident {
-    format_ident!("__plc_part{}", k)
-}
-
-/// Where variable `i` lives in the image: `field`, or `__plc_partK.field` in a large struct.
-pub fn field_path(c: &Container, i: usize) -> TokenStream {
-    let ident = c.vars[i].ident;
-    if chunked(c) {
-        let part = part_field(i / PART);
-        quote!(#part.#ident)
-    } else {
-        quote!(#ident)
-    }
-}
-
-/// `#[repr(C)]`, alignment 1 (every field's `Repr` is `Unaligned`), so no padding and the
-/// same offsets in every process that compiles the same declaration.
-pub fn image_struct(c: &Container, bounds: &TokenStream) -> TokenStream {
+/// The sizes, offsets and total of the layout, and the image type: `#[repr(C)]` around a byte
+/// array, alignment 1, no padding, the same bytes in every process that compiles the same
+/// declaration.
+pub fn image_struct(c: &Container) -> TokenStream {
     let p = private(c);
-    let fields: Vec<TokenStream> = c
-        .vars
-        .iter()
-        .map(|v| {
-            let (ident, ty) = (v.ident, v.ty);
-            // Under the user's type: an unsupported type behind an alias is reported there.
-            let repr = respan(quote!(<#ty as #p::PlcType>::Repr), v.ty_span());
-            quote!(pub #ident: #repr)
-        })
-        .collect();
-    if !chunked(c) {
-        return layout_struct(c, &image_ident(), &fields, bounds);
-    }
-    let mut out = TokenStream::new();
-    let mut parts = Vec::new();
-    for (k, chunk) in fields.chunks(PART).enumerate() {
-        let (ident, field) = (part_ident(k), part_field(k));
-        out.extend(layout_struct(c, &ident, chunk, bounds));
-        parts.push(quote!(pub #field: #ident));
-    }
-    out.extend(layout_struct(c, &image_ident(), &parts, bounds));
-    out
-}
-
-/// One `#[repr(C)]` zerocopy struct with `fields`.
-fn layout_struct(
-    c: &Container,
-    ident: &syn::Ident,
-    fields: &[TokenStream],
-    bounds: &TokenStream,
-) -> TokenStream {
-    let p = private(c);
+    let n = Literal::usize_unsuffixed(c.vars.len());
+    let sizes = c.vars.iter().map(|v| {
+        let ty = v.ty;
+        // Under the user's type, through the same `facts` as the type's assertions: a type
+        // that is not a PLC type gets one error there, not one per use.
+        respan(quote!(#p::facts::<#ty>().repr_size()), v.ty_span())
+    });
+    let image = image_ident();
     let zerocopy_path = format!("{}::zerocopy", p.to_string().replace(' ', ""));
     quote! {
+        const __PLC_SIZES: [usize; #n] = [#(#sizes,)*];
+        const __PLC_OFFSETS: [usize; #n] = #p::offsets(__PLC_SIZES);
+
         #[repr(C)]
         #[derive(
             ::core::clone::Clone,
@@ -102,61 +70,45 @@ fn layout_struct(
         )]
         #[zerocopy(crate = #zerocopy_path)]
         #[doc(hidden)]
-        // The fields repeat the user's names, which the user may have allowed to be non-snake
-        // case (an imported `Speed`); the warning belongs on their struct, not on ours.
-        #[allow(non_snake_case)]
-        pub struct #ident #bounds {
-            #(#fields,)*
-        }
+        pub struct #image([u8; #p::image_size(&__PLC_SIZES)]);
     }
-}
-
-/// The image built from `self`: `Image { a: .., b: .. }`, or part by part.
-fn image_literal(c: &Container) -> TokenStream {
-    let p = private(c);
-    let value = |v: &crate::ast::Var| {
-        let (ident, ty) = (v.ident, v.ty);
-        quote!(#ident: <#ty as #p::PlcType>::to_repr(&self.#ident))
-    };
-    let image = image_ident();
-    if !chunked(c) {
-        let values = c.vars.iter().map(value);
-        return quote!(#image { #(#values,)* });
-    }
-    let parts = c.vars.chunks(PART).enumerate().map(|(k, chunk)| {
-        let (ident, field) = (part_ident(k), part_field(k));
-        let values = chunk.iter().map(value);
-        quote!(#field: #ident { #(#values,)* })
-    });
-    quote!(#image { #(#parts,)* })
 }
 
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
+    let krate = &c.krate;
     let image = image_ident();
     let idents: Vec<_> = c.vars.iter().map(|v| v.ident).collect();
     let tys: Vec<_> = c.vars.iter().map(|v| v.ty).collect();
-    let paths: Vec<_> = (0..c.vars.len()).map(|i| field_path(c, i)).collect();
-    let literal = image_literal(c);
+    let offsets: Vec<_> = (0..c.vars.len()).map(offset).collect();
     quote! {
         #[inline]
         fn to_image(&self) -> #image {
-            #literal
+            let mut image = <#image as #p::zerocopy::FromZeros>::new_zeroed();
+            <Self as #krate::GlobalMemory>::store_image(self, &mut image);
+            image
         }
 
         #[inline]
         fn from_image(image: &#image) -> Self {
-            Self { #(#idents: <#tys as #p::PlcType>::from_repr(&image.#paths),)* }
+            Self {
+                #(#idents: <#tys as #p::PlcType>::from_repr(
+                    #p::repr_at::<#tys>(&image.0, #offsets)
+                ),)*
+            }
         }
 
         #[inline]
         fn load_image(&mut self, image: &#image) {
-            #(self.#idents = <#tys as #p::PlcType>::from_repr(&image.#paths);)*
+            #(self.#idents = <#tys as #p::PlcType>::from_repr(
+                #p::repr_at::<#tys>(&image.0, #offsets)
+            );)*
         }
 
         #[inline]
         fn store_image(&self, image: &mut #image) {
-            #(image.#paths = <#tys as #p::PlcType>::to_repr(&self.#idents);)*
+            #(*#p::repr_at_mut::<#tys>(&mut image.0, #offsets) =
+                <#tys as #p::PlcType>::to_repr(&self.#idents);)*
         }
     }
 }

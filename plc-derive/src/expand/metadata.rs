@@ -1,6 +1,7 @@
 //! `VARIABLES` and `LAYOUT_HASH`: what tools read about each variable.
 
-use super::{image_ident, private};
+use super::image::{offset, size};
+use super::private;
 use crate::ast::{Container, Dir, Var};
 use crate::types::type_text;
 use proc_macro2::TokenStream;
@@ -49,10 +50,9 @@ fn direction(c: &Container, d: Dir) -> TokenStream {
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
-    let image = image_ident();
     let infos = c.vars.iter().enumerate().map(|(i, v)| {
         let ty = v.ty;
-        let path = super::image::field_path(c, i);
+        let (offset, size) = (offset(i), size(i));
         let name = &v.symbol.value;
         let iec = iec_type(c, v);
         let rust_type = type_text(ty);
@@ -77,8 +77,8 @@ pub fn expand(c: &Container) -> TokenStream {
                 name: #name,
                 iec_type: #iec,
                 rust_type: #rust_type,
-                offset: ::core::mem::offset_of!(#image, #path),
-                size: ::core::mem::size_of::<<#ty as #p::PlcType>::Repr>(),
+                offset: #offset,
+                size: #size,
                 dims: <#ty as #p::PlcType>::DIMS,
                 bit: #bit,
                 link: #link,

@@ -54,7 +54,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let image_ident = image_ident();
     let bounds = alias_bounds(&c);
     let default = default::expand(&c, &bounds);
-    let image_struct = image::image_struct(&c, &bounds);
+    let image_struct = image::image_struct(&c);
     quote! {
         const _: () = {
             #image_struct

@@ -2410,15 +2410,15 @@ pub struct Big {
 fn main() {
     use zerocopy::IntoBytes;
     assert_eq!(Big::VARIABLES.len(), 2000);
-    // Above 256 fields the image is built of parts: the layout must stay that of one flat
-    // struct, every variable right after the one before, nothing between or after.
+    // The layout is that of one flat struct: every variable right after the one before,
+    // nothing between or after.
     let mut end = 0;
     for v in Big::VARIABLES {
         assert_eq!(v.offset, end, "{} follows the variable before it", v.name);
         end += v.size;
     }
     assert_eq!(core::mem::size_of::<<Big as GlobalMemory>::Image>(), end);
-    // Values go to the bytes VARIABLES describes, in every part.
+    // Values go to the bytes VARIABLES describes, at the start, the middle and the end.
     let mut big = Big::default();
     big.v7 = 0xBEEF;
     big.v1997 = 0x1234;
