@@ -26,12 +26,10 @@ fn respan(tokens: TokenStream, span: Span) -> TokenStream {
         .collect()
 }
 
-/// Where variable `i` starts in the image, as a constant: an inline `const` block, because
-/// indexing the `const` array itself would copy all of it onto the stack at every use in an
-/// unoptimised build (a 2,000-variable struct overflowed the stack).
+/// `__PLC_OFFSETS[i]`: where variable `i` starts in the image, in a `const` context.
 pub fn offset(i: usize) -> TokenStream {
     let i = Literal::usize_unsuffixed(i);
-    quote!(const { __PLC_OFFSETS[#i] })
+    quote!(__PLC_OFFSETS[#i])
 }
 
 /// `__PLC_SIZES[i]`: the bytes of variable `i` in the image.
@@ -80,7 +78,18 @@ pub fn expand(c: &Container) -> TokenStream {
     let image = image_ident();
     let idents: Vec<_> = c.vars.iter().map(|v| v.ident).collect();
     let tys: Vec<_> = c.vars.iter().map(|v| v.ty).collect();
-    let offsets: Vec<_> = (0..c.vars.len()).map(offset).collect();
+    // At run time the offsets are read through a `&'static` to the promoted array: indexing
+    // the `const` itself would copy the whole array onto the stack at every use in an
+    // unoptimised build (a 2,000-variable struct overflowed the stack), and an inline `const`
+    // block per use costs seconds of incremental checking. Optimised, the loads fold away.
+    let n = Literal::usize_unsuffixed(c.vars.len());
+    let at = quote!(let __plc_at: &'static [usize; #n] = &__PLC_OFFSETS;);
+    let offsets: Vec<_> = (0..c.vars.len())
+        .map(|i| {
+            let i = Literal::usize_unsuffixed(i);
+            quote!(__plc_at[#i])
+        })
+        .collect();
     quote! {
         #[inline]
         fn to_image(&self) -> #image {
@@ -91,6 +100,7 @@ pub fn expand(c: &Container) -> TokenStream {
 
         #[inline]
         fn from_image(image: &#image) -> Self {
+            #at
             Self {
                 #(#idents: <#tys as #p::PlcType>::from_repr(
                     #p::repr_at::<#tys>(&image.0, #offsets)
@@ -100,6 +110,7 @@ pub fn expand(c: &Container) -> TokenStream {
 
         #[inline]
         fn load_image(&mut self, image: &#image) {
+            #at
             #(self.#idents = <#tys as #p::PlcType>::from_repr(
                 #p::repr_at::<#tys>(&image.0, #offsets)
             );)*
@@ -107,6 +118,7 @@ pub fn expand(c: &Container) -> TokenStream {
 
         #[inline]
         fn store_image(&self, image: &mut #image) {
+            #at
             #(*#p::repr_at_mut::<#tys>(&mut image.0, #offsets) =
                 <#tys as #p::PlcType>::to_repr(&self.#idents);)*
         }
