@@ -271,8 +271,11 @@ impl std::error::Error for SetError {}
 /// assert_eq!(Gm::from_image(&gm.to_image()), gm);
 /// ```
 pub trait GlobalMemory: Sized {
-    /// The shared-memory image: `#[repr(C)]`, alignment 1, no padding, fields in declaration
-    /// order; bools as `u8`, numbers little endian, strings `FixedString<N>`.
+    /// The shared-memory image: `#[repr(C)]`, alignment 1, no padding, each variable's bytes
+    /// at its [`VarInfo::offset`], in declaration order; bools as `u8`, numbers little endian,
+    /// strings `FixedString<N>`. The derive makes it one byte array: the bytes are those of a
+    /// `#[repr(C)]` struct with one such field per variable, without that struct's compile
+    /// time.
     type Image: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy;
 
     /// One entry per field, in declaration order.

@@ -71,7 +71,33 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
     }
 }
 
+/// The parts of a cycle, each a step of its own, to time apart: where a cycle's time goes.
+pub type Parts<C> = [(&'static str, fn(&mut C)); 5];
+
 impl<T: GlobalMemory> FrameworkCycle<T> {
+    /// The five parts of [`step`](Self::step): snapshot, load, bits (unpack and pack), store,
+    /// publish.
+    pub fn parts() -> Parts<Self> {
+        [
+            ("snapshot", |c| {
+                c.owner
+                    .snapshot_image_into(&mut c.image_in.0)
+                    .expect("the benchmark owns its segment")
+            }),
+            ("load", |c| c.gm.load_image(black_box(&c.image_in.0))),
+            ("bits", |c| {
+                c.gm.unpack_bits();
+                c.gm.pack_bits();
+            }),
+            ("store", |c| c.gm.store_image(black_box(&mut c.image_out.0))),
+            ("publish", |c| {
+                c.owner
+                    .publish_image(black_box(&c.image_out.0))
+                    .expect("the benchmark owns its segment")
+            }),
+        ]
+    }
+
     /// What `plc_io::Runtime` itself does around the tick: no snapshot in (inputs come from
     /// the bus straight into the struct, tools' writes through the mailbox), so `unpack_bits`,
     /// `pack_bits`, the image out and the publish.
@@ -106,6 +132,28 @@ impl<H: HandWritten> Default for HandCycle<H> {
 }
 
 impl<H: HandWritten> HandCycle<H> {
+    /// The same five parts as [`FrameworkCycle::parts`].
+    pub fn parts() -> Parts<Self> {
+        [
+            ("snapshot", |c| c.lock.snapshot(c.image_in.as_mut_bytes())),
+            ("load", |c| {
+                c.hand
+                    .load(black_box(&c.image_in.as_bytes()[..H::IMAGE_SIZE]))
+            }),
+            ("bits", |c| {
+                c.hand.unpack();
+                c.hand.pack();
+            }),
+            ("store", |c| {
+                c.hand
+                    .store(black_box(&mut c.image_out.as_mut_bytes()[..H::IMAGE_SIZE]))
+            }),
+            ("publish", |c| {
+                c.lock.publish(black_box(c.image_out.as_bytes()))
+            }),
+        ]
+    }
+
     /// One cycle.
     #[inline(never)]
     pub fn step(&mut self) {

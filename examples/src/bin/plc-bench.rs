@@ -93,6 +93,20 @@ fn cycle(segment: &str, batches: usize) {
     println!("cycle_1k_vs_handwritten: {:.2}", ratio(ours, theirs));
     println!("cycle_1k_vs_memcpy: {:.2}", ratio(ours, memcpy));
     println!("cycle_1k_runtime_vs_memcpy: {:.2}", ratio(runtime, memcpy));
+    // Where the time goes: each part alone, ours and hand-written side by side.
+    let hand_parts = HandCycle::<Hand1k>::parts();
+    for ((name, part), (_, hand_part)) in
+        FrameworkCycle::<Gm1k>::parts().into_iter().zip(hand_parts)
+    {
+        let (ours, theirs) = side_by_side(
+            batches / 4,
+            2000,
+            || part(&mut framework),
+            || hand_part(&mut hand),
+        );
+        println!("cycle_1k_{name}_ns: {}", ours.as_nanos());
+        println!("cycle_1k_{name}_handwritten_ns: {}", theirs.as_nanos());
+    }
 }
 
 /// The other process: publishes a 64 KiB image at 1 kHz.
