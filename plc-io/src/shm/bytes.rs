@@ -13,6 +13,7 @@ use super::layout::Base;
 use std::sync::atomic::{AtomicU8, AtomicU64, Ordering::Relaxed};
 
 /// The `n` words from `offset` (8-aligned) and the `tail` bytes after them, bounds checked once.
+#[inline]
 fn region(base: &Base, offset: usize, words: usize, tail: usize) -> (&[AtomicU64], &[AtomicU8]) {
     let end = offset + words * 8 + tail;
     assert!(
@@ -32,6 +33,7 @@ fn region(base: &Base, offset: usize, words: usize, tail: usize) -> (&[AtomicU64
 }
 
 /// Reads `out.len()` bytes at `offset` (8-aligned) with relaxed atomic loads.
+#[inline]
 pub fn load(base: &Base, offset: usize, out: &mut [u8]) {
     let (chunks, rest) = out.as_chunks_mut::<8>();
     let (words, tail) = region(base, offset, chunks.len(), rest.len());
@@ -44,6 +46,7 @@ pub fn load(base: &Base, offset: usize, out: &mut [u8]) {
 }
 
 /// Writes `data` at `offset` (8-aligned) with relaxed atomic stores.
+#[inline]
 pub fn store(base: &Base, offset: usize, data: &[u8]) {
     let (chunks, rest) = data.as_chunks::<8>();
     let (words, tail) = region(base, offset, chunks.len(), rest.len());

@@ -124,6 +124,8 @@ unsafe impl Send for Base {}
 // SAFETY: as above: no plain reads or writes are done through it.
 unsafe impl Sync for Base {}
 
+// Small and on every publish and snapshot, which are generic and so compiled in the user's
+// crate: without `#[inline]` each of these would be a call across crates.
 impl Base {
     /// # Safety
     /// `ptr` must point to a mapping of at least `len` bytes, 8-byte aligned, that stays mapped
@@ -132,15 +134,18 @@ impl Base {
         Base { ptr, len }
     }
 
+    #[inline]
     pub fn len(&self) -> usize {
         self.len
     }
 
+    #[inline]
     pub fn ptr(&self) -> *mut u8 {
         self.ptr
     }
 
     /// The `u64` at `offset` as an atomic.
+    #[inline]
     pub fn word(&self, offset: usize) -> &AtomicU64 {
         assert!(
             offset.is_multiple_of(8) && offset + 8 <= self.len,
@@ -152,10 +157,12 @@ impl Base {
         unsafe { &*(self.ptr.add(offset) as *const AtomicU64) }
     }
 
+    #[inline]
     pub fn load(&self, offset: usize) -> u64 {
         self.word(offset).load(Ordering::Acquire)
     }
 
+    #[inline]
     pub fn store(&self, offset: usize, v: u64) {
         self.word(offset).store(v, Ordering::Release)
     }

@@ -128,6 +128,7 @@ pub struct Status {
 /// a stalled one alive. The coarse variant is read from the vDSO in a few nanoseconds (the
 /// owner stamps it on every publish); its resolution, a few milliseconds, is far below the
 /// stall threshold.
+#[inline]
 pub(crate) fn now_ns() -> u64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
