@@ -70,6 +70,10 @@ pub struct Var<'a> {
     pub syn_type: SynType,
     /// Symbol name (`name = ".."` or the field name).
     pub symbol: At<String>,
+    /// Whether `symbol` is surely the variable's name: not when the field's attribute did not
+    /// parse and a `name = ".."` in it could not be read either. Name checks skip such a
+    /// field rather than report a name the user may not have given it.
+    pub name_known: bool,
     pub link: Option<At<String>>,
     pub source: Option<At<String>>,
     pub bit: Option<At<i64>>,
@@ -208,6 +212,7 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
             value: field_name.clone(),
             span: ident.span(),
         },
+        name_known: true,
         link: None,
         source: None,
         bit: None,
@@ -222,10 +227,17 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
         mapped_to: None,
         effective_direction: Dir::Internal,
     };
-    if let Some(a) = attr {
-        fill_from_attr(&mut var, a, &field.attrs, cx);
+    match attr {
+        Some(a) => fill_from_attr(&mut var, a, &field.attrs, cx),
+        None => match recover_name(&field.attrs) {
+            Some(Some(name)) => var.symbol = name,
+            Some(None) => {}
+            None => var.name_known = false,
+        },
     }
-    if let Err(e) = names::check_name(&var.symbol.value) {
+    if var.name_known
+        && let Err(e) = names::check_name(&var.symbol.value)
+    {
         cx.error(
             var.symbol.span,
             format!(
@@ -235,6 +247,35 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
         );
     }
     var
+}
+
+/// After darling refused a field's attribute (its error is reported), the `name = ".."` the
+/// attribute may still hold, so that a field `end` renamed `EndPos` is not also reported as
+/// a keyword: `Some(Some(name))`, `Some(None)` if it has no name, `None` if the attribute does
+/// not parse far enough to tell.
+fn recover_name(attrs: &[syn::Attribute]) -> Option<Option<At<String>>> {
+    let mut name = None;
+    for attr in attrs.iter().filter(|a| a.path().is_ident("plc")) {
+        attr.parse_nested_meta(|meta| {
+            if meta.input.peek(syn::Token![=]) {
+                let value = meta.value()?;
+                if meta.path.is_ident("name") {
+                    let lit: syn::LitStr = value.parse()?;
+                    name = Some(At {
+                        value: lit.value(),
+                        span: lit.span(),
+                    });
+                } else {
+                    value.parse::<syn::Expr>()?;
+                }
+            } else if meta.input.peek(syn::token::Paren) {
+                let _nested: TokenStream = meta.input.parse::<proc_macro2::Group>()?.stream();
+            }
+            Ok(())
+        })
+        .ok()?;
+    }
+    Some(name)
 }
 
 fn fill_from_attr(var: &mut Var, a: FieldAttr, attrs: &[syn::Attribute], cx: &mut Ctxt) {

@@ -19,9 +19,10 @@ pub fn check(c: &mut Container, cx: &mut Ctxt) {
 }
 
 fn duplicate_names(c: &Container, cx: &mut Ctxt) {
-    for (i, v) in c.vars.iter().enumerate() {
+    for (i, v) in c.vars.iter().enumerate().filter(|(_, v)| v.name_known) {
         if let Some(first) = c.vars[..i]
             .iter()
+            .filter(|w| w.name_known)
             .find(|w| names::same_name(&w.symbol.value, &v.symbol.value))
         {
             cx.error(
