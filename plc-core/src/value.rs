@@ -54,6 +54,12 @@ pub enum ValueError {
         /// The capacity in bytes.
         capacity: usize,
     },
+    /// Text with a NUL (zero) byte: a stored string ends at its first zero byte, so what
+    /// follows would be lost.
+    Nul {
+        /// Byte offset of the NUL in the text as given.
+        at: usize,
+    },
     /// Text that does not parse as a value of the type.
     Syntax {
         /// The type that was expected.
@@ -74,6 +80,10 @@ impl fmt::Display for ValueError {
             ValueError::TooLong { len, capacity } => write!(
                 f,
                 "text of {len} bytes is longer than the capacity of {capacity} bytes"
+            ),
+            ValueError::Nul { at } => write!(
+                f,
+                "text has a NUL (zero) byte at byte {at}, where a stored string ends: remove it"
             ),
             ValueError::Syntax { expected } => match expected {
                 IecType::Bool => f.write_str("expected a BOOL: true, false, 1 or 0"),
@@ -192,6 +202,10 @@ impl Value {
                 let len = unquoted.len();
                 if len > 255 {
                     return Err(ValueError::TooLong { len, capacity: 255 });
+                }
+                // Where the user typed it: an escape cannot make a NUL, so it is in `text`.
+                if let Some(at) = text.find('\0') {
+                    return Err(ValueError::Nul { at });
                 }
                 Value::Text(FixedString::from_str_truncate(unquoted.as_ref()))
             }
@@ -377,6 +391,17 @@ mod tests {
             Ok(text("a \"b\""))
         );
         assert_eq!(Value::parse("\"\"", IecType::String), Ok(text("")));
+        // Text after a NUL would be cut off when stored: refused, plain or quoted.
+        assert_eq!(
+            Value::parse("ab\0cd", IecType::String),
+            Err(ValueError::Nul { at: 2 })
+        );
+        assert_eq!(
+            Value::parse("\"x\0\"", IecType::String),
+            Err(ValueError::Nul { at: 2 })
+        );
+        let e = ValueError::Nul { at: 2 }.to_string();
+        assert!(e.contains("NUL (zero) byte at byte 2"), "{e}");
         let long = "x".repeat(256);
         assert_eq!(
             Value::parse(&long, IecType::String),
