@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{role, spawn_role, unique, wait_for};
+use common::{kill9, role, spawn_role, unique, wait_for};
 use plc_core::{GlobalMemory, Value};
 use plc_io::retain::RetainStore;
 use plc_io::shm::{DynSegment, OwnerState, RunState, SharedGlobalMemory, ShmError};
@@ -119,6 +119,62 @@ fn a_panicking_program_zeroes_outputs_and_faults_the_io() {
     let log = io.0.lock().unwrap().clone();
     assert!(log.contains(&"fault out=0 valve=0".to_string()), "{log:?}");
     assert_eq!(log.last().unwrap(), "stop");
+}
+
+#[test]
+fn a_second_ctrl_c_ends_a_program_whose_cycle_never_returns() {
+    if role().as_deref() == Some("hung_tick") {
+        let name = std::env::var("SEGMENT").unwrap();
+        let _ = Runtime::<Gm>::builder()
+            .period(Duration::from_millis(1))
+            .segment(&name)
+            .build()
+            .run(|_| {
+                loop {
+                    std::thread::sleep(Duration::from_secs(1));
+                }
+            });
+        return;
+    }
+    if role().is_some() {
+        return;
+    }
+    let name = unique("hung");
+    let mut child = spawn_role(
+        "a_second_ctrl_c_ends_a_program_whose_cycle_never_returns",
+        "hung_tick",
+        &[("SEGMENT", name.clone())],
+    );
+    // The segment exists once the signal handlers are in place and the first cycle is due.
+    wait_for(Duration::from_secs(10), || {
+        SharedGlobalMemory::<Gm>::attach(&name).ok()
+    });
+    std::thread::sleep(Duration::from_millis(100));
+    let pid = child.id() as i32;
+    let sigint = || {
+        // SAFETY: sending a signal to a pid we spawned.
+        unsafe { libc::kill(pid, libc::SIGINT) };
+    };
+    sigint();
+    std::thread::sleep(Duration::from_millis(500));
+    assert!(
+        child.try_wait().unwrap().is_none(),
+        "the first Ctrl-C only asks for a stop, which a hung cycle never reaches"
+    );
+    sigint();
+    let status = (0..500).find_map(|_| {
+        std::thread::sleep(Duration::from_millis(20));
+        child.try_wait().unwrap()
+    });
+    let Some(status) = status else {
+        kill9(&mut child);
+        panic!("the second Ctrl-C did not end the program within 10 s");
+    };
+    assert_eq!(
+        status.code(),
+        Some(1),
+        "the second Ctrl-C ends it: {status:?}"
+    );
 }
 
 #[test]

@@ -73,9 +73,14 @@ impl StopHandle {
 
     /// Makes SIGINT (Ctrl-C) and SIGTERM ask for a stop instead of ending the process at once,
     /// so the program (a runtime, or a tool such as `plc log`) can finish cleanly: save, flush,
-    /// release its I/O.
+    /// release its I/O. A second signal while the stop is still pending ends the process at
+    /// once with exit code 1: the way out of a cycle that never returns (retained values keep
+    /// their last save, which is always whole).
     pub fn stop_on_signals(&self) -> std::io::Result<()> {
         for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+            // First the exit if a stop is already pending, then the flag: handlers of one
+            // signal run in the order they were registered.
+            signal_hook::flag::register_conditional_shutdown(sig, 1, self.0.clone())?;
             signal_hook::flag::register(sig, self.0.clone())?;
         }
         Ok(())
