@@ -115,6 +115,9 @@ pub struct RetainReport {
     /// In the file but not restorable (type narrowed, other kind, other size): name and why;
     /// they kept their initial value.
     pub reset: Vec<(String, String)>,
+    /// Temporary files of saves that a process did not finish (it died between creating and
+    /// renaming one), removed. They never hold the retained values: those are in the file.
+    pub stale_temps: Vec<PathBuf>,
 }
 
 impl RetainReport {
@@ -133,7 +136,24 @@ impl RetainReport {
                 path.display()
             );
         }
+        for temp in &self.stale_temps {
+            eprintln!(
+                "retain {}: removed {}, left by a save that did not finish",
+                path.display(),
+                temp.display()
+            );
+        }
     }
+}
+
+/// Whether process `pid` exists (a signal 0 reaches it, or exists but is not ours to signal).
+fn process_alive(pid: u32) -> bool {
+    let Ok(pid) = i32::try_from(pid) else {
+        return false;
+    };
+    // SAFETY: signal 0 only checks that the process exists; nothing is delivered.
+    let reached = unsafe { libc::kill(pid, 0) } == 0;
+    reached || std::io::Error::last_os_error().raw_os_error() == Some(libc::EPERM)
 }
 
 fn to_json(v: &Value) -> serde_json::Value {
@@ -232,9 +252,7 @@ impl RetainStore {
             error,
         };
         let crc = crc32fast::hash(body);
-        let tmp = self
-            .path
-            .with_extension(format!("tmp.{}", std::process::id()));
+        let tmp = self.temp_path(std::process::id());
         {
             let mut f = File::create(&tmp).map_err(io)?;
             fault_point(FaultPoint::BeforeWrite);
@@ -254,6 +272,42 @@ impl RetainStore {
         File::open(dir).and_then(|d| d.sync_all()).map_err(io)?;
         fault_point(FaultPoint::AfterDirFsync);
         Ok(())
+    }
+
+    /// The temporary file a save by process `pid` writes before renaming it over the file.
+    fn temp_path(&self, pid: u32) -> PathBuf {
+        self.path.with_extension(format!("tmp.{pid}"))
+    }
+
+    /// Removes the temporary files of saves by processes that are gone, and returns them. A
+    /// live process's file is left alone: it may be saving right now.
+    fn remove_stale_temps(&self) -> Vec<PathBuf> {
+        let prefix = match self.path.with_extension("tmp.").file_name() {
+            Some(n) => n.to_string_lossy().into_owned(),
+            None => return Vec::new(),
+        };
+        let dir = match self.path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
+        let Ok(entries) = fs::read_dir(&dir) else {
+            return Vec::new();
+        };
+        let mut removed = Vec::new();
+        for entry in entries.flatten() {
+            let name = entry.file_name();
+            let pid = name
+                .to_str()
+                .and_then(|n| n.strip_prefix(&prefix))
+                .and_then(|pid| pid.parse::<u32>().ok());
+            if let Some(pid) = pid.filter(|&pid| !process_alive(pid)) {
+                let temp = self.temp_path(pid);
+                if fs::remove_file(&temp).is_ok() {
+                    removed.push(temp);
+                }
+            }
+        }
+        removed
     }
 
     fn read_body(&self) -> Result<Option<Body>, RetainError> {
@@ -293,7 +347,10 @@ impl RetainStore {
     /// file is not an error: every nonvolatile variable is then reported new.
     pub fn load<T: GlobalMemory>(&self, gm: &mut T) -> Result<RetainReport, RetainError> {
         let body = self.read_body()?.unwrap_or(Body { variables: vec![] });
-        let mut report = RetainReport::default();
+        let mut report = RetainReport {
+            stale_temps: self.remove_stale_temps(),
+            ..RetainReport::default()
+        };
         for stored in &body.variables {
             if !T::VARIABLES
                 .iter()

@@ -205,6 +205,14 @@ fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
             "fault at step {step}: every value of that file"
         );
         assert_eq!(report.restored.len(), 7, "fault at step {step}");
+        // A save stopped before its rename left its temporary file; loading removes it.
+        assert_eq!(
+            report.stale_temps.len(),
+            usize::from(step <= 3),
+            "fault at step {step}: {:?}",
+            report.stale_temps
+        );
+        assert_eq!(temporary_files(&dir), Vec::<String>::new(), "step {step}");
     }
     // And kill -9 at arbitrary moments while saving in a loop.
     let env = [("RETAIN", path.display().to_string())];
@@ -220,7 +228,17 @@ fn a_crash_at_any_step_of_a_save_leaves_the_old_or_the_new_file() {
             gm.table, [gm.cycles as u16; 3],
             "a consistent file after kill {i}"
         );
+        assert_eq!(temporary_files(&dir), Vec::<String>::new(), "kill {i}");
     }
+}
+
+/// Names of the files in `dir` other than retain files.
+fn temporary_files(dir: &std::path::Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| !n.ends_with(".retain"))
+        .collect()
 }
 
 #[derive(GlobalMemory, Debug, Clone, PartialEq)]
