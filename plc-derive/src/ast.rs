@@ -269,7 +269,7 @@ fn recover_name(attrs: &[syn::Attribute]) -> Option<Option<At<String>>> {
                     value.parse::<syn::Expr>()?;
                 }
             } else if meta.input.peek(syn::token::Paren) {
-                let _nested: TokenStream = meta.input.parse::<proc_macro2::Group>()?.stream();
+                meta.input.parse::<proc_macro2::Group>()?;
             }
             Ok(())
         })
