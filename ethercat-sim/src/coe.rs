@@ -1,8 +1,11 @@
 //! CoE (CANopen over EtherCAT) SDO server of a simulated SubDevice: an object dictionary and
-//! the expedited upload/download services ethercrab uses (EMULATOR-NOTES §8).
+//! the expedited upload/download services ethercrab uses (EMULATOR-NOTES §8), plus the normal
+//! upload of objects longer than 4 bytes (strings such as the device name) that fit one
+//! mailbox. Segmented transfers are not simulated.
 //!
 //! Frames (after the 6-byte mailbox header): CoE header u16 (service in bits 12-15: 2 SDO
-//! request, 3 SDO response), SDO command byte, index u16, sub-index u8, 4 data bytes.
+//! request, 3 SDO response), SDO command byte, index u16, sub-index u8, 4 data bytes; a normal
+//! upload response has the complete size in those 4 bytes and the data after them.
 
 /// CoE services (bits 12-15 of the CoE header).
 const SDO_REQUEST: u16 = 2;
@@ -13,6 +16,8 @@ const ABORT_UNKNOWN_COMMAND: u32 = 0x0504_0001;
 const ABORT_READ_ONLY: u32 = 0x0601_0002;
 const ABORT_NO_OBJECT: u32 = 0x0602_0000;
 const ABORT_NO_SUB_INDEX: u32 = 0x0609_0011;
+/// "General error": the reply a segmented upload would need, which is not simulated.
+const ABORT_NOT_SIMULATED: u32 = 0x0800_0000;
 
 /// One object entry: its value and size in bytes (1, 2 or 4).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,10 +29,12 @@ pub(crate) struct Entry {
     pub(crate) writable: bool,
 }
 
-/// An object dictionary: entries by index and sub-index.
+/// An object dictionary: entries by index and sub-index, and read-only byte strings.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Dictionary {
     pub(crate) entries: Vec<Entry>,
+    /// Objects longer than 4 bytes (VISIBLE STRING), uploaded the normal way.
+    pub(crate) texts: Vec<(u16, u8, Vec<u8>)>,
 }
 
 impl Dictionary {
@@ -51,6 +58,12 @@ impl Dictionary {
         }
     }
 
+    /// Adds a read-only string object (sub-index 0).
+    pub(crate) fn text(&mut self, index: u16, text: &str) {
+        self.texts.retain(|t| t.0 != index);
+        self.texts.push((index, 0, text.as_bytes().to_vec()));
+    }
+
     /// The value of an entry.
     pub(crate) fn get(&self, index: u16, sub: u8) -> Option<u32> {
         self.find(index, sub).map(|e| e.value)
@@ -62,9 +75,10 @@ impl Dictionary {
             .find(|e| (e.index, e.sub) == (index, sub))
     }
 
-    /// Answers one CoE frame (`request` starts at the CoE header); `None` for a service this
-    /// server does not offer (SDO information, emergencies): the device then answers nothing.
-    pub(crate) fn serve(&mut self, request: &[u8]) -> Option<[u8; 10]> {
+    /// Answers one CoE frame (`request` starts at the CoE header) with a reply of at most
+    /// `room` bytes; `None` for a service this server does not offer (SDO information,
+    /// emergencies): the device then answers nothing.
+    pub(crate) fn serve(&mut self, request: &[u8], room: usize) -> Option<Vec<u8>> {
         if request.len() < 10 {
             return None;
         }
@@ -77,18 +91,33 @@ impl Dictionary {
         let sub = request[5];
         let data = u32::from_le_bytes([request[6], request[7], request[8], request[9]]);
         let reply = |command: u8, data: u32| {
-            let mut r = [0u8; 10];
-            r[..2].copy_from_slice(&(SDO_RESPONSE << 12).to_le_bytes());
-            r[2] = command;
-            r[3..5].copy_from_slice(&index.to_le_bytes());
-            r[5] = sub;
-            r[6..].copy_from_slice(&data.to_le_bytes());
+            let mut r = (SDO_RESPONSE << 12).to_le_bytes().to_vec();
+            r.push(command);
+            r.extend_from_slice(&index.to_le_bytes());
+            r.push(sub);
+            r.extend_from_slice(&data.to_le_bytes());
             r
         };
         let abort = |code: u32| reply(0x80, code);
+        if let Some((_, _, text)) = self.texts.iter().find(|t| (t.0, t.1) == (index, sub)) {
+            return Some(match command >> 5 {
+                // Normal upload, size indicated (0x41): the complete size, then the bytes.
+                2 if 10 + text.len() <= room => {
+                    let mut r = reply(0x41, text.len() as u32);
+                    r.extend_from_slice(text);
+                    r
+                }
+                // Too long for one mailbox: a real device would segment it.
+                2 => abort(ABORT_NOT_SIMULATED),
+                1 => abort(ABORT_READ_ONLY),
+                _ => abort(ABORT_UNKNOWN_COMMAND),
+            });
+        }
         let entry = match self.find(index, sub) {
             Some(e) => *e,
-            None if self.entries.iter().any(|e| e.index == index) => {
+            None if self.entries.iter().any(|e| e.index == index)
+                || self.texts.iter().any(|t| t.0 == index) =>
+            {
                 return Some(abort(ABORT_NO_SUB_INDEX));
             }
             None => return Some(abort(ABORT_NO_OBJECT)),
@@ -125,9 +154,11 @@ impl Dictionary {
 
 /// The EL3004's objects that ethercrab reads to reach OP (EMULATOR-NOTES §8, from ethercrab's
 /// capture \[R1\]): no RxPDOs (1C12 empty), four TxPDOs 1A00/1A02/1A04/1A06 of ten entries
-/// each (status bits and a 16-bit value per channel), plus the identity object 0x1018.
+/// each (status bits and a 16-bit value per channel), plus the identity object 0x1018 and the
+/// device name 0x1008 (the name its EEPROM gives, `sii-EL3004.txt`).
 pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
     let mut d = Dictionary::default();
+    d.text(0x1008, "EL3004");
     d.record(0x1018, &[vendor, product, revision, 0], 4, false);
     d.record(0x1C12, &[], 2, true);
     d.record(0x1C13, &[0x1A00, 0x1A02, 0x1A04, 0x1A06], 2, true);
@@ -155,6 +186,9 @@ pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
 mod tests {
     use super::*;
 
+    /// Room for a reply in the EL3004's 128-byte input mailbox, after its 6-byte header.
+    const ROOM: usize = 122;
+
     fn request(command: u8, index: u16, sub: u8, data: u32) -> Vec<u8> {
         let mut r = (SDO_REQUEST << 12).to_le_bytes().to_vec();
         r.push(command);
@@ -167,24 +201,40 @@ mod tests {
     #[test]
     fn expedited_uploads_give_the_size_in_the_command_byte() {
         let mut d = el3004(2, 0x0BBC_3052, 0x0015_0000);
-        let r = d.serve(&request(0x40, 0x1C13, 0, 0)).unwrap();
+        let r = d.serve(&request(0x40, 0x1C13, 0, 0), ROOM).unwrap();
         assert_eq!(r, [0x00, 0x30, 0x4F, 0x13, 0x1C, 0, 4, 0, 0, 0]);
-        let r = d.serve(&request(0x40, 0x1C13, 2, 0)).unwrap();
+        let r = d.serve(&request(0x40, 0x1C13, 2, 0), ROOM).unwrap();
         assert_eq!(r[2], 0x4B);
         assert_eq!(r[6..8], [0x02, 0x1A]);
-        let r = d.serve(&request(0x40, 0x1A02, 10, 0)).unwrap();
+        let r = d.serve(&request(0x40, 0x1A02, 10, 0), ROOM).unwrap();
         assert_eq!((r[2], &r[6..]), (0x43, &[0x10, 0x11, 0x10, 0x60][..]));
     }
 
     #[test]
     fn downloads_change_writable_objects_and_abort_on_others() {
         let mut d = el3004(2, 0x0BBC_3052, 0x0015_0000);
-        let r = d.serve(&request(0x2F, 0x1C13, 0, 0)).unwrap();
+        let r = d.serve(&request(0x2F, 0x1C13, 0, 0), ROOM).unwrap();
         assert_eq!(r[2], 0x60);
         assert_eq!(d.get(0x1C13, 0), Some(0));
-        let r = d.serve(&request(0x2F, 0x1A00, 0, 0)).unwrap();
+        let r = d.serve(&request(0x2F, 0x1A00, 0, 0), ROOM).unwrap();
         assert_eq!((r[2], &r[6..]), (0x80, &0x0601_0002u32.to_le_bytes()[..]));
-        let r = d.serve(&request(0x40, 0x2000, 0, 0)).unwrap();
+        let r = d.serve(&request(0x40, 0x2000, 0, 0), ROOM).unwrap();
         assert_eq!(&r[6..], &0x0602_0000u32.to_le_bytes());
+    }
+
+    #[test]
+    fn a_string_object_is_uploaded_the_normal_way_with_its_complete_size() {
+        let mut d = el3004(2, 0x0BBC_3052, 0x0015_0000);
+        let r = d.serve(&request(0x40, 0x1008, 0, 0), ROOM).unwrap();
+        assert_eq!(r[..6], [0x00, 0x30, 0x41, 0x08, 0x10, 0]);
+        assert_eq!(r[6..10], 6u32.to_le_bytes(), "the complete size");
+        assert_eq!(&r[10..], b"EL3004");
+        // Without room for it in one mailbox (a real device would segment): an abort.
+        let r = d.serve(&request(0x40, 0x1008, 0, 0), 15).unwrap();
+        assert_eq!((r[2], &r[6..]), (0x80, &0x0800_0000u32.to_le_bytes()[..]));
+        let r = d.serve(&request(0x2F, 0x1008, 0, 0), ROOM).unwrap();
+        assert_eq!((r[2], &r[6..]), (0x80, &0x0601_0002u32.to_le_bytes()[..]));
+        let r = d.serve(&request(0x40, 0x1008, 1, 0), ROOM).unwrap();
+        assert_eq!(&r[6..], &0x0609_0011u32.to_le_bytes(), "no sub-index 1");
     }
 }

@@ -355,7 +355,7 @@ impl Device {
             return;
         }
         let body = self.mem[out_start + 6..out_start + 6 + len.min(in_len - 6)].to_vec();
-        let Some(reply) = self.coe.as_mut().and_then(|d| d.serve(&body)) else {
+        let Some(reply) = self.coe.as_mut().and_then(|d| d.serve(&body, in_len - 6)) else {
             return;
         };
         let area = &mut self.mem[in_start..in_start + in_len];

@@ -4,8 +4,8 @@
 //! - [`Device`]: Beckhoff EK1100, EL1004, EL2004, EL2828, EL2889 and EL3004, built from the
 //!   SII EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface
 //!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed-clock
-//!   registers; the EL3004 with a CoE mailbox (expedited SDO upload and download) through
-//!   which ethercrab reads its PDO assignment.
+//!   registers; the EL3004 with a CoE mailbox (expedited SDO upload and download, normal
+//!   upload of its device name 0x1008) through which ethercrab reads its PDO assignment.
 //! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR,
 //!   LRD/LWR/LRW, FRMW and the read-write variants) with working counters as real ESCs count
 //!   them; inputs, outputs and faults for tests.
@@ -64,8 +64,8 @@
 //! answering), a power cycle (back in INIT, unaddressed), a tripped SyncManager watchdog
 //! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change.
 //!
-//! Not simulated: mailbox services other than expedited SDO transfers (segmented SDOs, SDO
-//! information, FoE, emergencies), the slower state changes of terminals with a
+//! Not simulated: mailbox services other than expedited SDO transfers and normal uploads
+//! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of terminals with a
 //! microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a test trips the
 //! watchdog), and EEPROM contents the captures do not hold (see `data/README.md`).
 #![deny(missing_docs)]

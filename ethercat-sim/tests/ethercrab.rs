@@ -220,6 +220,9 @@ fn an_el3004_reaches_op_through_its_coe_mailbox_and_delivers_16_input_bytes() {
     // An SDO upload through the mailbox, as a program reads an object.
     let product: u32 = block_on(ai.sdo_read(0x1018, 2)).unwrap();
     assert_eq!(product, 0x0BBC_3052);
+    // A string longer than 4 bytes comes in one normal (not expedited) upload.
+    let name: [u8; 6] = block_on(ai.sdo_read(0x1008, 0)).unwrap();
+    assert_eq!(&name, b"EL3004");
     let group = block_on(group.into_op(&md)).unwrap();
     assert_eq!(bus.al_state(1), al::OP);
     let ai = group.subdevice(&md, 1).unwrap();
