@@ -175,6 +175,8 @@ fn a_second_ctrl_c_ends_a_program_whose_cycle_never_returns() {
         Some(1),
         "the second Ctrl-C ends it: {status:?}"
     );
+    // The next run takes the segment over, as after any crash (and removes it as it ends).
+    drop(SharedGlobalMemory::<Gm>::create(&name).expect("the next run takes over"));
 }
 
 #[test]

@@ -154,6 +154,9 @@ fn snapshot_latency(segment: &str, seconds: u64) {
     }
     let _ = child.kill();
     let _ = child.wait();
+    drop(reader);
+    // Taking the killed publisher's segment over and dropping it removes it from /dev/shm.
+    drop(SharedGlobalMemory::<Big64k>::create(&name));
     lat.sort();
     let p99 = lat[lat.len() * 99 / 100];
     println!("snapshot_p99_us_64k: {:.1}", p99.as_secs_f64() * 1e6);
