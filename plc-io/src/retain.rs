@@ -265,13 +265,18 @@ impl RetainStore {
         fault_point(FaultPoint::BeforeRename);
         fs::rename(&tmp, &self.path).map_err(io)?;
         fault_point(FaultPoint::BeforeDirFsync);
-        let dir = match self.path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
+        let dir = self.dir();
         File::open(dir).and_then(|d| d.sync_all()).map_err(io)?;
         fault_point(FaultPoint::AfterDirFsync);
         Ok(())
+    }
+
+    /// The directory the file is in (`.` for a bare file name).
+    fn dir(&self) -> PathBuf {
+        match self.path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+            _ => PathBuf::from("."),
+        }
     }
 
     /// The temporary file a save by process `pid` writes before renaming it over the file.
@@ -286,10 +291,7 @@ impl RetainStore {
             Some(n) => n.to_string_lossy().into_owned(),
             None => return Vec::new(),
         };
-        let dir = match self.path.parent() {
-            Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-            _ => PathBuf::from("."),
-        };
+        let dir = self.dir();
         let Ok(entries) = fs::read_dir(&dir) else {
             return Vec::new();
         };
