@@ -62,12 +62,7 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
             .snapshot_image_into(&mut self.image_in.0)
             .expect("the benchmark owns its segment");
         self.gm.load_image(&self.image_in.0);
-        self.gm.unpack_bits();
-        self.gm.pack_bits();
-        self.gm.store_image(&mut self.image_out.0);
-        self.owner
-            .publish_image(black_box(&self.image_out.0))
-            .expect("the benchmark owns its segment");
+        self.bits_and_out();
     }
 }
 
@@ -103,6 +98,12 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
     /// `pack_bits`, the image out and the publish.
     #[inline(never)]
     pub fn runtime_step(&mut self) {
+        self.bits_and_out();
+    }
+
+    /// The part both cycles share: `unpack_bits`, `pack_bits`, the image out, the publish.
+    #[inline(always)]
+    fn bits_and_out(&mut self) {
         self.gm.unpack_bits();
         self.gm.pack_bits();
         self.gm.store_image(&mut self.image_out.0);
