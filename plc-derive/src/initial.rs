@@ -178,38 +178,30 @@ impl Initial {
         let text = self.json();
         let out_of_range =
             format!("initial value {text} is out of range for the type of `{field}`");
+        // A number literal: the type must be a number, and then `fits` must hold.
+        let number = |fits: TokenStream| {
+            vec![
+                (
+                    quote!(#facts.element_is_number()),
+                    format!(
+                        "initial value {text} is a number, but the type of `{field}` is not a \
+                         number type"
+                    ),
+                ),
+                (
+                    quote!(!#facts.element_is_number() || #fits),
+                    out_of_range.clone(),
+                ),
+            ]
+        };
         match &self.value {
             InitialValue::Bool(_) => vec![(
                 quote!(#facts.initial_bool_fits()),
                 format!("initial value {text} is a bool, but the type of `{field}` is not bool"),
             )],
-            InitialValue::Int(n) => vec![
-                (
-                    quote!(#facts.element_is_number()),
-                    format!(
-                        "initial value {text} is a number, but the type of `{field}` is not a \
-                         number type"
-                    ),
-                ),
-                (
-                    quote!(!#facts.element_is_number() || #facts.initial_int_fits(#n)),
-                    out_of_range,
-                ),
-            ],
+            InitialValue::Int(n) => number(quote!(#facts.initial_int_fits(#n))),
             // Beyond every integer type: a number, but only a real can hold it.
-            InitialValue::BigInt { value: f, .. } => vec![
-                (
-                    quote!(#facts.element_is_number()),
-                    format!(
-                        "initial value {text} is a number, but the type of `{field}` is not a \
-                         number type"
-                    ),
-                ),
-                (
-                    quote!(!#facts.element_is_number() || #facts.initial_real_fits(#f)),
-                    out_of_range,
-                ),
-            ],
+            InitialValue::BigInt { value: f, .. } => number(quote!(#facts.initial_real_fits(#f))),
             InitialValue::Float(f) => vec![
                 (
                     quote!(#facts.element_is_real()),
