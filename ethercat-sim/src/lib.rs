@@ -65,9 +65,10 @@
 //! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change.
 //!
 //! Not simulated: mailbox services other than expedited SDO transfers and normal uploads
-//! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of terminals with a
-//! microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a test trips the
-//! watchdog), and EEPROM contents the captures do not hold (see `data/README.md`).
+//! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of
+//! terminals with a microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a
+//! test trips the watchdog), and EEPROM contents the captures do not hold (see
+//! `data/README.md`).
 #![deny(missing_docs)]
 
 pub mod al;
