@@ -19,14 +19,18 @@
 #![cfg_attr(not(any(feature = "std", test)), no_std)]
 #![deny(missing_docs)]
 
+pub mod access;
 pub mod address;
 pub mod capacity;
+#[cfg(feature = "std")]
+pub mod decl;
 mod iec_type;
 pub mod layout;
 pub mod link;
 pub mod names;
 pub mod widening;
 
+pub use access::{Access, Direction};
 pub use address::{AddressError, AddressErrorKind, Area, IecAddress, Size};
 pub use iec_type::{IecType, TypeFamily, UnknownType};
 pub use link::{Link, LinkError};
