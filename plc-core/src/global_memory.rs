@@ -5,70 +5,7 @@ use crate::{IecType, ProcessImage, ProcessImageError, Value, ValueError};
 use core::fmt;
 use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 
-/// Whether tools may write a variable.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum Access {
-    /// Tools may write it (through the mailbox, `plc set`), subject to its direction.
-    ReadWrite,
-    /// `#[plc(read_only)]`: tools may only read it (seed 003: "Read Only").
-    ReadOnly,
-}
-
-/// Where a variable's value comes from, which decides who may write it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
-pub enum Direction {
-    /// Written by the hardware each cycle (`%I`, an input PDO entry); tools may not write it.
-    Input,
-    /// Written by the program and sent to the hardware (`%Q`, an output PDO entry).
-    Output,
-    /// A request from outside (HMI setpoints, commands) that the program reads.
-    Command,
-    /// A report from the program to the outside; tools may not write it.
-    Status,
-    /// The program's own variable (the default).
-    Internal,
-}
-
-impl Direction {
-    /// The name used in `#[plc(direction = "...")]` and in JSON.
-    pub const fn name(self) -> &'static str {
-        match self {
-            Direction::Input => "input",
-            Direction::Output => "output",
-            Direction::Command => "command",
-            Direction::Status => "status",
-            Direction::Internal => "internal",
-        }
-    }
-
-    /// Parses a direction name.
-    pub fn from_name(name: &str) -> Option<Direction> {
-        [
-            Direction::Input,
-            Direction::Output,
-            Direction::Command,
-            Direction::Status,
-            Direction::Internal,
-        ]
-        .into_iter()
-        .find(|d| d.name() == name)
-    }
-
-    /// Whether tools may write a variable of this direction (not inputs, not status).
-    pub const fn writable_from_outside(self) -> bool {
-        !matches!(self, Direction::Input | Direction::Status)
-    }
-}
-
-impl fmt::Display for Direction {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.pad(self.name())
-    }
-}
+pub use plc_rules::{Access, Direction};
 
 /// A bool mapped onto one bit of an integer variable (seed 000: `source` and `bit`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -133,34 +70,22 @@ pub struct VarInfo {
 impl VarInfo {
     /// Number of elements: the product of the dimensions, 1 for a scalar.
     pub const fn elements(&self) -> usize {
-        let mut n = 1;
-        let mut i = 0;
-        while i < self.dims.len() {
-            n *= self.dims[i];
-            i += 1;
-        }
-        n
+        plc_rules::access::elements(self.dims)
     }
 
     /// Bytes of one element (0 for an array without items, which the derive refuses).
     pub const fn element_size(&self) -> usize {
-        match self.elements() {
-            0 => 0,
-            n => self.size / n,
-        }
+        plc_rules::access::element_size(self.size, self.dims)
     }
 
     /// Capacity in bytes of a `STRING` element (0 for other types).
     pub const fn string_capacity(&self) -> usize {
-        match self.iec_type {
-            IecType::String => self.element_size(),
-            _ => 0,
-        }
+        plc_rules::access::string_capacity(self.iec_type, self.size, self.dims)
     }
 
     /// Whether tools may write it: read-write and neither an input nor a status.
     pub const fn writable_from_outside(&self) -> bool {
-        matches!(self.access, Access::ReadWrite) && self.direction.writable_from_outside()
+        plc_rules::access::writable_from_outside(self.access, self.direction)
     }
 
     /// Builds a `VarInfo` from its parts; for the derive (`__private`), not for users.

@@ -1,102 +1,94 @@
-//! The model of a `#[derive(GlobalMemory)]` struct: one `Var` per field with its attributes
-//! parsed and validated on their own, each keeping the span of what the user wrote so later
-//! errors can point at it (serde_derive's `ast`).
+//! The model of a `#[derive(GlobalMemory)]` struct: each field's attributes parsed into the
+//! declaration model (`plc_rules::decl`), each keeping the span of what the user wrote so the
+//! checker's issues point at it, beside what only the Rust code has (serde_derive's `ast`).
 
 use crate::attr::{self, ContainerAttr, FieldAttr};
 use crate::ctxt::Ctxt;
 use crate::initial::Initial;
 use crate::types::{self, SynType};
+use darling::util::SpannedValue;
 use darling::{FromDeriveInput, FromField};
-use plc_rules::address::{Area, IecAddress};
-use plc_rules::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY};
-use plc_rules::{IecType, link::Link, names};
+use plc_rules::IecType;
+use plc_rules::address::IecAddress;
+use plc_rules::decl::{self, Decl, DeclType, Direction, Issue, IssueKind, Located};
 use proc_macro2::{Span, TokenStream};
 use quote::quote;
 use syn::spanned::Spanned;
 use syn::{Data, DeriveInput, Fields, Ident, Type};
 
-/// Where a variable's value comes from (mirrors `plc_core::Direction`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dir {
-    Input,
-    Output,
-    Command,
-    Status,
-    Internal,
+/// Where a declaration was written: a span, or the tokens of a value (syn folds `-1` into one
+/// literal spanned by the `-` alone, and stable Rust cannot join spans, so an error under the
+/// whole value needs its tokens).
+#[derive(Clone, Debug)]
+pub enum Loc {
+    Span(Span),
+    Tokens(TokenStream),
 }
 
-impl Dir {
-    pub fn parse(s: &str) -> Option<Dir> {
-        Some(match s {
-            "input" => Dir::Input,
-            "output" => Dir::Output,
-            "command" => Dir::Command,
-            "status" => Dir::Status,
-            "internal" => Dir::Internal,
-            _ => return None,
-        })
-    }
-
-    pub fn name(self) -> &'static str {
+impl Loc {
+    /// The span an error starts at.
+    pub fn span(&self) -> Span {
         match self {
-            Dir::Input => "input",
-            Dir::Output => "output",
-            Dir::Command => "command",
-            Dir::Status => "status",
-            Dir::Internal => "internal",
+            Loc::Span(s) => *s,
+            Loc::Tokens(t) => t
+                .clone()
+                .into_iter()
+                .next()
+                .map_or_else(Span::call_site, |t| t.span()),
         }
     }
 }
 
 /// A value and the span of the tokens it came from.
-#[derive(Clone, Debug)]
-pub struct At<T> {
-    pub value: T,
-    pub span: Span,
-}
+pub type At<T> = Located<T, Loc>;
 
 pub struct Container<'a> {
     pub ident: &'a Ident,
     /// Path to `plc_core` (`crate = "..."` or `::plc_core`).
     pub krate: TokenStream,
     pub little_endian: bool,
-    pub unaligned: bool,
     pub vars: Vec<Var<'a>>,
+    /// The declaration model of the struct, one variable per field, that `check` applies the
+    /// rules to.
+    pub decl: Decl<Loc>,
 }
 
+impl Container<'_> {
+    /// Each field with its model.
+    pub fn fields(&self) -> impl Iterator<Item = (&Var<'_>, &decl::Var<Loc>)> {
+        self.vars.iter().zip(&self.decl.vars)
+    }
+}
+
+/// A field: what only the Rust code has (its ident, type tokens, the literal's tokens), its
+/// model (`Container::decl`, same index), and what the checker resolved.
 pub struct Var<'a> {
     pub ident: &'a Ident,
     pub ty: &'a Type,
     pub syn_type: SynType,
-    /// Symbol name (`name = ".."` or the field name).
-    pub symbol: At<String>,
-    /// Whether `symbol` is surely the variable's name: not when the field's attribute did not
-    /// parse and a `name = ".."` in it could not be read either. Name checks skip such a
-    /// field rather than report a name the user may not have given it.
-    pub name_known: bool,
-    pub link: Option<At<String>>,
-    pub source: Option<At<String>>,
-    pub bit: Option<At<i64>>,
-    pub at: Option<At<IecAddress>>,
-    pub at_text: Option<String>,
     pub initial: Option<Initial>,
-    pub nonvolatile: bool,
-    pub description: String,
-    pub read_only: bool,
-    pub direction: Option<At<Dir>>,
-    pub iec_type: Option<At<IecType>>,
-    /// Filled in by `check`: index of the source variable of a bit-mapped bool.
+    /// Filled in by `check`: index of the source variable of a bit-mapped bool, and the bit.
     pub mapped_to: Option<(usize, u8)>,
     /// Filled in by `check`: the effective direction.
-    pub effective_direction: Dir,
+    pub effective_direction: Direction,
+    /// Filled in by `check`: the valid I/O address of `at`.
+    pub address: Option<IecAddress>,
 }
 
 impl Var<'_> {
     /// The field name without `r#`.
     pub fn field_name(&self) -> String {
-        let s = self.ident.to_string();
-        s.strip_prefix("r#").map(str::to_string).unwrap_or(s)
+        field_name(self.ident)
     }
+
+    pub fn ty_span(&self) -> Span {
+        self.ty.span()
+    }
+}
+
+fn field_name(ident: &Ident) -> String {
+    let s = ident.to_string();
+    s.strip_prefix("r#").map(str::to_string).unwrap_or(s)
 }
 
 /// Parses the struct; every problem goes to `cx`. Returns `None` only when there is no struct
@@ -169,7 +161,7 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
                     order.span(),
                     format!(
                         "unknown byte order `{other}`: write `byte_order = \"little\"` or \
-                         `\"big\"` (the default, as seed 004)"
+                         `\"big\"` (the default: IEC 61131-3 process images are big endian)"
                     ),
                 ),
             }
@@ -177,20 +169,27 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
         unaligned = c.unaligned.is_present();
     }
     // Named fields always have an identifier; `filter_map` keeps that a fact, not a panic.
-    let vars = fields
+    let (vars, decl_vars) = fields
         .iter()
         .filter_map(|f| f.ident.as_ref().map(|ident| parse_field(f, ident, cx)))
-        .collect();
+        .unzip();
     Some(Container {
         ident: &input.ident,
         krate,
         little_endian,
-        unaligned,
         vars,
+        decl: Decl {
+            vars: decl_vars,
+            unaligned,
+        },
     })
 }
 
-fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Var<'a> {
+fn parse_field<'a>(
+    field: &'a syn::Field,
+    ident: &'a Ident,
+    cx: &mut Ctxt,
+) -> (Var<'a>, decl::Var<Loc>) {
     let attr = match FieldAttr::from_field(field) {
         Ok(a) => Some(a),
         Err(e) => {
@@ -199,54 +198,35 @@ fn parse_field<'a>(field: &'a syn::Field, ident: &'a Ident, cx: &mut Ctxt) -> Va
         }
     };
     let syn_type = types::analyse(&field.ty);
-    check_type(&field.ty, &syn_type, cx);
-    let field_name = {
-        let s = ident.to_string();
-        s.strip_prefix("r#").map(str::to_string).unwrap_or(s)
+    if let SynType::Unsupported(message) = &syn_type {
+        cx.error(field.ty.span(), message);
+    }
+    let name = field_name(ident);
+    let ty = match &syn_type {
+        SynType::Known(k) => DeclType::Known(k.clone()),
+        _ => DeclType::Unknown,
     };
+    let mut model = decl::Var::new(&name, &name, Located::new(ty, Loc::Span(field.ty.span())));
+    model.name.at = Loc::Span(ident.span());
+    model.description = doc_description(&field.attrs);
     let mut var = Var {
         ident,
         ty: &field.ty,
         syn_type,
-        symbol: At {
-            value: field_name.clone(),
-            span: ident.span(),
-        },
-        name_known: true,
-        link: None,
-        source: None,
-        bit: None,
-        at: None,
-        at_text: None,
         initial: None,
-        nonvolatile: false,
-        description: doc_description(&field.attrs),
-        read_only: false,
-        direction: None,
-        iec_type: None,
         mapped_to: None,
-        effective_direction: Dir::Internal,
+        effective_direction: Direction::Internal,
+        address: None,
     };
     match attr {
-        Some(a) => fill_from_attr(&mut var, a, &field.attrs, cx),
+        Some(a) => fill_from_attr(&mut var, &mut model, a, &field.attrs, cx),
         None => match recover_name(&field.attrs) {
-            Some(Some(name)) => var.symbol = name,
+            Some(Some(name)) => model.name = name,
             Some(None) => {}
-            None => var.name_known = false,
+            None => model.name_known = false,
         },
     }
-    if var.name_known
-        && let Err(e) = names::check_name(&var.symbol.value)
-    {
-        cx.error(
-            var.symbol.span,
-            format!(
-                "invalid variable name `{}`: {e} (seed 003)",
-                var.symbol.value
-            ),
-        );
-    }
-    var
+    (var, model)
 }
 
 /// After darling refused a field's attribute (its error is reported), the `name = ".."` the
@@ -261,10 +241,7 @@ fn recover_name(attrs: &[syn::Attribute]) -> Option<Option<At<String>>> {
                 let value = meta.value()?;
                 if meta.path.is_ident("name") {
                     let lit: syn::LitStr = value.parse()?;
-                    name = Some(At {
-                        value: lit.value(),
-                        span: lit.span(),
-                    });
+                    name = Some(At::new(lit.value(), Loc::Span(lit.span())));
                 } else {
                     value.parse::<syn::Expr>()?;
                 }
@@ -278,83 +255,33 @@ fn recover_name(attrs: &[syn::Attribute]) -> Option<Option<At<String>>> {
     Some(name)
 }
 
-fn fill_from_attr(var: &mut Var, a: FieldAttr, attrs: &[syn::Attribute], cx: &mut Ctxt) {
-    if let Some(name) = a.name {
-        var.symbol = At {
-            value: name.to_string(),
-            span: name.span(),
-        };
+fn fill_from_attr(
+    var: &mut Var,
+    model: &mut decl::Var<Loc>,
+    a: FieldAttr,
+    attrs: &[syn::Attribute],
+    cx: &mut Ctxt,
+) {
+    let at = |v: &SpannedValue<String>| At::new(v.to_string(), Loc::Span(v.span()));
+    if let Some(name) = &a.name {
+        model.name = at(name);
     }
-    if let Some(link) = a.link {
-        if let Err(e) = Link::parse(&link) {
-            cx.error(
-                link.span(),
-                format!("invalid link `{}`: {e}", link.as_str()),
-            );
-        }
-        var.link = Some(At {
-            value: link.to_string(),
-            span: link.span(),
-        });
-    }
-    match (&a.source, &a.bit) {
-        (Some(s), None) => cx.error(
-            s.span(),
-            "`source` needs `bit`: add `bit = N`, the bit of the source word (0 = least \
-             significant) that this bool maps to",
-        ),
-        (None, Some(b)) => cx.error(
-            b.span(),
-            "`bit` needs `source`: add `source = \"<field>\"`, the integer field that holds \
-             this bit",
-        ),
-        _ => {}
-    }
-    if let Some(b) = &a.bit
-        && !(0..=63).contains(&**b)
-    {
-        let message = format!(
-            "bit {} is out of range: bits are 0..=63 (0 = least significant)",
-            **b
-        );
-        match attr::raw_value(attrs, "bit") {
-            Some(written) => cx.syn(syn::Error::new_spanned(written, message)),
-            None => cx.error(b.span(), message),
-        }
-    }
-    var.source = a.source.map(|s| At {
-        value: s.to_string(),
-        span: s.span(),
+    model.link = a.link.as_ref().map(at);
+    model.source = a.source.as_ref().map(at);
+    model.bit = a.bit.map(|b| {
+        // The whole of `-1`, not only its `-`.
+        let loc = attr::raw_value(attrs, "bit").map_or(Loc::Span(b.span()), Loc::Tokens);
+        At::new(*b, loc)
     });
-    var.bit = a.bit.map(|b| At {
-        value: *b,
-        span: b.span(),
-    });
-    if let Some(at) = a.at {
-        match at.parse::<IecAddress>() {
-            Ok(address) if address.area == Area::Memory => cx.error(
-                at.span(),
-                format!(
-                    "`at = \"{}\"` is in the M area: `at` locates I/O channels, so use %I \
-                     (input) or %Q (output); internal variables need no address (seed 003)",
-                    at.as_str()
-                ),
-            ),
-            Ok(address) => {
-                var.at = Some(At {
-                    value: address,
-                    span: at.span(),
-                });
-                var.at_text = Some(at.to_string());
-            }
-            Err(e) => cx.error(at.span(), format!("invalid address {e}")),
-        }
-    }
+    model.at = a.at.as_ref().map(at);
     if let Some(init) = a.initial {
         let expr = &init.0;
         let written = attr::raw_value(attrs, "initial").unwrap_or_else(|| quote!(#expr));
         match Initial::parse(expr, written) {
-            Ok(i) => var.initial = Some(i),
+            Ok(i) => {
+                model.initial = Some(At::new(i.to_decl(), Loc::Tokens(i.tokens.clone())));
+                var.initial = Some(i);
+            }
             Err(e) => cx.syn(e),
         }
     }
@@ -364,37 +291,25 @@ fn fill_from_attr(var: &mut Var, a: FieldAttr, attrs: &[syn::Attribute], cx: &mu
             "`retain` is another name for `nonvolatile`: write only one of them",
         );
     }
-    var.nonvolatile = a.nonvolatile.is_present() || a.retain.is_present();
+    model.nonvolatile = a.nonvolatile.is_present() || a.retain.is_present();
     if let Some(d) = a.description {
-        var.description = d.trim().to_string();
+        model.description = d.trim().to_string();
     }
-    var.read_only = a.read_only.is_present();
+    model.read_only = a.read_only.is_present();
     if let Some(d) = a.direction {
-        match Dir::parse(&d) {
-            Some(dir) => {
-                var.direction = Some(At {
-                    value: dir,
-                    span: d.span(),
-                })
-            }
-            None => cx.error(
-                d.span(),
-                format!(
-                    "unknown direction `{}`: use \"input\", \"output\", \"command\", \"status\" \
-                     or \"internal\"",
-                    d.as_str()
-                ),
-            ),
+        match Direction::from_name(&d) {
+            Some(dir) => model.direction = Some(At::new(dir, Loc::Span(d.span()))),
+            None => cx.issue(&Issue::new(
+                IssueKind::UnknownDirection {
+                    text: d.to_string(),
+                },
+                Loc::Span(d.span()),
+            )),
         }
     }
     if let Some(t) = a.iec_type {
         match t.parse::<IecType>() {
-            Ok(iec) => {
-                var.iec_type = Some(At {
-                    value: iec,
-                    span: t.span(),
-                })
-            }
+            Ok(iec) => model.iec_type = Some(At::new(iec, Loc::Span(t.span()))),
             Err(_) => cx.error(
                 t.span(),
                 format!(
@@ -404,54 +319,6 @@ fn fill_from_attr(var: &mut Var, a: FieldAttr, attrs: &[syn::Attribute], cx: &mu
                 ),
             ),
         }
-    }
-}
-
-/// Checks what the type's tokens alone show.
-fn check_type(ty: &Type, syn_type: &SynType, cx: &mut Ctxt) {
-    match syn_type {
-        SynType::Unsupported(message) => cx.error(ty.span(), message),
-        SynType::Known(k) => {
-            if let Some(n) = k.capacity
-                && (n == 0 || n > MAX_STRING_CAPACITY as u64)
-            {
-                cx.error(
-                    ty.span(),
-                    format!(
-                        "a string capacity must be 1..=255 bytes, not {n} (seed 000 \
-                         `max_length`, seed 003)"
-                    ),
-                );
-            }
-            if k.dims.len() > MAX_ARRAY_DIMS {
-                cx.error(
-                    ty.span(),
-                    format!(
-                        "an array has at most {MAX_ARRAY_DIMS} dimensions, this one has {} \
-                         (seed 003)",
-                        k.dims.len()
-                    ),
-                );
-            }
-            let items = k.dims.iter().try_fold(1u64, |a, &d| a.checked_mul(d));
-            if items.is_none_or(|n| n > MAX_ARRAY_ITEMS as u64) {
-                cx.error(
-                    ty.span(),
-                    format!(
-                        "an array holds at most {MAX_ARRAY_ITEMS} items in all dimensions, this \
-                         one holds {} (seed 003)",
-                        items.map_or("more than 2^64".to_string(), |n| n.to_string())
-                    ),
-                );
-            }
-            if k.dims.contains(&0) {
-                cx.error(
-                    ty.span(),
-                    "an array needs at least one item in each dimension",
-                );
-            }
-        }
-        SynType::Unknown => {}
     }
 }
 

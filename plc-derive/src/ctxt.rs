@@ -1,8 +1,28 @@
 //! Collects every error of a struct so the user sees all of them at once (serde's `Ctxt`).
 
-use crate::symbol::{CONTAINER_KEYS, FIELD_KEYS, PLC, expects, list};
+use crate::ast::Loc;
+use crate::symbol::{CONTAINER_KEYS, PLC, expects, field_keys, list};
+use plc_rules::decl::{Issue, Wording};
 use proc_macro2::{Span, TokenStream};
 use std::fmt::Display;
+
+/// How the derive writes the checker's messages: Rust names in backticks, another declaration
+/// by its line.
+pub struct RustWording;
+
+impl Wording<Loc> for RustWording {
+    fn name(&self, name: &str) -> String {
+        format!("`{name}`")
+    }
+
+    fn place(&self, at: &Loc) -> String {
+        line_of(at.span())
+    }
+
+    fn allow_unaligned(&self) -> &'static str {
+        ", or allow it with `#[plc(unaligned)]` on the struct"
+    }
+}
 
 #[derive(Default)]
 pub struct Ctxt {
@@ -14,6 +34,15 @@ impl Ctxt {
     /// An error under `span`.
     pub fn error(&mut self, span: Span, message: impl Display) {
         self.syn(syn::Error::new(span, message));
+    }
+
+    /// An issue of the declaration model, under what it is about.
+    pub fn issue(&mut self, issue: &Issue<Loc>) {
+        let message = issue.message(&RustWording);
+        match &issue.at {
+            Loc::Span(span) => self.error(*span, message),
+            Loc::Tokens(tokens) => self.syn(syn::Error::new_spanned(tokens, message)),
+        }
     }
 
     pub fn syn(&mut self, error: syn::Error) {
@@ -55,7 +84,7 @@ pub fn line_of(span: Span) -> String {
 /// the `#[plc(...)]` attribute; others pass through.
 fn darling_message(message: &str) -> String {
     // darling appends " at <key>" for errors of one key's value: say the key first instead.
-    let known = |k: &str| FIELD_KEYS.contains(&k) || CONTAINER_KEYS.contains(&k);
+    let known = |k: &str| field_keys().any(|f| f == k) || CONTAINER_KEYS.contains(&k);
     if let Some((text, key)) = message.rsplit_once(" at ")
         && known(key)
     {
@@ -77,9 +106,12 @@ fn darling_message(message: &str) -> String {
         let hint = if let Some((_, alt)) = rest.split_once(". Did you mean ") {
             format!("did you mean {}", alt.trim())
         } else if rest.contains("Available values:") {
-            format!("the keys on the struct are {}", list(CONTAINER_KEYS))
+            format!(
+                "the keys on the struct are {}",
+                list(CONTAINER_KEYS.iter().copied())
+            )
         } else {
-            format!("the keys on a field are {}", list(FIELD_KEYS))
+            format!("the keys on a field are {}", list(field_keys()))
         };
         return format!("unknown key `{key}` in `#[{PLC}(...)]`: {hint}");
     }

@@ -1,29 +1,19 @@
-//! `initial = <literal>`: what was written, its JSON text for `VarInfo::initial`, and whether
-//! it fits the field's type.
+//! `initial = <literal>`: what was written and its JSON text for `VarInfo::initial`. Whether
+//! it fits a type the tokens show is the declaration model's rule
+//! (`plc_rules::decl::initial_misfit`); here are only the checks of a type only the compiler
+//! knows (an alias).
 
-use crate::types::KnownType;
-use plc_rules::{IecType, TypeFamily};
+use plc_rules::decl::{self, InitialValue};
 use proc_macro2::{Span, TokenStream};
 use quote::{quote, quote_spanned};
 use syn::{Expr, Lit, UnOp};
 
-#[derive(Clone, Debug, PartialEq)]
-pub enum InitialValue {
-    Bool(bool),
-    Int(i128),
-    /// A bare integer beyond i128 (only REAL/LREAL can take it): the digits as written and
-    /// the nearest f64.
-    BigInt {
-        text: String,
-        value: f64,
-    },
-    Float(f64),
-    Str(String),
-}
-
 #[derive(Clone, Debug)]
 pub struct Initial {
     pub value: InitialValue,
+    /// The JSON text: `12.5`, `-3`, `"TEST-001"`; for a bare integer beyond i128 the digits
+    /// as written.
+    pub text: String,
     /// The tokens written, so an error can cover all of `-1`, not just the `-`.
     pub tokens: TokenStream,
 }
@@ -49,9 +39,10 @@ impl Initial {
             Expr::Paren(p) => return Initial::parse(&p.expr, written),
             _ => return Err(bad()),
         };
+        let mut big_digits = None;
         let value = match lit {
             Lit::Bool(b) if !negative => InitialValue::Bool(b.value),
-            Lit::Str(s) if !negative => InitialValue::Str(s.value()),
+            Lit::Str(s) if !negative => InitialValue::Text(s.value()),
             Lit::Int(i) => match i.base10_parse::<i128>() {
                 Ok(n) => InitialValue::Int(if negative { -n } else { n }),
                 // Beyond every integer type, but a bare integer is fine for REAL/LREAL (seed
@@ -60,10 +51,8 @@ impl Initial {
                     let digits = i.base10_digits();
                     let v: f64 = digits.parse().map_err(|_| bad())?;
                     finite(v, &written)?;
-                    InitialValue::BigInt {
-                        text: format!("{}{digits}", if negative { "-" } else { "" }),
-                        value: if negative { -v } else { v },
-                    }
+                    big_digits = Some(format!("{}{digits}", if negative { "-" } else { "" }));
+                    InitialValue::BigInt(if negative { -v } else { v })
                 }
             },
             Lit::Float(f) => {
@@ -73,69 +62,31 @@ impl Initial {
             }
             _ => return Err(bad()),
         };
+        let text = match (&value, big_digits) {
+            (_, Some(digits)) => digits,
+            (InitialValue::Bool(b), _) => b.to_string(),
+            (InitialValue::Int(i), _) => i.to_string(),
+            (InitialValue::BigInt(f) | InitialValue::Float(f), _) => format!("{f:?}"),
+            (InitialValue::Text(s), _) => json_string(s),
+            (InitialValue::Other, _) => String::new(),
+        };
         Ok(Initial {
             value,
+            text,
             tokens: written,
         })
     }
 
     /// JSON text, as `VarInfo::initial` holds it.
     pub fn json(&self) -> String {
-        match &self.value {
-            InitialValue::Bool(b) => b.to_string(),
-            InitialValue::Int(i) => i.to_string(),
-            InitialValue::BigInt { text, .. } => text.clone(),
-            InitialValue::Float(f) => format!("{f:?}"),
-            InitialValue::Str(s) => json_string(s),
-        }
+        self.text.clone()
     }
 
-    /// What to say when the value does not fit a field of `known` type named `field`.
-    pub fn misfit(&self, known: &KnownType, field: &str) -> Option<String> {
-        let ty = known.element_name();
-        let iec = known.iec;
-        let kind = |what: &str| format!("`{field}` is {ty} ({iec}): `initial` must be {what}");
-        match (&self.value, iec.family()) {
-            (InitialValue::Bool(_), TypeFamily::Bool) => None,
-            (_, TypeFamily::Bool) => Some(kind("`true` or `false`")),
-            (InitialValue::Int(n), f) if iec.is_integer() || f == TypeFamily::Real => {
-                let (lo, hi) = iec.int_range().unwrap_or((i128::MIN, i128::MAX));
-                (*n < lo || *n > hi).then(|| {
-                    format!(
-                        "initial value {n} is out of range for `{field}` ({ty} holds {lo}..={hi})"
-                    )
-                })
-            }
-            (InitialValue::BigInt { text, .. }, _) if iec.is_integer() => {
-                let (lo, hi) = iec.int_range().unwrap_or((0, 0));
-                Some(format!(
-                    "initial value {text} is out of range for `{field}` ({ty} holds {lo}..={hi})"
-                ))
-            }
-            (InitialValue::Float(v) | InitialValue::BigInt { value: v, .. }, TypeFamily::Real) => {
-                (iec == IecType::Real && v.abs() > f32::MAX as f64).then(|| {
-                    format!(
-                        "initial value {v:e} is out of range for `{field}` (f32 holds up to {:e})",
-                        f32::MAX
-                    )
-                })
-            }
-            (InitialValue::Float(_), _) if iec.is_integer() => {
-                Some(kind("a whole number (real to integer is never implicit)"))
-            }
-            (InitialValue::Str(s), TypeFamily::String) => {
-                let cap = known.capacity.unwrap_or(u64::MAX);
-                (s.len() as u64 > cap).then(|| {
-                    format!(
-                        "initial text of {} bytes does not fit `{field}` ({ty} holds {cap} bytes): \
-                         shorten it or raise the capacity",
-                        s.len()
-                    )
-                })
-            }
-            (_, TypeFamily::String) => Some(kind("a string literal such as \"TEST-001\"")),
-            (_, _) if iec.is_integer() => Some(kind("a whole number")),
-            _ => Some(kind("a number")),
+    /// The value as the declaration model holds it.
+    pub fn to_decl(&self) -> decl::Initial {
+        decl::Initial {
+            value: self.value.clone(),
+            text: self.text.clone(),
         }
     }
 
@@ -153,12 +104,14 @@ impl Initial {
                     quote!(#krate::Value::Real(#f))
                 }
             },
-            InitialValue::BigInt { value: f, .. } | InitialValue::Float(f) => {
+            InitialValue::BigInt(f) | InitialValue::Float(f) => {
                 quote!(#krate::Value::Real(#f))
             }
-            InitialValue::Str(s) => {
+            InitialValue::Text(s) => {
                 quote!(#krate::Value::Text(#krate::FixedString::<255>::from_str_truncate(#s)))
             }
+            // The derive reads only literals; this is the JSON importer's "none of these".
+            InitialValue::Other => quote!(#krate::Value::Bool(false)),
         }
     }
 
@@ -201,7 +154,7 @@ impl Initial {
             )],
             InitialValue::Int(n) => number(quote!(#facts.initial_int_fits(#n))),
             // Beyond every integer type: a number, but only a real can hold it.
-            InitialValue::BigInt { value: f, .. } => number(quote!(#facts.initial_real_fits(#f))),
+            InitialValue::BigInt(f) => number(quote!(#facts.initial_real_fits(#f))),
             InitialValue::Float(f) => vec![
                 (
                     quote!(#facts.element_is_real()),
@@ -215,7 +168,7 @@ impl Initial {
                     out_of_range,
                 ),
             ],
-            InitialValue::Str(s) => {
+            InitialValue::Text(s) => {
                 let len = s.len();
                 vec![
                     (
@@ -234,6 +187,7 @@ impl Initial {
                     ),
                 ]
             }
+            InitialValue::Other => Vec::new(),
         }
     }
 }
@@ -285,14 +239,6 @@ mod tests {
         parse(src).unwrap()
     }
 
-    fn real(iec: IecType) -> KnownType {
-        KnownType {
-            iec,
-            capacity: None,
-            dims: vec![],
-        }
-    }
-
     #[test]
     fn numbers_beyond_f64_are_errors_not_infinity() {
         for src in ["1e400", "-1e400", &"9".repeat(400)] {
@@ -305,8 +251,6 @@ mod tests {
     fn integers_beyond_u64_go_to_reals_as_reals_not_wrapped() {
         let krate = quote!(::plc_core);
         let tokens = |src: &str| init(src).value_tokens(&krate).to_string();
-        let big = init("100000000000000000000");
-        assert!(big.misfit(&real(IecType::Lreal), "x").is_none());
         let expect = |value: TokenStream| quote!(::plc_core::Value::#value).to_string();
         let (pos, neg) = (1e20f64, -1e20f64);
         assert_eq!(tokens("100000000000000000000"), expect(quote!(Real(#pos))));
@@ -319,25 +263,13 @@ mod tests {
             tokens("-9223372036854775808"),
             expect(quote!(Int(-9223372036854775808i64)))
         );
-        // Beyond i128: still a bare integer, so fine for LREAL, out of range for REAL and every
-        // integer type.
+        // Beyond i128: still a bare integer, its digits kept as written, and a real.
         let huge = init(&format!("1{}", "0".repeat(45)));
         assert_eq!(huge.json(), format!("1{}", "0".repeat(45)));
-        assert!(huge.misfit(&real(IecType::Lreal), "x").is_none());
         assert!(
             huge.value_tokens(&krate)
                 .to_string()
                 .contains("Value :: Real")
-        );
-        let f32_msg = huge.misfit(&real(IecType::Real), "x").unwrap();
-        assert!(
-            f32_msg.contains("out of range for `x` (f32 holds up to"),
-            "{f32_msg}"
-        );
-        let u64_msg = huge.misfit(&real(IecType::Ulint), "x").unwrap();
-        assert!(
-            u64_msg.contains("out of range for `x` (u64 holds 0..="),
-            "{u64_msg}"
         );
     }
 
@@ -349,36 +281,5 @@ mod tests {
         assert_eq!(init("-3").json(), "-3");
         assert_eq!(init("true").json(), "true");
         assert_eq!(init("\"a \\\"b\\\"\"").json(), "\"a \\\"b\\\"\"");
-    }
-
-    #[test]
-    fn misfits_are_explained() {
-        let u8t = KnownType {
-            iec: IecType::Usint,
-            capacity: None,
-            dims: vec![],
-        };
-        assert!(init("255").misfit(&u8t, "x").is_none());
-        assert_eq!(
-            init("256").misfit(&u8t, "x").unwrap(),
-            "initial value 256 is out of range for `x` (u8 holds 0..=255)"
-        );
-        assert!(init("1.5").misfit(&u8t, "x").is_some());
-        let f = KnownType {
-            iec: IecType::Real,
-            capacity: None,
-            dims: vec![],
-        };
-        assert!(
-            init("3").misfit(&f, "x").is_none(),
-            "bare integers are fine for REAL (seed 001)"
-        );
-        let s = KnownType {
-            iec: IecType::String,
-            capacity: Some(3),
-            dims: vec![],
-        };
-        assert!(init("\"abcd\"").misfit(&s, "x").is_some());
-        assert!(init("\"abc\"").misfit(&s, "x").is_none());
     }
 }

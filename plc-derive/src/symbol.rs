@@ -4,21 +4,13 @@
 /// The attribute's path: `#[plc(...)]`.
 pub const PLC: &str = "plc";
 
-/// Field keys, in the order the reference table in the README lists them.
-pub const FIELD_KEYS: &[&str] = &[
-    "link",
-    "source",
-    "bit",
-    "at",
-    "initial",
-    "nonvolatile",
-    "retain",
-    "description",
-    "read_only",
-    "direction",
-    "name",
-    "iec_type",
-];
+/// Field keys: those of every declaration format, then the derive's own.
+pub fn field_keys() -> impl Iterator<Item = &'static str> {
+    plc_rules::decl::ATTRIBUTE_KEYS
+        .iter()
+        .chain(["name", "iec_type"].iter())
+        .copied()
+}
 
 /// Container keys.
 pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned"];
@@ -41,8 +33,8 @@ pub fn expects(key: &str) -> Option<&'static str> {
 }
 
 /// `` `a`, `b` and `c` ``: all of the keys, as "the keys are ..." lists them.
-pub fn list(keys: &[&str]) -> String {
-    let quoted: Vec<String> = keys.iter().map(|k| format!("`{k}`")).collect();
+pub fn list<'a>(keys: impl IntoIterator<Item = &'a str>) -> String {
+    let quoted: Vec<String> = keys.into_iter().map(|k| format!("`{k}`")).collect();
     match quoted.split_last() {
         Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
         _ => quoted.concat(),
@@ -51,7 +43,7 @@ pub fn list(keys: &[&str]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{CONTAINER_KEYS, FIELD_KEYS};
+    use super::{CONTAINER_KEYS, field_keys};
     use crate::attr::{ContainerAttr, FieldAttr};
     use darling::{FromDeriveInput, FromField};
     use syn::parse::Parser;
@@ -65,15 +57,15 @@ mod tests {
     #[test]
     fn a_list_of_all_keys_ends_with_and() {
         assert_eq!(
-            super::list(&["crate", "byte_order", "unaligned"]),
+            super::list(["crate", "byte_order", "unaligned"]),
             "`crate`, `byte_order` and `unaligned`"
         );
-        assert_eq!(super::list(&["crate"]), "`crate`");
+        assert_eq!(super::list(["crate"]), "`crate`");
     }
 
     #[test]
     fn every_listed_key_is_a_key_of_the_receivers() {
-        for key in FIELD_KEYS {
+        for key in field_keys() {
             let src = format!("#[plc({key} = 1)] x: u8");
             let field = syn::Field::parse_named.parse_str(&src).unwrap();
             if let Err(e) = FieldAttr::from_field(&field) {

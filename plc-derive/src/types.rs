@@ -3,6 +3,7 @@
 //! reveal (an alias) is `Unknown`, and its checks become `const` assertions on `PlcType`.
 
 use plc_rules::IecType;
+pub use plc_rules::decl::KnownType;
 use syn::{Expr, GenericArgument, Lit, PathArguments, Type};
 
 /// A field type as its tokens show it.
@@ -14,30 +15,6 @@ pub enum SynType {
     Unsupported(String),
     /// An alias or other path: only the compiler knows.
     Unknown,
-}
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct KnownType {
-    /// IEC type of one element.
-    pub iec: IecType,
-    /// `FixedString<N>`'s `N`.
-    pub capacity: Option<u64>,
-    /// Array dimensions, outermost first.
-    pub dims: Vec<u64>,
-}
-
-impl KnownType {
-    pub fn is_scalar(&self) -> bool {
-        self.dims.is_empty()
-    }
-
-    /// The Rust name of a scalar element, as messages write it.
-    pub fn element_name(&self) -> String {
-        match self.capacity {
-            Some(n) => format!("FixedString<{n}>"),
-            None => self.iec.rust_name().to_string(),
-        }
-    }
 }
 
 const SUPPORTED: &str = "use bool, u8, u16, u32, u64, i8, i16, i32, i64, f32, f64, \

@@ -187,7 +187,7 @@ fn each_error_class_starts_with_the_variable_and_field() {
         ),
         (
             r#""a": { "type": "u8", "dims": [0, 2] }"#,
-            "variables.a.dims: [0,2] is not a list of whole numbers of at least 1",
+            "variables.a.dims: an array needs at least one item in each dimension",
         ),
         (
             r#""a": { "type": "u8", "dims": [1.5] }"#,

@@ -222,8 +222,8 @@ fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() 
         [
             "line 2: 14 cells but the header names 13 columns: put a cell that holds a comma in double quotes",
             "line 3, column name: empty: every row needs the variable's name",
-            "line 4, variable b, column initial: 300 is out of range for USINT (0..=255)",
-            "line 5, variable B: declared twice (names are case-insensitive, seed 003)",
+            "line 4, variable b, column initial: 300 is out of range for USINT (u8 holds 0..=255)",
+            "line 5, variable B: declared twice: \"B\" is already used by \"b\" (line 4), and names are case-insensitive; rename one",
         ]
     );
 }
@@ -281,7 +281,7 @@ fn cell_errors_name_the_line_variable_and_column() {
         ),
         (
             "a,u8,,,,,,,,,,,0",
-            "line 2, variable a, column dims: [0] is not a list of whole numbers",
+            "line 2, variable a, column dims: an array needs at least one item in each dimension",
         ),
         (
             "a,u8,,,,,,,,,,,\"2,x\"",

@@ -13,8 +13,8 @@ pub fn expand(c: &Container) -> TokenStream {
         let (ident, ty) = (v.ident, v.ty);
         quote!(#i => <#ty as #p::PlcType>::get_element(&self.#ident, element),)
     });
-    let sets = c.vars.iter().enumerate().map(|(i, v)| {
-        let (ident, name) = (v.ident, &v.symbol.value);
+    let sets = c.fields().enumerate().map(|(i, (v, m))| {
+        let (ident, name) = (v.ident, &m.name.value);
         // After the value changed: a bool updates its bit, a source word its bools.
         let to_source = v.mapped_to.map(|(s, bit)| {
             let src = c.vars[s].ident;

@@ -3,9 +3,10 @@
 //! message computed here (a const panic cannot format values).
 
 use super::private;
-use crate::ast::{Container, Var};
+use crate::ast::{Container, Loc, Var};
 use crate::types::SynType;
 use plc_rules::address::Size;
+use plc_rules::decl;
 use proc_macro2::{Delimiter, Group, Span, TokenStream};
 use quote::{quote, quote_spanned};
 
@@ -29,7 +30,7 @@ fn assert_over(written: &TokenStream, cond: TokenStream, message: String) -> Tok
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
     let mut out = TokenStream::new();
-    for v in &c.vars {
+    for (v, m) in c.fields() {
         let ty = v.ty;
         let name = v.field_name();
         if v.syn_type == SynType::Unknown {
@@ -49,14 +50,14 @@ pub fn expand(c: &Container) -> TokenStream {
                      least one item"
                 ),
             ));
-            unknown_type_checks(c, v, &mut out);
+            unknown_type_checks(c, v, m, &mut out);
         }
         // The bit must be within the source's width; only the compiler knows an alias's width.
-        if let (Some((s, bit)), Some(b)) = (v.mapped_to, &v.bit) {
+        if let (Some((s, bit)), Some(b)) = (v.mapped_to, &m.bit) {
             let src = &c.vars[s];
             if src.syn_type == SynType::Unknown {
                 let sty = src.ty;
-                let at_source = v.source.as_ref().map_or(b.span, |s| s.span);
+                let at_source = m.source.as_ref().map_or(b.at.span(), |s| s.at.span());
                 out.extend(assert(
                     at_source,
                     quote_spanned!(src.ty_span()=> #p::facts::<#sty>().is_integer()),
@@ -69,7 +70,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 // A source that is not an integer is the one mistake; its bit is not judged.
                 let facts = quote_spanned!(src.ty_span()=> #p::facts::<#sty>());
                 out.extend(assert(
-                    b.span,
+                    b.at.span(),
                     quote!(!#facts.is_integer() || (#bit as u32) < #facts.scalar_bits()),
                     format!(
                         "bit {bit} is out of range for the type of `{}`",
@@ -82,7 +83,7 @@ pub fn expand(c: &Container) -> TokenStream {
     out
 }
 
-fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
+fn unknown_type_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenStream) {
     let p = private(c);
     let ty = v.ty;
     let name = v.field_name();
@@ -93,13 +94,14 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
             format!("`{name}` is mapped to a bit, so its type must be bool (seed 000)"),
         ));
     }
-    if let Some(at) = &v.at {
-        let bits = at.value.size.bits();
-        let text = v.at_text.as_deref().unwrap_or_default();
+    if let (Some(address), Some(at)) = (&v.address, &m.at) {
+        let bits = address.size.bits();
+        let text = at.value.as_str();
+        let span = at.at.span();
         let facts = quote_spanned!(v.ty_span()=> #p::facts::<#ty>());
         // Two assertions, so an array or string is told it is no channel, not a wrong width.
         out.extend(assert(
-            at.span,
+            span,
             quote!(#facts.is_channel()),
             format!(
                 "`at` locates one channel: the type of `{name}` must be a scalar, not an array \
@@ -107,20 +109,20 @@ fn unknown_type_checks(c: &Container, v: &Var, out: &mut TokenStream) {
                  channels)"
             ),
         ));
-        let what = match at.value.size {
+        let what = match address.size {
             Size::Bit => format!("a bit: the type of `{name}` must be bool"),
             _ => format!("{bits} bits wide: the type of `{name}` must have {bits} bits"),
         };
         out.extend(assert(
-            at.span,
+            span,
             quote!(!#facts.is_channel() || #facts.located_fits(#bits)),
             format!("`{text}` is {what}"),
         ));
     }
-    if let Some(t) = &v.iec_type {
+    if let Some(t) = &m.iec_type {
         let iec = super::metadata::iec_variant(c, t.value);
         out.extend(assert(
-            t.span,
+            t.at.span(),
             quote_spanned!(v.ty_span()=> #p::facts::<#ty>().storage_matches(#iec)),
             format!(
                 "`iec_type = \"{}\"` does not fit the type of `{name}`: {} needs {}",

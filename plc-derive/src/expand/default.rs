@@ -14,13 +14,12 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let ident = c.ident;
     let image = image_ident();
     let set = |mapped: bool| -> Vec<TokenStream> {
-        c.vars
-            .iter()
-            .filter(|v| v.mapped_to.is_some() == mapped)
-            .filter_map(|v| {
+        c.fields()
+            .filter(|(v, _)| v.mapped_to.is_some() == mapped)
+            .filter_map(|(v, m)| {
                 let init = v.initial.as_ref()?;
                 let field = v.ident;
-                let iec = iec_type(c, v);
+                let iec = iec_type(c, v, m);
                 let value = init.value_tokens(krate);
                 Some(quote!(#p::set_initial(&mut gm.#field, #iec, #value);))
             })

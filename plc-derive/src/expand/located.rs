@@ -37,14 +37,14 @@ pub fn expand(c: &Container) -> TokenStream {
     } else {
         quote!(#krate::ByteOrder::BigEndian)
     };
-    let unaligned = c.unaligned;
+    let unaligned = c.decl.unaligned;
     let mut reads = Vec::new();
     let mut writes = Vec::new();
     for v in &c.vars {
-        let Some(at) = &v.at else { continue };
+        let Some(at) = &v.address else { continue };
         let ident = v.ident;
-        let addr = address(c, &at.value);
-        match at.value.area {
+        let addr = address(c, at);
+        match at.area {
             Area::Input => reads.push(quote! {
                 #p::read_located(&mut self.#ident, inputs, &#addr, #order, #unaligned)?;
             }),

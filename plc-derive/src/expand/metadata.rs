@@ -2,8 +2,10 @@
 
 use super::image::{offset, size};
 use super::private;
-use crate::ast::{Container, Dir, Var};
+use crate::ast::{Container, Loc, Var};
 use crate::types::type_text;
+use plc_rules::Direction;
+use plc_rules::decl;
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
@@ -16,10 +18,10 @@ pub fn iec_variant(c: &Container, iec: plc_rules::IecType) -> TokenStream {
 }
 
 /// The variable's IEC type: the declared `iec_type`, else what its Rust type maps to.
-pub fn iec_type(c: &Container, v: &Var) -> TokenStream {
+pub fn iec_type(c: &Container, v: &Var, m: &decl::Var<Loc>) -> TokenStream {
     let p = private(c);
     let ty = v.ty;
-    match &v.iec_type {
+    match &m.iec_type {
         Some(t) => iec_variant(c, t.value),
         None => quote!(<#ty as #p::PlcType>::IEC_TYPE),
     }
@@ -32,16 +34,16 @@ fn opt_str(s: Option<&str>) -> TokenStream {
     }
 }
 
-fn direction(c: &Container, d: Dir) -> TokenStream {
+fn direction(c: &Container, d: Direction) -> TokenStream {
     let krate = &c.krate;
     let variant = format_ident!(
         "{}",
         match d {
-            Dir::Input => "Input",
-            Dir::Output => "Output",
-            Dir::Command => "Command",
-            Dir::Status => "Status",
-            Dir::Internal => "Internal",
+            Direction::Input => "Input",
+            Direction::Output => "Output",
+            Direction::Command => "Command",
+            Direction::Status => "Status",
+            Direction::Internal => "Internal",
         }
     );
     quote!(#krate::Direction::#variant)
@@ -50,23 +52,27 @@ fn direction(c: &Container, d: Dir) -> TokenStream {
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
-    let infos = c.vars.iter().enumerate().map(|(i, v)| {
+    let infos = c.fields().enumerate().map(|(i, (v, m))| {
         let ty = v.ty;
         let (offset, size) = (offset(i), size(i));
-        let name = &v.symbol.value;
-        let iec = iec_type(c, v);
+        let name = &m.name.value;
+        let iec = iec_type(c, v, m);
         let rust_type = type_text(ty);
         let bit = match v.mapped_to {
             Some((s, b)) => quote!(::core::option::Option::Some(#p::bit_mapping(#s, #b))),
             None => quote!(::core::option::Option::None),
         };
-        let link = opt_str(v.link.as_ref().map(|l| l.value.as_str()));
-        let address = opt_str(v.at_text.as_deref());
-        let description = &v.description;
+        let link = opt_str(m.link.as_ref().map(|l| l.value.as_str()));
+        let address = opt_str(
+            m.at.as_ref()
+                .filter(|_| v.address.is_some())
+                .map(|a| a.value.as_str()),
+        );
+        let description = &m.description;
         let initial_json = v.initial.as_ref().map(|i| i.json());
         let initial = opt_str(initial_json.as_deref());
-        let nonvolatile = v.nonvolatile;
-        let access = if v.read_only {
+        let nonvolatile = m.nonvolatile;
+        let access = if m.read_only {
             quote!(#krate::Access::ReadOnly)
         } else {
             quote!(#krate::Access::ReadWrite)

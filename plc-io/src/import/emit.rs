@@ -2,8 +2,8 @@
 //! comments from descriptions, every declared property as a `#[plc(...)]` key, formatted as
 //! prettyplease formats it (short lines written directly, long ones by prettyplease).
 
-use super::validate::Spec;
-use serde_json::Value;
+use super::validate::ListAt;
+use plc_rules::decl::{DeclType, KnownType, Var};
 
 /// Rust's keywords: a variable of one of these names becomes a raw identifier (`r#type`).
 const KEYWORDS: &[&str] = &[
@@ -25,23 +25,71 @@ fn ident(name: &str) -> String {
     }
 }
 
-fn literal(v: &Value) -> String {
-    match v {
-        Value::String(s) => format!("{s:?}"),
-        other => other.to_string(),
+/// Names the generated module defines or imports: a struct of one of these names would not
+/// compile (or would shadow what the module needs).
+const TAKEN: &[&str] = &["GlobalMemory", "FixedString", "Self", "_"];
+
+/// Whether the struct name gives code that compiles: an identifier, not a keyword, not a name
+/// the module imports.
+pub fn check_struct_name(name: &str) -> Result<(), String> {
+    if !plc_rules::link::is_identifier(name) {
+        return Err(format!(
+            "struct name {name:?} is not a Rust identifier: use letters, digits and \
+             underscores, not starting with a digit (such as Gm)"
+        ));
     }
+    if KEYWORDS.contains(&name) || UNUSABLE.contains(&name) || TAKEN.contains(&name) {
+        return Err(format!(
+            "struct name {name:?} is a Rust keyword or a name the generated module uses \
+             ({}): choose another, such as Gm",
+            TAKEN[..2].join(", ")
+        ));
+    }
+    Ok(())
+}
+
+/// Characters that do not belong in a comment line: the bidirectional text controls, which
+/// rustc refuses (they can make code read differently from what it does), and control
+/// characters other than tab and the line ends (which split a description into lines).
+fn breaks_comment(c: char) -> bool {
+    matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
+        || (c.is_control() && !matches!(c, '\t' | '\n' | '\r'))
+}
+
+/// One line of a doc comment, with what does not belong there made a space.
+fn comment_line(text: &str) -> String {
+    text.chars()
+        .map(|c| if breaks_comment(c) { ' ' } else { c })
+        .collect()
 }
 
 /// The origin goes into comments: one line, whatever the file name holds.
 fn one_line(text: &str) -> String {
     text.chars()
-        .map(|c| if c.is_control() { ' ' } else { c })
+        .map(|c| {
+            if c.is_control() || breaks_comment(c) {
+                ' '
+            } else {
+                c
+            }
+        })
         .collect()
 }
 
+/// The type of a checked variable (every generated variable has one: a variable without is an
+/// error before emission).
+fn known(v: &Var<ListAt>) -> Option<&KnownType> {
+    match &v.ty.value {
+        DeclType::Known(k) => Some(k),
+        DeclType::Unknown => None,
+    }
+}
+
 /// The `use` line, the struct's doc and attributes and its opening line, formatted.
-fn head(specs: &[Spec], struct_name: &str, origin: &str) -> String {
-    let strings = specs.iter().any(|s| s.capacity.is_some());
+fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
+    let strings = vars
+        .iter()
+        .any(|v| known(v).is_some_and(|k| k.capacity.is_some()));
     let mut out = format!(
         "use plc_core::{};\n\
          /// The variables of {}.\n\
@@ -53,9 +101,9 @@ fn head(specs: &[Spec], struct_name: &str, origin: &str) -> String {
         },
         origin.trim_end()
     );
-    if specs
+    if vars
         .iter()
-        .any(|s| s.name.chars().any(|c| c.is_ascii_uppercase()))
+        .any(|v| v.name.value.chars().any(|c| c.is_ascii_uppercase()))
     {
         out.push_str("#[allow(non_snake_case)]\n");
     }
@@ -65,56 +113,75 @@ fn head(specs: &[Spec], struct_name: &str, origin: &str) -> String {
 
 /// One field: doc comment, `#[plc(...)]`, declaration; formatted as prettyplease formats it
 /// when each line is short (longer lines are left to prettyplease, see [`emit`]).
-fn field(s: &Spec, origin: &str) -> String {
+fn field(v: &Var<ListAt>, origin: &str) -> Result<String, String> {
+    let k = known(v).ok_or_else(|| {
+        format!(
+            "variable {:?} has no type but reached the code generator; please report this",
+            v.name.value
+        )
+    })?;
     let mut out = String::new();
-    let described = s.description.as_deref().filter(|d| !d.trim().is_empty());
-    match described {
+    let description = v.description.trim();
+    // A description rustc would refuse in a comment keeps its exact text in `description`,
+    // as an escaped string; the doc comment gets it with those characters made spaces.
+    let as_key = description.chars().any(breaks_comment);
+    match description.is_empty() {
         // A bare CR ends a line too: Rust refuses one inside a doc comment.
-        Some(d) => {
-            for line in d.split(['\r', '\n']).filter(|l| !l.trim().is_empty()) {
+        false => {
+            for line in description
+                .split(['\r', '\n'])
+                .map(comment_line)
+                .filter(|l| !l.trim().is_empty())
+            {
                 out.push_str(&format!("    /// {}\n", line.trim()));
             }
         }
         // Every public field gets a doc comment (so the module passes `missing_docs`);
         // `description = ""` keeps this one out of `VARIABLES`, as the file has none.
-        None => out.push_str(&format!(
+        true => out.push_str(&format!(
             "    /// No description in {}.\n",
             origin.trim_end()
         )),
     }
     let mut keys: Vec<String> = Vec::new();
-    if let Some(l) = &s.link {
-        keys.push(format!("link = {l:?}"));
+    if let Some(l) = &v.link {
+        keys.push(format!("link = {:?}", l.value));
     }
-    if let Some((src, bit)) = &s.source {
-        keys.push(format!("source = {src:?}, bit = {bit}"));
+    if let (Some(src), Some(bit)) = (&v.source, &v.bit) {
+        keys.push(format!("source = {:?}, bit = {}", src.value, bit.value));
     }
-    if let Some(a) = &s.at {
-        keys.push(format!("at = {a:?}"));
+    if let Some(a) = &v.at {
+        keys.push(format!("at = {:?}", a.value));
     }
-    if let Some(d) = s.direction {
-        keys.push(format!("direction = {:?}", d.name()));
+    if let Some(d) = &v.direction {
+        keys.push(format!("direction = {:?}", d.value.name()));
     }
-    if let Some(t) = s.bit_string {
-        keys.push(format!("iec_type = {:?}", t.name()));
+    if let Some(t) = &v.iec_type {
+        keys.push(format!("iec_type = {:?}", t.value.name()));
     }
-    if let Some(i) = &s.initial {
-        keys.push(format!("initial = {}", literal(i)));
+    if let Some(i) = &v.initial {
+        keys.push(format!("initial = {}", i.value.text));
     }
-    if s.nonvolatile {
+    if v.nonvolatile {
         keys.push("nonvolatile".into());
     }
-    if s.read_only {
+    if v.read_only {
         keys.push("read_only".into());
     }
-    if described.is_none() {
+    if description.is_empty() {
         keys.push("description = \"\"".into());
+    } else if as_key {
+        keys.push(format!("description = {description:?}"));
     }
     if !keys.is_empty() {
         out.push_str(&format!("    #[plc({})]\n", keys.join(", ")));
     }
-    out.push_str(&format!("    pub {}: {},\n", ident(&s.name), s.rust_type()));
-    out
+    out.push_str(&format!(
+        "    pub {}: {},\n",
+        ident(&v.name.value),
+        k.rust_type()
+    ));
+    Ok(out)
 }
 
 /// Lines up to this many bytes are printed by prettyplease as they are written here (its
@@ -138,21 +205,21 @@ fn field_by_prettyplease(text: &str) -> Result<String, String> {
 /// The module, formatted as prettyplease formats it. Writing it directly is ten times faster
 /// than parsing and printing 10,000 fields (issue 9); the fields that prettyplease would break
 /// across lines are still printed by it, and a test checks the whole against prettyplease.
-pub fn emit(specs: &[Spec], struct_name: &str, origin: &str) -> Result<String, String> {
+pub fn emit(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> Result<String, String> {
     let origin = one_line(origin);
     // A plain comment (not `//!`), so the module can also be `include!`d.
     let mut out = format!(
         "// Generated by `plc import` from {origin}: edit that file and import again.\n\n{}",
-        head(specs, struct_name, &origin)
+        head(vars, struct_name, &origin)
     );
-    if specs.is_empty() {
+    if vars.is_empty() {
         // prettyplease closes an empty struct on its opening line.
         out.truncate(out.len() - 1);
         out.push_str("}\n");
         return Ok(out);
     }
-    for s in specs {
-        let text = field(s, &origin);
+    for v in vars {
+        let text = field(v, &origin)?;
         let long = text
             .lines()
             .any(|l| l.len() > SHORT_LINE && !l.trim_start().starts_with("///"));
@@ -170,15 +237,16 @@ pub fn emit(specs: &[Spec], struct_name: &str, origin: &str) -> Result<String, S
 mod tests {
     use super::*;
     use plc_core::{Direction, IecType};
+    use plc_rules::decl::{Initial, InitialValue, Located};
     use proptest::prelude::*;
 
     /// The whole module through syn and prettyplease, as the importer made it before: what
     /// [`emit`] must equal.
-    fn by_prettyplease(specs: &[Spec], struct_name: &str, origin: &str) -> String {
+    fn by_prettyplease(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
         let origin = one_line(origin);
-        let mut text = head(specs, struct_name, &origin);
-        for s in specs {
-            text.push_str(&field(s, &origin));
+        let mut text = head(vars, struct_name, &origin);
+        for v in vars {
+            text.push_str(&field(v, &origin).unwrap());
         }
         text.push_str("}\n");
         let file = syn::parse_file(&text).unwrap();
@@ -188,19 +256,34 @@ mod tests {
         )
     }
 
-    fn spec() -> impl Strategy<Value = Spec> {
+    fn at() -> ListAt {
+        ListAt {
+            var: 0,
+            field: None,
+        }
+    }
+
+    fn initial(value: InitialValue, text: String) -> Option<Located<Initial, ListAt>> {
+        Some(Located::new(Initial { value, text }, at()))
+    }
+
+    fn var() -> impl Strategy<Value = Var<ListAt>> {
         let name = "[a-zA-Z][a-zA-Z0-9_]{0,40}";
         let text = prop_oneof![
-            Just(None),
-            "\\PC{0,60}".prop_map(Some),
-            "[ a-z\r\n]{0,90}".prop_map(Some)
+            Just(String::new()),
+            "\\PC{0,60}",
+            "[ a-z\r\n]{0,90}",
+            "[a\u{202e}\u{2066}\u{7} ]{0,10}",
         ];
         let initial = prop_oneof![
             Just(None),
-            any::<i64>().prop_map(|n| Some(Value::from(n))),
-            any::<f64>().prop_map(|n| Some(Value::from(n))),
-            any::<bool>().prop_map(|b| Some(Value::from(b))),
-            "\\PC{0,40}".prop_map(|s| Some(Value::from(s))),
+            any::<i64>().prop_map(|n| initial(InitialValue::Int(n.into()), n.to_string())),
+            any::<f64>().prop_map(|n| initial(
+                InitialValue::Float(n),
+                serde_json::Value::from(n).to_string()
+            )),
+            any::<bool>().prop_map(|b| initial(InitialValue::Bool(b), b.to_string())),
+            "\\PC{0,40}".prop_map(|s| initial(InitialValue::Text(s.clone()), format!("{s:?}"))),
         ];
         let ty = prop::sample::select(vec![
             IecType::Bool,
@@ -209,7 +292,7 @@ mod tests {
             IecType::String,
             IecType::Ulint,
         ]);
-        let dims = prop::collection::vec(1usize..70000, 0..4);
+        let dims = prop::collection::vec(1u64..70000, 0..4);
         let direction =
             prop::sample::select(vec![None, Some(Direction::Input), Some(Direction::Status)]);
         (
@@ -223,20 +306,29 @@ mod tests {
             any::<[bool; 6]>(),
         )
             .prop_map(
-                |(name, description, initial, iec_type, dims, direction, word, flags)| Spec {
-                    capacity: (iec_type == IecType::String).then_some(255),
-                    bit_string: flags[0].then_some(IecType::Lword),
-                    link: flags[1].then(|| format!("ethercat.{word}.{word}")),
-                    source: flags[2].then(|| (word.clone(), 63)),
-                    at: flags[3].then(|| "%QL8".to_string()),
-                    nonvolatile: flags[4],
-                    read_only: flags[5],
-                    name,
-                    iec_type,
-                    dims,
-                    description,
-                    initial,
-                    direction,
+                |(name, description, initial, iec, dims, direction, word, flags)| {
+                    let known = KnownType {
+                        iec,
+                        capacity: (iec == IecType::String).then_some(255),
+                        dims,
+                    };
+                    let mut v = Var::new(&name, &name, Located::new(known.into(), at()));
+                    let located = |s: String| Some(Located::new(s, at()));
+                    v.iec_type = flags[0].then(|| Located::new(IecType::Lword, at()));
+                    v.link = flags[1]
+                        .then(|| format!("ethercat.{word}.{word}"))
+                        .and_then(located);
+                    if flags[2] {
+                        v.source = located(word.clone());
+                        v.bit = Some(Located::new(63, at()));
+                    }
+                    v.at = flags[3].then(|| "%QL8".to_string()).and_then(located);
+                    v.nonvolatile = flags[4];
+                    v.read_only = flags[5];
+                    v.description = description;
+                    v.initial = initial;
+                    v.direction = direction.map(|d| Located::new(d, at()));
+                    v
                 },
             )
     }
@@ -246,10 +338,10 @@ mod tests {
 
         #[test]
         fn direct_output_is_what_prettyplease_prints(
-            specs in prop::collection::vec(spec(), 0..6),
+            vars in prop::collection::vec(var(), 0..6),
             origin in "\\PC{0,100}",
         ) {
-            prop_assert_eq!(emit(&specs, "Gm", &origin).unwrap(), by_prettyplease(&specs, "Gm", &origin));
+            prop_assert_eq!(emit(&vars, "Gm", &origin).unwrap(), by_prettyplease(&vars, "Gm", &origin));
         }
     }
 }

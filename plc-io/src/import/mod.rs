@@ -33,10 +33,8 @@ mod validate;
 
 pub use csv_read::COLUMNS;
 pub use export::{descriptor_to_csv, descriptor_to_json, export_csv, export_json};
-pub use validate::Spec;
 
-use parse::Parsed;
-use validate::{Issue, Subject};
+use validate::{ListAt, Problem};
 
 use std::fmt;
 use std::path::Path;
@@ -85,14 +83,15 @@ impl std::error::Error for ImportErrors {}
 /// Errors and warnings read `variables.<name>.<field>: <what is wrong>`.
 pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let parsed = parse::parse(json).map_err(|e| ImportErrors(vec![e]))?;
-    let place = |i: &Issue| {
-        let name = subject_name(&parsed, &i.subject);
-        match &i.field {
-            Some(f) => format!("variables.{name}.{f}: {}", i.message),
-            None => format!("variables.{name}: {}", i.message),
+    let checked = validate::check(&parsed, &|_| None);
+    let place = |p: &Problem| {
+        let name = &checked.decl.vars[p.at.var].name.value;
+        match &p.at.field {
+            Some(f) => format!("variables.{name}.{f}: {}", p.message),
+            None => format!("variables.{name}: {}", p.message),
         }
     };
-    finish(&parsed, options, Vec::new(), place)
+    finish(&checked, options, Vec::new(), place)
 }
 
 /// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same
@@ -101,28 +100,22 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
 /// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`.
 pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let table = csv_read::parse(csv).map_err(ImportErrors)?;
-    let lines: std::collections::HashMap<&str, u64> = table
-        .parsed
-        .variables
-        .iter()
-        .zip(&table.lines)
-        .map(|((n, _), l)| (n.as_str(), *l))
-        .collect();
-    let place = |i: &Issue| {
-        let (name, line) = match &i.subject {
-            Subject::Var(n) => (n.as_str(), lines.get(n.as_str()).copied()),
-            Subject::Duplicate(k) => (
-                table.parsed.duplicates[*k].as_str(),
-                table.duplicate_lines.get(*k).copied(),
-            ),
-        };
-        let line = line.map_or_else(String::new, |l| format!("line {l}, "));
-        match &i.field {
-            Some(f) => format!("{line}variable {name}, column {f}: {}", i.message),
-            None => format!("{line}variable {name}: {}", i.message),
+    let declared = table.parsed.variables.len();
+    // Variables first, then the second uses of a name, as the declaration holds them.
+    let line_of_var = |var: usize| match var.checked_sub(declared) {
+        None => table.lines.get(var).copied(),
+        Some(k) => table.duplicate_lines.get(k).copied(),
+    };
+    let checked = validate::check(&table.parsed, &line_of_var);
+    let place = |p: &Problem| {
+        let name = &checked.decl.vars[p.at.var].name.value;
+        let line = line_of_var(p.at.var).map_or_else(String::new, |l| format!("line {l}, "));
+        match &p.at.field {
+            Some(f) => format!("{line}variable {name}, column {f}: {}", p.message),
+            None => format!("{line}variable {name}: {}", p.message),
         }
     };
-    finish(&table.parsed, options, table.row_errors.clone(), place).map_err(|mut e| {
+    finish(&checked, options, table.row_errors.clone(), place).map_err(|mut e| {
         // In the order of the file, as a user fixes them going down the sheet (the sort is
         // stable: one row's errors keep their column order).
         e.0.sort_by_key(|m| line_of(m));
@@ -139,34 +132,26 @@ fn line_of(message: &str) -> u64 {
         .unwrap_or(u64::MAX)
 }
 
-fn subject_name<'a>(parsed: &'a Parsed, subject: &'a Subject) -> &'a str {
-    match subject {
-        Subject::Var(n) => n,
-        Subject::Duplicate(k) => &parsed.duplicates[*k],
-    }
-}
-
-/// Validation and emission, shared by the JSON and CSV front ends; `place` words an issue for
-/// the input's format.
+/// The checks of the generated code itself, and emission, shared by the JSON and CSV front
+/// ends; `place` words a problem for the input's format.
 fn finish(
-    parsed: &Parsed,
+    checked: &validate::Checked,
     options: &Options,
     mut errors: Vec<String>,
-    place: impl Fn(&Issue) -> String,
+    place: impl Fn(&Problem) -> String,
 ) -> Result<Generated, ImportErrors> {
-    let checked = validate::check(parsed);
     errors.extend(checked.errors.iter().map(&place));
-    if !plc_rules::link::is_identifier(&options.struct_name) {
-        errors.push(format!(
-            "struct name {:?} is not a Rust identifier: use letters, digits and underscores, not starting with a digit (such as Gm)",
-            options.struct_name
-        ));
+    if let Err(e) = emit::check_struct_name(&options.struct_name) {
+        errors.push(e);
     }
-    for s in &checked.specs {
-        if emit::UNUSABLE.contains(&s.name.as_str()) {
-            errors.push(place(&Issue {
-                subject: Subject::Var(s.name.clone()),
-                field: None,
+    let vars = &checked.decl.vars[..checked.declared];
+    for (i, v) in vars.iter().enumerate() {
+        if emit::UNUSABLE.contains(&v.name.value.as_str()) {
+            errors.push(place(&Problem {
+                at: ListAt {
+                    var: i,
+                    field: None,
+                },
                 message: "this name cannot be a Rust field; rename it".into(),
             }));
         }
@@ -174,7 +159,7 @@ fn finish(
     if !errors.is_empty() {
         return Err(ImportErrors(errors));
     }
-    let code = emit::emit(&checked.specs, &options.struct_name, &options.origin)
+    let code = emit::emit(vars, &options.struct_name, &options.origin)
         .map_err(|e| ImportErrors(vec![e]))?;
     Ok(Generated {
         code,

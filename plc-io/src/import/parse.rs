@@ -10,7 +10,8 @@ use std::fmt;
 /// The variables of a project file, in file order, and the names given more than once.
 pub struct Parsed {
     pub variables: Vec<(String, Value)>,
-    pub duplicates: Vec<String>,
+    /// The second and later uses of a name, with what they declared (checked, not generated).
+    pub duplicates: Vec<(String, Value)>,
     /// The names so far in lower case: a set, so a 10,000-variable file is not quadratic.
     seen: HashSet<String>,
 }
@@ -31,7 +32,7 @@ impl Parsed {
             self.variables.push((name, value));
             true
         } else {
-            self.duplicates.push(name);
+            self.duplicates.push((name, value));
             false
         }
     }

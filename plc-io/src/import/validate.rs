@@ -1,126 +1,72 @@
-//! Every rule the derive enforces, applied to a variable list (from JSON or CSV) before any code
-//! is written, so a bad file gets all its errors at once, each naming the variable and the
-//! field. A variable whose type is missing or unknown is still declared and its other fields
-//! are still checked: one mistake must not hide the others or cascade into "names no variable".
+//! A variable list (from JSON or CSV) read into the declaration model (`plc_rules::decl`) and
+//! checked by its one checker, so a file gets every rule the derive applies, in the same
+//! words, all its errors at once, each naming the variable and the field. What is checked here
+//! is only the list's own format: fields of the wrong JSON kind, unknown fields, a missing or
+//! unknown type. A variable whose type is missing or unknown is still declared and its other
+//! fields still checked: one mistake must not hide the others or cascade into "names no
+//! variable".
 
 use super::parse::Parsed;
-use plc_core::{Direction, IecType, TypeFamily};
-use plc_rules::address::{Area, IecAddress, Size};
-use plc_rules::capacity::{
-    DEFAULT_STRING_CAPACITY, MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY,
+use plc_core::{IecType, TypeFamily};
+use plc_rules::capacity::DEFAULT_STRING_CAPACITY;
+use plc_rules::decl::{
+    self, ATTRIBUTE_KEYS, Decl, DeclType, Direction, Initial, InitialValue, Issue, IssueKind,
+    KnownType, Located, Wording,
 };
-use plc_rules::link::Link;
-use plc_rules::names;
 use serde_json::Value;
-use std::collections::{HashMap, HashSet};
+use std::borrow::Cow;
 
-/// The fields a variable may have (`retain` is an alias of `nonvolatile`, as in the derive).
-pub const FIELDS: [&str; 13] = [
-    "type",
-    "link",
-    "description",
-    "initial",
-    "nonvolatile",
-    "max_length",
-    "source",
-    "bit",
-    "direction",
-    "read_only",
-    "at",
-    "dims",
-    "retain",
-];
+/// The fields a variable may have besides the attributes of every format: its type, a
+/// string's capacity, an array's dimensions.
+const LIST_FIELDS: [&str; 3] = ["type", "max_length", "dims"];
 
-/// One variable, checked.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Spec {
-    /// Name (the struct field).
-    pub name: String,
-    /// IEC type of one element as its Rust type maps it (`WORD` fields are `UINT` here).
-    pub iec_type: IecType,
-    /// A bit-string type declared in the file (`BYTE`..`LWORD`).
-    pub bit_string: Option<IecType>,
-    /// String capacity.
-    pub capacity: Option<usize>,
-    /// Array dimensions.
-    pub dims: Vec<usize>,
-    /// Hardware link.
-    pub link: Option<String>,
-    /// Description.
-    pub description: Option<String>,
-    /// Initial value.
-    pub initial: Option<Value>,
-    /// Nonvolatile.
-    pub nonvolatile: bool,
-    /// Source word and bit of a bit-mapped bool.
-    pub source: Option<(String, u8)>,
-    /// Direction as written.
-    pub direction: Option<Direction>,
-    /// Read-only.
-    pub read_only: bool,
-    /// IEC address.
-    pub at: Option<String>,
-}
-
-impl Spec {
-    /// The Rust type of one element: `u16`, `FixedString<64>`.
-    pub fn element_type(&self) -> String {
-        match self.capacity {
-            Some(n) => format!("FixedString<{n}>"),
-            None => self.iec_type.rust_name().to_string(),
-        }
-    }
-
-    /// The field's Rust type, arrays included: `[[f32; 4]; 3]`.
-    pub fn rust_type(&self) -> String {
-        self.dims
-            .iter()
-            .rev()
-            .fold(self.element_type(), |inner, d| format!("[{inner}; {d}]"))
-    }
-
-    /// The direction the derive gives it before bit mapping: as written, else from `at`, else
-    /// internal. A contradiction with `at` is reported elsewhere; `at` wins, as in the derive.
-    fn own_direction(&self) -> Direction {
-        match self
-            .at
-            .as_deref()
-            .and_then(|a| a.parse::<IecAddress>().ok())
-        {
-            Some(a) if a.area == Area::Input => Direction::Input,
-            Some(a) if a.area == Area::Output => Direction::Output,
-            _ => self.direction.unwrap_or(Direction::Internal),
-        }
-    }
-}
-
-/// What an issue is about; the front end (JSON or CSV) turns it into a location.
+/// Where something is in a variable list: the variable (its index in [`Checked::decl`]) and
+/// the field (JSON key, CSV column), `None` for the variable as a whole.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Subject {
-    /// A variable, by name (names are unique once duplicates are set aside).
-    Var(String),
-    /// The n-th name of [`Parsed::duplicates`].
-    Duplicate(usize),
-}
-
-/// One error or warning: its subject, the field (if one), and what is wrong.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Issue {
+pub struct ListAt {
     /// The variable.
-    pub subject: Subject,
-    /// The field (JSON key, CSV column); `None` for the variable as a whole.
-    pub field: Option<String>,
+    pub var: usize,
+    /// The field (owned only for a field the format does not know).
+    pub field: Option<Cow<'static, str>>,
+}
+
+/// One worded problem and where it is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Problem {
+    /// Where.
+    pub at: ListAt,
     /// What is wrong and what to do.
     pub message: String,
 }
 
-/// The outcome: checked variables (those with a known type), errors, warnings.
+/// The outcome: the declaration (the list's variables in file order, then the names given
+/// twice), its errors in file order, and warnings.
 pub struct Checked {
-    pub specs: Vec<Spec>,
-    pub errors: Vec<Issue>,
-    pub warnings: Vec<Issue>,
+    pub decl: Decl<ListAt>,
+    /// How many of `decl`'s variables are the list's own; the rest are the second uses of a
+    /// name, declared to be reported, not generated.
+    pub declared: usize,
+    pub errors: Vec<Problem>,
+    pub warnings: Vec<Problem>,
 }
 
+/// How a variable list words the checker's messages: names in double quotes, as JSON writes
+/// them; `lines` gives the line of a variable where the format has lines (CSV).
+pub struct ListWording<'a> {
+    pub lines: &'a dyn Fn(usize) -> Option<u64>,
+}
+
+impl Wording<ListAt> for ListWording<'_> {
+    fn name(&self, name: &str) -> String {
+        format!("{name:?}")
+    }
+
+    fn place(&self, at: &ListAt) -> String {
+        (self.lines)(at.var).map_or_else(String::new, |l| format!(" (line {l})"))
+    }
+}
+
+/// JSON text of a value, as messages quote it.
 fn text(v: &Value) -> String {
     match v {
         Value::String(s) => format!("{s:?}"),
@@ -128,530 +74,309 @@ fn text(v: &Value) -> String {
     }
 }
 
-/// Collects the issues of one variable.
-struct Report<'a> {
-    name: &'a str,
-    errors: &'a mut Vec<Issue>,
+/// Reads one variable's fields into the model, reporting what the format itself refuses.
+struct Reader<'a> {
+    var: usize,
+    obj: &'a serde_json::Map<String, Value>,
+    problems: &'a mut Vec<Problem>,
+    wording: &'a ListWording<'a>,
 }
 
-impl Report<'_> {
-    fn err(&mut self, field: &str, message: String) {
-        self.errors.push(Issue {
-            subject: Subject::Var(self.name.to_string()),
-            field: (!field.is_empty()).then(|| field.to_string()),
-            message,
-        });
-    }
-}
-
-/// A variable as checked on its own; `typed` is false when its type is missing or unknown, so
-/// that the checks between variables that need the type are skipped.
-struct Var {
-    spec: Spec,
-    typed: bool,
-}
-
-fn str_field(obj: &serde_json::Map<String, Value>, key: &str, r: &mut Report) -> Option<String> {
-    match obj.get(key)? {
-        Value::String(s) => Some(s.clone()),
-        other => {
-            r.err(key, format!("expected a string, found {}", text(other)));
-            None
+impl Reader<'_> {
+    fn at(&self, field: &'static str) -> ListAt {
+        ListAt {
+            var: self.var,
+            field: Some(Cow::Borrowed(field)),
         }
     }
-}
 
-fn bool_field(obj: &serde_json::Map<String, Value>, key: &str, r: &mut Report) -> bool {
-    match obj.get(key) {
-        None => false,
-        Some(Value::Bool(b)) => *b,
-        Some(other) => {
-            r.err(
-                key,
-                format!("expected true or false, found {}", text(other)),
-            );
-            false
+    fn err(&mut self, field: &'static str, message: String) {
+        let at = self.at(field);
+        self.problems.push(Problem { at, message });
+    }
+
+    /// An issue of a shared rule found while reading, worded as the checker words it.
+    fn issue(&mut self, field: &'static str, kind: IssueKind) {
+        let message = Issue::new(kind, self.at(field)).message(self.wording);
+        self.err(field, message);
+    }
+
+    fn string(&mut self, key: &'static str) -> Option<Located<String, ListAt>> {
+        match self.obj.get(key)? {
+            Value::String(s) => Some(Located::new(s.clone(), self.at(key))),
+            other => {
+                self.err(key, format!("expected a string, found {}", text(other)));
+                None
+            }
         }
     }
-}
 
-/// The declared type: `Ok(None)` when it is missing or unknown (reported).
-fn declared_type(obj: &serde_json::Map<String, Value>, r: &mut Report) -> Option<IecType> {
-    if !obj.contains_key("type") {
-        r.err("type", "missing: every variable needs a type (bool, u8..u64, i8..i64, f32, f64, string, or an IEC name)".into());
-        return None;
+    fn flag(&mut self, key: &'static str) -> bool {
+        match self.obj.get(key) {
+            None => false,
+            Some(Value::Bool(b)) => *b,
+            Some(other) => {
+                self.err(
+                    key,
+                    format!("expected true or false, found {}", text(other)),
+                );
+                false
+            }
+        }
     }
-    let ty_text = str_field(obj, "type", r)?;
-    match ty_text.parse() {
-        Ok(t) => Some(t),
-        Err(_) => {
-            r.err(
+
+    /// The declared type; `None` when it is missing or unknown (reported).
+    fn declared_type(&mut self) -> Option<IecType> {
+        if !self.obj.contains_key("type") {
+            self.err(
                 "type",
-                format!(
-                    "unknown type {ty_text:?}: use bool, u8..u64, i8..i64, f32, f64, string, or BOOL..LREAL, BYTE..LWORD, STRING"
-                ),
+                "missing: every variable needs a type (bool, u8..u64, i8..i64, f32, f64, \
+                 string, or an IEC name)"
+                    .into(),
             );
-            None
+            return None;
         }
-    }
-}
-
-fn dims_field(obj: &serde_json::Map<String, Value>, r: &mut Report) -> Vec<usize> {
-    match obj.get("dims") {
-        None => vec![],
-        Some(Value::Array(a)) => {
-            let d: Vec<usize> = a
-                .iter()
-                .filter_map(|x| x.as_u64().and_then(|n| usize::try_from(n).ok()))
-                .collect();
-            let items = d.iter().try_fold(1usize, |acc, &n| acc.checked_mul(n));
-            if d.len() != a.len() || d.contains(&0) {
-                r.err(
-                    "dims",
+        let ty = self.string("type")?.value;
+        match ty.parse() {
+            Ok(t) => Some(t),
+            Err(_) => {
+                self.err(
+                    "type",
                     format!(
-                        "{} is not a list of whole numbers of at least 1",
-                        text(&Value::Array(a.clone()))
+                        "unknown type {ty:?}: use bool, u8..u64, i8..i64, f32, f64, string, or \
+                         BOOL..LREAL, BYTE..LWORD, STRING"
                     ),
                 );
-                vec![]
-            } else if d.is_empty() || d.len() > MAX_ARRAY_DIMS {
-                r.err(
-                    "dims",
-                    format!(
-                        "{} dimensions given: an array has 1 to {MAX_ARRAY_DIMS} dimensions (seed 003)",
-                        d.len()
-                    ),
-                );
-                vec![]
-            } else if items.is_none_or(|n| n > MAX_ARRAY_ITEMS) {
-                r.err(
-                    "dims",
-                    format!(
-                        "an array holds at most {MAX_ARRAY_ITEMS} items in all dimensions (seed 003)"
-                    ),
-                );
-                vec![]
-            } else {
-                d
+                None
             }
         }
-        Some(other) => {
-            r.err(
-                "dims",
-                format!("expected a list such as [3, 4], found {}", text(other)),
-            );
-            vec![]
-        }
     }
-}
 
-fn capacity_field(
-    obj: &serde_json::Map<String, Value>,
-    iec_type: Option<IecType>,
-    r: &mut Report,
-) -> Option<usize> {
-    match (iec_type, obj.get("max_length")) {
-        (Some(IecType::String), None) => Some(DEFAULT_STRING_CAPACITY),
-        (Some(IecType::String), Some(v)) => match v.as_u64() {
-            Some(n) if (1..=MAX_STRING_CAPACITY as u64).contains(&n) => Some(n as usize),
-            _ => {
-                r.err(
-                    "max_length",
-                    format!("{} is not a capacity of 1..=255 bytes (seed 000)", text(v)),
-                );
-                Some(DEFAULT_STRING_CAPACITY)
-            }
-        },
-        (Some(_), Some(_)) => {
-            r.err("max_length", "only strings have a max_length".into());
-            None
-        }
-        // Unknown type: whether a capacity is allowed is unknown too.
-        (None, _) | (Some(_), None) => None,
-    }
-}
-
-/// Checks `at`: syntax, area, and (with a known type) width and alignment; a direction that
-/// contradicts it.
-fn at_field(
-    at: &str,
-    ty: Option<(IecType, IecType)>,
-    dims: &[usize],
-    direction: Option<Direction>,
-    r: &mut Report,
-) {
-    let addr = match at.parse::<IecAddress>() {
-        Err(e) => return r.err("at", format!("invalid address {e}")),
-        Ok(addr) if addr.area == Area::Memory => {
-            return r.err(
-                "at",
-                format!("{at:?} is in the M area: `at` locates I/O channels (%I or %Q)"),
-            );
-        }
-        Ok(addr) => addr,
-    };
-    if let Some((iec_type, declared)) = ty {
-        let width = if iec_type == IecType::Bool {
-            1
-        } else {
-            iec_type.bits()
-        };
-        if !dims.is_empty() || iec_type == IecType::String {
-            let what = if dims.is_empty() {
-                "a STRING"
-            } else {
-                "an array"
-            };
-            r.err(
-                "at",
-                format!(
-                    "{what} cannot be located: only a scalar of a basic type can (seed 003); remove `at`"
-                ),
-            );
-        } else if Size::from_bits(width) != Some(addr.size) {
-            r.err(
-                "at",
-                format!(
-                    "{at:?} is {} bits but a {} has {width}",
-                    addr.size.bits(),
-                    declared
-                ),
-            );
-        } else if !addr.is_aligned() {
-            r.err(
-                "at",
-                format!(
-                    "{at:?} is not aligned to {} bytes (seed 004)",
-                    addr.size.bytes()
-                ),
-            );
-        }
-    }
-    let implied = if addr.area == Area::Input {
-        Direction::Input
-    } else {
-        Direction::Output
-    };
-    if direction.is_some_and(|d| d != implied) {
-        r.err(
-            "direction",
-            format!(
-                "contradicts `at` {at:?}, which makes it an {}",
-                implied.name()
-            ),
-        );
-    }
-}
-
-/// Whether `init` fits the type; the error says why not.
-fn initial_fits(
-    init: &Value,
-    iec_type: IecType,
-    declared: IecType,
-    capacity: Option<usize>,
-) -> Result<(), String> {
-    match (init, iec_type.family()) {
-        (Value::Bool(_), TypeFamily::Bool) => Ok(()),
-        (Value::Number(n), _) if iec_type.is_integer() => {
-            match n.as_i64().map(i128::from).or(n.as_u64().map(i128::from)) {
-                Some(v) => {
-                    let (lo, hi) = iec_type.int_range().unwrap_or((0, 0));
-                    if (lo..=hi).contains(&v) {
-                        Ok(())
-                    } else {
-                        Err(format!("{v} is out of range for {declared} ({lo}..={hi})"))
-                    }
+    /// `max_length`: the capacity of a string (64 if not given).
+    fn capacity(&mut self, declared: Option<IecType>) -> Option<u64> {
+        match (declared, self.obj.get("max_length")) {
+            (Some(IecType::String), None) => Some(DEFAULT_STRING_CAPACITY as u64),
+            (Some(IecType::String), Some(v)) => match v.as_u64() {
+                Some(n) => Some(n),
+                None => {
+                    self.issue("max_length", IssueKind::BadCapacity { text: text(v) });
+                    Some(DEFAULT_STRING_CAPACITY as u64)
                 }
-                None => Err(format!("{n} is not a whole number ({declared})")),
+            },
+            (Some(_), Some(_)) => {
+                self.err("max_length", "only strings have a max_length".into());
+                None
+            }
+            // Unknown type: whether a capacity is allowed is unknown too.
+            (None, _) | (Some(_), None) => None,
+        }
+    }
+
+    /// `dims`: a list of whole numbers (their limits are the checker's).
+    fn dims(&mut self) -> Vec<u64> {
+        match self.obj.get("dims") {
+            None => vec![],
+            Some(Value::Array(a)) => {
+                let d: Vec<u64> = a.iter().filter_map(Value::as_u64).collect();
+                if d.len() != a.len() {
+                    self.err(
+                        "dims",
+                        format!(
+                            "{} is not a list of whole numbers of at least 1",
+                            text(&Value::Array(a.clone()))
+                        ),
+                    );
+                    vec![]
+                } else if d.is_empty() {
+                    self.issue("dims", IssueKind::DimensionCount { count: 0 });
+                    vec![]
+                } else {
+                    d
+                }
+            }
+            Some(other) => {
+                self.err(
+                    "dims",
+                    format!("expected a list such as [3, 4], found {}", text(other)),
+                );
+                vec![]
             }
         }
-        (Value::Number(n), TypeFamily::Real) => match n.as_f64() {
-            Some(v) if iec_type == IecType::Real && v.abs() > f32::MAX as f64 => Err(format!(
-                "{n} is out of range for REAL (at most {:e} either side of 0); use f64 (LREAL)",
-                f32::MAX
-            )),
-            _ => Ok(()),
-        },
-        (Value::String(s), TypeFamily::String) => {
-            let cap = capacity.unwrap_or(DEFAULT_STRING_CAPACITY);
-            if s.len() <= cap {
-                Ok(())
-            } else {
-                Err(format!("{} bytes do not fit max_length {cap}", s.len()))
+    }
+
+    fn direction(&mut self) -> Option<Located<Direction, ListAt>> {
+        let d = self.string("direction")?;
+        match Direction::from_name(&d.value) {
+            Some(dir) => Some(Located::new(dir, d.at)),
+            None => {
+                self.issue("direction", IssueKind::UnknownDirection { text: d.value });
+                None
             }
         }
-        (other, _) => Err(format!("{} is not a {declared} value", text(other))),
+    }
+
+    /// `initial`; `null` is no initial value, as the framework that writes these files treats
+    /// it.
+    fn initial(&self) -> Option<Located<Initial, ListAt>> {
+        let v = self.obj.get("initial").filter(|v| !v.is_null())?;
+        let value = match v {
+            Value::Bool(b) => InitialValue::Bool(*b),
+            Value::Number(n) => match n.as_i64().map(i128::from).or(n.as_u64().map(i128::from)) {
+                Some(i) => InitialValue::Int(i),
+                None => InitialValue::Float(n.as_f64().unwrap_or(f64::NAN)),
+            },
+            Value::String(s) => InitialValue::Text(s.clone()),
+            _ => InitialValue::Other,
+        };
+        let initial = Initial {
+            value,
+            text: text(v),
+        };
+        Some(Located::new(initial, self.at("initial")))
+    }
+
+    /// `source` and `bit`, each checked on its own so that both mistakes show. When either is
+    /// malformed neither is kept, so the other is not also told it lacks its partner.
+    #[allow(clippy::type_complexity)]
+    fn source_and_bit(
+        &mut self,
+    ) -> (
+        Option<Located<String, ListAt>>,
+        Option<Located<i64, ListAt>>,
+    ) {
+        let source = self.obj.get("source").map(|s| match s.as_str() {
+            Some(name) => Some(Located::new(name.to_string(), self.at("source"))),
+            None => {
+                self.err(
+                    "source",
+                    format!("expected a variable name, found {}", text(s)),
+                );
+                None
+            }
+        });
+        let bit = self.obj.get("bit").map(|b| match b.as_i64() {
+            Some(n) => Some(Located::new(n, self.at("bit"))),
+            None => {
+                self.issue("bit", IssueKind::BadBit { text: text(b) });
+                None
+            }
+        });
+        match (source, bit) {
+            (Some(None), _) | (_, Some(None)) => (None, None),
+            (s, b) => (s.flatten(), b.flatten()),
+        }
     }
 }
 
-/// `source` and `bit`, each checked on its own so that both mistakes show.
-fn source_field(obj: &serde_json::Map<String, Value>, r: &mut Report) -> Option<(String, u8)> {
-    let source = obj.get("source").map(|s| match s.as_str() {
-        Some(s) => Some(s.to_string()),
-        None => {
-            r.err(
-                "source",
-                format!("expected a variable name, found {}", text(s)),
-            );
-            None
-        }
-    });
-    let bit = obj.get("bit").map(|b| match b.as_u64() {
-        Some(n) if n <= 63 => Some(n as u8),
-        _ => {
-            r.err("bit", format!("{} is not a bit number 0..=63", text(b)));
-            None
-        }
-    });
-    match (source, bit) {
-        (None, None) => None,
-        (Some(_), None) => {
-            r.err(
-                "source",
-                "needs `bit`, the bit of the source word (0 = least significant)".into(),
-            );
-            None
-        }
-        (None, Some(_)) => {
-            r.err(
-                "bit",
-                "needs `source`, the integer variable that holds the bit".into(),
-            );
-            None
-        }
-        (Some(s), Some(b)) => Some((s?, b?)),
-    }
-}
-
-/// Checks one variable's own fields.
-fn one(name: &str, v: &Value, errors: &mut Vec<Issue>) -> Option<Var> {
-    let mut r = Report { name, errors };
-    if let Err(e) = names::check_name(name) {
-        r.err("", format!("invalid variable name: {e} (seed 003)"));
-    }
+/// One variable of the list, read into the model.
+fn read_var(
+    var: usize,
+    name: &str,
+    v: &Value,
+    problems: &mut Vec<Problem>,
+    wording: &ListWording,
+) -> decl::Var<ListAt> {
+    let whole = || ListAt { var, field: None };
+    let type_at = ListAt {
+        var,
+        field: Some(Cow::Borrowed("type")),
+    };
+    let mut model = decl::Var::new(name, name, Located::new(DeclType::Unknown, type_at.clone()));
+    model.name.at = whole();
     let Some(obj) = v.as_object() else {
-        r.err(
-            "",
-            format!(
+        problems.push(Problem {
+            at: whole(),
+            message: format!(
                 "expected an object such as {{ \"type\": \"u16\" }}, found {}",
                 text(v)
             ),
-        );
-        return None;
+        });
+        return model;
+    };
+    let mut r = Reader {
+        var,
+        obj,
+        problems,
+        wording,
     };
     for key in obj.keys() {
-        if !FIELDS.contains(&key.as_str()) {
-            r.err(
-                key,
-                format!("unknown field: use one of {}", FIELDS.join(", ")),
-            );
+        if !LIST_FIELDS.contains(&key.as_str()) && !ATTRIBUTE_KEYS.contains(&key.as_str()) {
+            let known: Vec<&str> = LIST_FIELDS.iter().chain(ATTRIBUTE_KEYS).copied().collect();
+            r.problems.push(Problem {
+                at: ListAt {
+                    var,
+                    field: Some(Cow::Owned(key.clone())),
+                },
+                message: format!("unknown field: use one of {}", known.join(", ")),
+            });
         }
     }
-    let declared = declared_type(obj, &mut r);
-    let ty = declared.map(|declared| match declared.family() {
-        TypeFamily::BitString => (
-            IecType::from_rust_name(declared.rust_name()).unwrap_or(declared),
-            declared,
-        ),
-        _ => (declared, declared),
-    });
-    let iec_type = ty.map(|(t, _)| t);
-    let capacity = capacity_field(obj, iec_type, &mut r);
-    let dims = dims_field(obj, &mut r);
-    let link = str_field(obj, "link", &mut r);
-    if let Some(l) = &link
-        && let Err(e) = Link::parse(l)
-    {
-        r.err("link", format!("invalid link {l:?}: {e}"));
-    }
-    let direction = str_field(obj, "direction", &mut r).and_then(|d| {
-        Direction::from_name(&d).or_else(|| {
-            r.err(
-                "direction",
-                format!("unknown direction {d:?}: use input, output, command, status or internal"),
-            );
-            None
-        })
-    });
-    let at = str_field(obj, "at", &mut r);
-    if let Some(a) = &at {
-        at_field(a, ty, &dims, direction, &mut r);
-    }
-    let initial = obj.get("initial").cloned();
-    if let (Some(init), Some((iec_type, declared))) = (&initial, ty)
-        && let Err(e) = initial_fits(init, iec_type, declared, capacity)
-    {
-        r.err("initial", e);
-    }
-    let source = source_field(obj, &mut r);
-    let description = str_field(obj, "description", &mut r);
-    let nonvolatile = bool_field(obj, "nonvolatile", &mut r) | bool_field(obj, "retain", &mut r);
-    let read_only = bool_field(obj, "read_only", &mut r);
-    Some(Var {
-        spec: Spec {
-            name: name.to_string(),
-            // A placeholder when the type is unknown: `typed` keeps it out of every check.
-            iec_type: iec_type.unwrap_or(IecType::Bool),
-            bit_string: ty.and_then(|(t, d)| (t != d).then_some(d)),
+    let declared = r.declared_type();
+    let capacity = r.capacity(declared);
+    let dims = r.dims();
+    if let Some(declared) = declared {
+        // A bit-string type is stored as the unsigned integer of its width.
+        let iec = match declared.family() {
+            TypeFamily::BitString => {
+                model.iec_type = Some(Located::new(declared, type_at));
+                IecType::from_rust_name(declared.rust_name()).unwrap_or(declared)
+            }
+            _ => declared,
+        };
+        model.ty.value = DeclType::Known(KnownType {
+            iec,
             capacity,
             dims,
-            link,
-            description,
-            initial,
-            nonvolatile,
-            source,
-            direction,
-            read_only,
-            at,
-        },
-        typed: ty.is_some(),
-    })
-}
-
-/// The checks of a bit-mapped bool against its source.
-fn bit_mappings(vars: &[Var], declared: &HashSet<&str>, errors: &mut Vec<Issue>) {
-    // Maps, not searches: a 10,000-variable file must not take quadratic time.
-    let by_name: HashMap<&str, &Var> = vars.iter().map(|v| (v.spec.name.as_str(), v)).collect();
-    let mut taken: HashMap<(&str, u8), &str> = HashMap::new();
-    for v in vars {
-        let s = &v.spec;
-        let Some((source, bit)) = &s.source else {
-            continue;
-        };
-        let mut r = Report {
-            name: &s.name,
-            errors,
-        };
-        if v.typed && (s.iec_type != IecType::Bool || !s.dims.is_empty()) {
-            r.err(
-                "type",
-                format!(
-                    "a bit-mapped variable must be bool (seed 000), not {}",
-                    s.rust_type()
-                ),
-            );
-        }
-        if source == &s.name {
-            r.err("source", "a variable cannot be its own source".into());
-            continue;
-        }
-        let Some(src) = by_name.get(source.as_str()) else {
-            if !declared.contains(&source.as_str()) {
-                let hint = declared
-                    .iter()
-                    .find(|x| x.eq_ignore_ascii_case(source))
-                    .map(|x| format!(" (did you mean {x:?}?)"))
-                    .unwrap_or_default();
-                r.err("source", format!("{source:?} names no variable{hint}"));
-            }
-            // Declared but not an object: its own error says so.
-            continue;
-        };
-        if !src.typed {
-            // Its missing or unknown type is reported on it; nothing more can be said here.
-            continue;
-        }
-        let src = &src.spec;
-        if !src.iec_type.is_integer() || !src.dims.is_empty() {
-            r.err(
-                "source",
-                format!(
-                    "{source:?} is {}, but a source must be an integer (u8..u64, i8..i64)",
-                    src.rust_type()
-                ),
-            );
-            continue;
-        }
-        if u32::from(*bit) >= src.iec_type.bits() {
-            r.err(
-                "bit",
-                format!(
-                    "{bit} is out of range for source {source:?} ({} has bits 0..={})",
-                    src.rust_type(),
-                    src.iec_type.bits() - 1
-                ),
-            );
-            continue;
-        }
-        let source_dir = src.own_direction();
-        if let Some(d) = s.direction
-            && d != source_dir
-        {
-            r.err(
-                "direction",
-                format!(
-                    "{:?} contradicts the source {source:?}, which is {}: a bit-mapped bool takes its source's direction; remove `direction`",
-                    d.name(),
-                    source_dir.name()
-                ),
-            );
-        }
-        if let Some(first) = taken.get(&(source.as_str(), *bit)) {
-            r.err(
-                "bit",
-                format!("bit {bit} of {source:?} is already mapped to {first:?}"),
-            );
-            continue;
-        }
-        taken.insert((source, *bit), &s.name);
+        });
+        model.capacity_at = obj.contains_key("max_length").then(|| r.at("max_length"));
+        model.dims_at = obj.contains_key("dims").then(|| r.at("dims"));
     }
+    model.link = r.string("link");
+    model.direction = r.direction();
+    model.at = r.string("at");
+    model.initial = r.initial();
+    (model.source, model.bit) = r.source_and_bit();
+    model.description = r
+        .string("description")
+        .map_or_else(String::new, |d| d.value);
+    model.nonvolatile = r.flag("nonvolatile") | r.flag("retain");
+    model.read_only = r.flag("read_only");
+    model
 }
 
-/// Checks every variable and the rules between them.
-pub fn check(parsed: &Parsed) -> Checked {
-    let mut errors: Vec<Issue> = parsed
-        .duplicates
-        .iter()
+/// Checks every variable and the rules between them. `lines` gives a variable's line where
+/// the format has lines.
+pub fn check(parsed: &Parsed, lines: &dyn Fn(usize) -> Option<u64>) -> Checked {
+    let wording = ListWording { lines };
+    let mut errors = Vec::new();
+    let all = parsed.variables.iter().chain(&parsed.duplicates);
+    let vars = all
         .enumerate()
-        .map(|(i, _)| Issue {
-            subject: Subject::Duplicate(i),
-            field: None,
-            message: "declared twice (names are case-insensitive, seed 003)".into(),
-        })
+        .map(|(i, (name, v))| read_var(i, name, v, &mut errors, &wording))
         .collect();
-    let vars: Vec<Var> = parsed
-        .variables
-        .iter()
-        .filter_map(|(n, v)| one(n, v, &mut errors))
-        .collect();
-    let declared: HashSet<&str> = parsed.variables.iter().map(|(n, _)| n.as_str()).collect();
-    bit_mappings(&vars, &declared, &mut errors);
+    let decl = Decl {
+        vars,
+        unaligned: false,
+    };
+    let checked = decl::check(&decl);
     let mut warnings = Vec::new();
-    let mut linked: HashMap<&str, &str> = HashMap::new();
-    for v in &vars {
-        let s = &v.spec;
-        let Some(l) = &s.link else { continue };
-        if let Some(first) = linked.get(l.as_str()) {
-            warnings.push(Issue {
-                subject: Subject::Var(s.name.clone()),
-                field: Some("link".into()),
-                message: format!(
-                    "{l:?} is also linked by {first:?}: fine for an input; two variables writing one output entry are refused when the bus starts"
-                ),
-            });
+    for issue in &checked.issues {
+        let problem = Problem {
+            at: issue.at.clone(),
+            message: issue.message(&wording),
+        };
+        if issue.is_warning() {
+            warnings.push(problem);
         } else {
-            linked.insert(l, &s.name);
+            errors.push(problem);
         }
     }
-    let located: Vec<(&Spec, IecAddress)> = vars
-        .iter()
-        .filter_map(|v| Some((&v.spec, v.spec.at.as_ref()?.parse().ok()?)))
-        .collect();
-    for (i, (s, a)) in located.iter().enumerate() {
-        if let Some((first, _)) = located[..i].iter().find(|(_, b)| b.overlaps(a)) {
-            errors.push(Issue {
-                subject: Subject::Var(s.name.clone()),
-                field: Some("at".into()),
-                message: format!("{a} overlaps the address of {:?}", first.name),
-            });
-        }
-    }
+    // In the order of the file, as a user fixes them going down it; the sort is stable, so a
+    // variable's errors keep the order of its fields.
+    errors.sort_by_key(|p| p.at.var);
     Checked {
-        specs: vars
-            .into_iter()
-            .filter(|v| v.typed)
-            .map(|v| v.spec)
-            .collect(),
+        decl,
+        declared: parsed.variables.len(),
         errors,
         warnings,
     }

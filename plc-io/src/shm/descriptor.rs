@@ -54,34 +54,27 @@ pub struct BitDescriptor {
     pub bit: u8,
 }
 
+/// The same answers as [`VarInfo`]'s, from the same helpers.
 impl VarDescriptor {
-    /// Number of elements (1 for a scalar).
+    /// Number of elements (1 for a scalar). Saturating: a damaged descriptor must not overflow
+    /// (`check_variables` refuses it).
     pub fn elements(&self) -> usize {
-        // Saturating: a damaged descriptor must not overflow (`check_variables` refuses it).
-        self.dims
-            .iter()
-            .try_fold(1usize, |n, &d| n.checked_mul(d))
-            .unwrap_or(usize::MAX)
-            .max(1)
+        plc_rules::access::elements(&self.dims)
     }
 
-    /// Bytes of one element.
+    /// Bytes of one element (0 for a damaged descriptor with no elements).
     pub fn element_size(&self) -> usize {
-        self.size / self.elements()
+        plc_rules::access::element_size(self.size, &self.dims)
     }
 
     /// Capacity of a string element in bytes (0 for other types).
     pub fn string_capacity(&self) -> usize {
-        if self.iec_type == IecType::String {
-            self.element_size()
-        } else {
-            0
-        }
+        plc_rules::access::string_capacity(self.iec_type, self.size, &self.dims)
     }
 
     /// Whether tools may write it (read-write, neither input nor status).
     pub fn writable_from_outside(&self) -> bool {
-        self.access == Access::ReadWrite && self.direction.writable_from_outside()
+        plc_rules::access::writable_from_outside(self.access, self.direction)
     }
 }
 

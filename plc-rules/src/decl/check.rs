@@ -78,7 +78,11 @@ fn own_rules<L: Clone>(v: &Var<L>, issues: &mut Vec<Issue<L>>) -> Option<IecAddr
     }
     if let DeclType::Known(k) = &v.ty.value {
         for kind in type_rules(k) {
-            issues.push(Issue::new(kind, v.ty.at.clone()));
+            let at = match kind {
+                IssueKind::BadCapacity { .. } => v.capacity_at.as_ref(),
+                _ => v.dims_at.as_ref(),
+            };
+            issues.push(Issue::new(kind, at.unwrap_or(&v.ty.at).clone()));
         }
     }
     if let Some(link) = &v.link
@@ -376,7 +380,10 @@ fn directions<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Vec<
             Some(d) if d.value != source_direction => issues.push(Issue::new(
                 IssueKind::DirectionContradictsSource {
                     given: d.value,
-                    source: v.source.as_ref().map_or_else(String::new, |x| x.value.clone()),
+                    source: v
+                        .source
+                        .as_ref()
+                        .map_or_else(String::new, |x| x.value.clone()),
                     source_direction,
                 },
                 d.at.clone(),
@@ -459,24 +466,24 @@ pub fn initial_misfit(
         }
         InitialValue::BigInt(_) if k.iec.is_integer() => out_of_range(int_range()),
         InitialValue::Int(_) if family == TypeFamily::Real => None,
-        InitialValue::Float(v) | InitialValue::BigInt(v) if family == TypeFamily::Real => {
-            (k.iec == IecType::Real && v.abs() > f32::MAX as f64).then(|| {
-                IssueKind::InitialOutOfRange {
-                    text: text.to_string(),
-                    iec,
-                    ty: k.element_name(),
-                    range: format!("up to {:e} either side of 0", f32::MAX),
-                }
-            })
-        }
+        InitialValue::Float(v) | InitialValue::BigInt(v) if family == TypeFamily::Real => (k.iec
+            == IecType::Real
+            && v.abs() > f32::MAX as f64)
+            .then(|| IssueKind::InitialOutOfRange {
+                text: text.to_string(),
+                iec,
+                ty: k.element_name(),
+                range: format!("up to {:e} either side of 0", f32::MAX),
+            }),
         InitialValue::Text(s) if family == TypeFamily::String => {
             let capacity = k.capacity.unwrap_or(u64::MAX);
-            (s.len() as u64 > capacity).then(|| IssueKind::InitialTooLong {
+            (s.len() as u64 > capacity).then_some(IssueKind::InitialTooLong {
                 len: s.len(),
                 capacity,
             })
         }
         _ if family == TypeFamily::String => wrong(Expected::Text),
+        InitialValue::Float(_) if k.iec.is_integer() => wrong(Expected::NotReal),
         _ if k.iec.is_integer() => wrong(Expected::WholeNumber),
         _ => wrong(Expected::Number),
     }

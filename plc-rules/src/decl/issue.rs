@@ -27,6 +27,8 @@ pub enum Expected {
     Bool,
     /// A whole number (for an integer or bit-string type).
     WholeNumber,
+    /// A whole number where a real number was given.
+    NotReal,
     /// A number (for REAL and LREAL).
     Number,
     /// Text (for STRING).
@@ -277,7 +279,10 @@ impl<L> Issue<L> {
     /// The message: the rule broken and what to do, in the front end's quoting.
     pub fn message(&self, w: &impl Wording<L>) -> String {
         let q = |n: &str| w.name(n);
-        let place = self.related.as_ref().map_or_else(String::new, |r| w.place(r));
+        let place = self
+            .related
+            .as_ref()
+            .map_or_else(String::new, |r| w.place(r));
         match &self.kind {
             IssueKind::BadName { name, error } => {
                 format!("invalid variable name {}: {error}", q(name))
@@ -288,13 +293,12 @@ impl<L> Issue<L> {
                 q(name),
                 q(first)
             ),
-            IssueKind::BadCapacity { text } => format!(
-                "{text} is not a capacity of 1..={MAX_STRING_CAPACITY} bytes, what a string may \
-                 hold"
-            ),
-            IssueKind::DimensionCount { count } => format!(
-                "{count} dimensions given: an array has 1 to {MAX_ARRAY_DIMS} dimensions"
-            ),
+            IssueKind::BadCapacity { text } => {
+                format!("{text} is not a capacity of 1..={MAX_STRING_CAPACITY} bytes")
+            }
+            IssueKind::DimensionCount { count } => {
+                format!("{count} dimensions given: an array has 1 to {MAX_ARRAY_DIMS} dimensions")
+            }
             IssueKind::TooManyItems { items } => format!(
                 "an array holds at most {MAX_ARRAY_ITEMS} items in all dimensions, this one \
                  holds {}",
@@ -433,7 +437,10 @@ impl<L> Issue<L> {
                 Expected::Bool => {
                     format!("{text} is not a {iec} value: `initial` must be `true` or `false`")
                 }
-                Expected::WholeNumber => format!(
+                Expected::WholeNumber => {
+                    format!("{text} is not a {iec} value: `initial` must be a whole number")
+                }
+                Expected::NotReal => format!(
                     "{text} is not a whole number, which a {iec} needs (real to integer is \
                      never implicit)"
                 ),

@@ -35,8 +35,8 @@ mod issue;
 pub use check::{Checked, Resolved, check, initial_misfit};
 pub use issue::{Expected, Issue, IssueKind, Wording};
 
-pub use crate::access::{Access, Direction};
 use crate::IecType;
+pub use crate::access::{Access, Direction};
 use std::string::String;
 use std::vec::Vec;
 
@@ -167,6 +167,11 @@ pub struct Var<L> {
     pub field: String,
     /// The type, and where it is written.
     pub ty: Located<DeclType, L>,
+    /// Where the string capacity is written, where apart from the type (a list's
+    /// `max_length`).
+    pub capacity_at: Option<L>,
+    /// Where the dimensions are written, where apart from the type (a list's `dims`).
+    pub dims_at: Option<L>,
     /// `link = "ethercat.<device>.<entry>"`.
     pub link: Option<Located<String, L>>,
     /// `source = "<variable>"` of a bit-mapped bool.
@@ -197,6 +202,8 @@ impl<L: Clone> Var<L> {
             name_known: true,
             field: String::from(field),
             ty,
+            capacity_at: None,
+            dims_at: None,
             link: None,
             source: None,
             bit: None,
@@ -210,6 +217,22 @@ impl<L: Clone> Var<L> {
         }
     }
 }
+
+/// The attribute keys every declaration format has (the derive's `#[plc(...)]` keys and a
+/// variable list's fields add their own: `name` and `iec_type`; `type`, `max_length` and
+/// `dims`). `retain` is another name for `nonvolatile`.
+pub const ATTRIBUTE_KEYS: &[&str] = &[
+    "link",
+    "source",
+    "bit",
+    "at",
+    "initial",
+    "nonvolatile",
+    "retain",
+    "description",
+    "read_only",
+    "direction",
+];
 
 /// A whole declaration: the variables in order, and the settings that rules depend on.
 #[derive(Clone, Debug, PartialEq)]
