@@ -28,6 +28,10 @@ impl Wording<Loc> for RustWording {
 pub struct Ctxt {
     errors: Vec<TokenStream>,
     any: bool,
+    /// The declaration rules reported ([`plc_rules::decl::IssueKind::name`]), for the test
+    /// that the derive and the importer agree.
+    #[cfg(test)]
+    pub kinds: Vec<&'static str>,
 }
 
 impl Ctxt {
@@ -38,6 +42,8 @@ impl Ctxt {
 
     /// An issue of the declaration model, under what it is about.
     pub fn issue(&mut self, issue: &Issue<Loc>) {
+        #[cfg(test)]
+        self.kinds.push(issue.kind.name());
         let message = issue.message(&RustWording);
         match &issue.at {
             Loc::Span(span) => self.error(*span, message),

@@ -5,6 +5,8 @@
 //! README for the `#[plc(...)]` attribute reference.
 #![deny(missing_docs)]
 
+#[cfg(test)]
+mod agreement;
 mod ast;
 mod attr;
 mod check;

@@ -153,6 +153,7 @@ fn finish(
                     field: None,
                 },
                 message: "this name cannot be a Rust field; rename it".into(),
+                kind: None,
             }));
         }
     }

@@ -37,6 +37,8 @@ pub struct Problem {
     pub at: ListAt,
     /// What is wrong and what to do.
     pub message: String,
+    /// The declaration rule broken (`IssueKind::name`), `None` for the format's own.
+    pub kind: Option<&'static str>,
 }
 
 /// The outcome: the declaration (the list's variables in file order, then the names given
@@ -92,13 +94,22 @@ impl Reader<'_> {
 
     fn err(&mut self, field: &'static str, message: String) {
         let at = self.at(field);
-        self.problems.push(Problem { at, message });
+        self.problems.push(Problem {
+            at,
+            message,
+            kind: None,
+        });
     }
 
     /// An issue of a shared rule found while reading, worded as the checker words it.
     fn issue(&mut self, field: &'static str, kind: IssueKind) {
-        let message = Issue::new(kind, self.at(field)).message(self.wording);
-        self.err(field, message);
+        let name = kind.name();
+        let issue = Issue::new(kind, self.at(field));
+        self.problems.push(Problem {
+            message: issue.message(self.wording),
+            at: issue.at,
+            kind: Some(name),
+        });
     }
 
     fn string(&mut self, key: &'static str) -> Option<Located<String, ListAt>> {
@@ -290,6 +301,7 @@ fn read_var(
                 "expected an object such as {{ \"type\": \"u16\" }}, found {}",
                 text(v)
             ),
+            kind: None,
         });
         return model;
     };
@@ -308,6 +320,7 @@ fn read_var(
                     field: Some(Cow::Owned(key.clone())),
                 },
                 message: format!("unknown field: use one of {}", known.join(", ")),
+                kind: None,
             });
         }
     }
@@ -364,6 +377,7 @@ pub fn check(parsed: &Parsed, lines: &dyn Fn(usize) -> Option<u64>) -> Checked {
         let problem = Problem {
             at: issue.at.clone(),
             message: issue.message(&wording),
+            kind: Some(issue.kind.name()),
         };
         if issue.is_warning() {
             warnings.push(problem);
@@ -379,5 +393,38 @@ pub fn check(parsed: &Parsed, lines: &dyn Fn(usize) -> Option<u64>) -> Checked {
         declared: parsed.variables.len(),
         errors,
         warnings,
+    }
+}
+
+#[cfg(test)]
+mod agreement {
+    //! The importer's half of the agreement test: each row's JSON form gives the row's issue
+    //! kinds (the derive's half reads the Rust form).
+    include!("../../../plc-rules/src/decl/agreement_table.rs");
+
+    #[test]
+    fn the_json_form_of_each_row_gives_its_issue_kinds() {
+        let mut rows = 0;
+        for row in ROWS {
+            let Some(json) = row.json else { continue };
+            let parsed = super::super::parse::parse(&format!("{{ \"variables\": {{ {json} }} }}"))
+                .unwrap_or_else(|e| panic!("{}: {e}", row.rule));
+            let checked = super::check(&parsed, &|_| None);
+            let problems = checked.errors.iter().chain(&checked.warnings);
+            let format: Vec<&String> = problems
+                .clone()
+                .filter(|p| p.kind.is_none())
+                .map(|p| &p.message)
+                .collect();
+            assert!(format.is_empty(), "{}: {format:?}", row.rule);
+            assert_eq!(
+                sorted(problems.filter_map(|p| p.kind)),
+                sorted(row.kinds.iter().copied()),
+                "{}",
+                row.rule
+            );
+            rows += 1;
+        }
+        assert!(rows >= 40, "{rows} rows with a JSON form");
     }
 }

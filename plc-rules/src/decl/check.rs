@@ -242,7 +242,8 @@ fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Ve
                 ));
                 continue;
             }
-            if bit.value >= i64::from(k.iec.bits()) {
+            // A bit outside 0..=63 is reported as such, not also as beyond the width.
+            if (0..=63).contains(&bit.value) && bit.value >= i64::from(k.iec.bits()) {
                 issues.push(Issue::new(
                     IssueKind::BitOutOfRange {
                         bit: bit.value,

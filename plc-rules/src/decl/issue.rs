@@ -250,6 +250,79 @@ pub enum IssueKind {
     },
 }
 
+/// The name of every [`IssueKind`], as [`IssueKind::name`] gives it: the rules of
+/// `docs/rules.md`, one each.
+pub const KIND_NAMES: &[&str] = &[
+    "BadName",
+    "DuplicateName",
+    "BadCapacity",
+    "DimensionCount",
+    "TooManyItems",
+    "EmptyDimension",
+    "IecTypeMismatch",
+    "BadLink",
+    "BadAddress",
+    "AddressInMemoryArea",
+    "AddressNotScalar",
+    "AddressWidth",
+    "Misaligned",
+    "AddressOverlap",
+    "UnknownDirection",
+    "DirectionContradictsAddress",
+    "DirectionContradictsSource",
+    "SourceWithoutBit",
+    "BitWithoutSource",
+    "BadBit",
+    "MappedNotBool",
+    "SourceIsSelf",
+    "SourceUnknown",
+    "SourceNotInteger",
+    "BitOutOfRange",
+    "BitTaken",
+    "InitialWrongKind",
+    "InitialOutOfRange",
+    "InitialTooLong",
+    "SharedLink",
+];
+
+impl IssueKind {
+    /// The variant's name (`"BitOutOfRange"`), as `docs/rules.md` and tests name the rule.
+    pub fn name(&self) -> &'static str {
+        match self {
+            IssueKind::BadName { .. } => "BadName",
+            IssueKind::DuplicateName { .. } => "DuplicateName",
+            IssueKind::BadCapacity { .. } => "BadCapacity",
+            IssueKind::DimensionCount { .. } => "DimensionCount",
+            IssueKind::TooManyItems { .. } => "TooManyItems",
+            IssueKind::EmptyDimension => "EmptyDimension",
+            IssueKind::IecTypeMismatch { .. } => "IecTypeMismatch",
+            IssueKind::BadLink { .. } => "BadLink",
+            IssueKind::BadAddress { .. } => "BadAddress",
+            IssueKind::AddressInMemoryArea { .. } => "AddressInMemoryArea",
+            IssueKind::AddressNotScalar { .. } => "AddressNotScalar",
+            IssueKind::AddressWidth { .. } => "AddressWidth",
+            IssueKind::Misaligned { .. } => "Misaligned",
+            IssueKind::AddressOverlap { .. } => "AddressOverlap",
+            IssueKind::UnknownDirection { .. } => "UnknownDirection",
+            IssueKind::DirectionContradictsAddress { .. } => "DirectionContradictsAddress",
+            IssueKind::DirectionContradictsSource { .. } => "DirectionContradictsSource",
+            IssueKind::SourceWithoutBit => "SourceWithoutBit",
+            IssueKind::BitWithoutSource => "BitWithoutSource",
+            IssueKind::BadBit { .. } => "BadBit",
+            IssueKind::MappedNotBool { .. } => "MappedNotBool",
+            IssueKind::SourceIsSelf { .. } => "SourceIsSelf",
+            IssueKind::SourceUnknown { .. } => "SourceUnknown",
+            IssueKind::SourceNotInteger { .. } => "SourceNotInteger",
+            IssueKind::BitOutOfRange { .. } => "BitOutOfRange",
+            IssueKind::BitTaken { .. } => "BitTaken",
+            IssueKind::InitialWrongKind { .. } => "InitialWrongKind",
+            IssueKind::InitialOutOfRange { .. } => "InitialOutOfRange",
+            IssueKind::InitialTooLong { .. } => "InitialTooLong",
+            IssueKind::SharedLink { .. } => "SharedLink",
+        }
+    }
+}
+
 /// One problem: its kind, where it is, and the other declaration it clashes with (if one).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Issue<L> {

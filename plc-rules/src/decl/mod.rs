@@ -33,7 +33,7 @@ mod check;
 mod issue;
 
 pub use check::{Checked, Resolved, check, initial_misfit};
-pub use issue::{Expected, Issue, IssueKind, Wording};
+pub use issue::{Expected, Issue, IssueKind, KIND_NAMES, Wording};
 
 use crate::IecType;
 pub use crate::access::{Access, Direction};
@@ -241,4 +241,35 @@ pub struct Decl<L> {
     pub vars: Vec<Var<L>>,
     /// `#[plc(unaligned)]`: located W/D/L variables may start at any byte.
     pub unaligned: bool,
+}
+
+#[cfg(test)]
+mod agreement {
+    include!("agreement_table.rs");
+
+    use super::KIND_NAMES;
+
+    #[test]
+    fn every_rule_has_a_row_of_the_agreement_table_and_a_section_in_the_docs() {
+        let docs = include_str!("../../../docs/rules.md");
+        for kind in KIND_NAMES {
+            assert!(
+                ROWS.iter().any(|r| r.kinds.contains(kind)),
+                "no row of the agreement table gives {kind}"
+            );
+            assert!(
+                docs.contains(&format!("### `{kind}`")),
+                "docs/rules.md has no section for {kind}"
+            );
+        }
+        for row in ROWS {
+            assert!(row.rust.starts_with("struct") || row.rust.starts_with("#["));
+            // A row without a JSON form says why in its rule.
+            assert!(row.json.is_some() || row.rule.contains('('), "{}", row.rule);
+            for kind in sorted(row.kinds.iter().copied()) {
+                assert!(KIND_NAMES.contains(&kind), "{kind} is no issue kind");
+            }
+        }
+        assert!(ROWS.len() >= 40, "{} rows", ROWS.len());
+    }
 }
