@@ -1,4 +1,4 @@
-//! Generates into `OUT_DIR`: the structs of `project.json` (seed 000's JSON variable list) and
+//! Generates into `OUT_DIR`: the structs of `project.json` (a JSON variable list) and
 //! `project.csv` (the same kind of list kept as a spreadsheet), as a project moving from such a
 //! file would (edit the file, rebuild); and the `Gm1k` benchmark workload
 //! (`src/bench/workload.rs`).

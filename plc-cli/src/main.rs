@@ -82,7 +82,7 @@ enum Command {
         #[arg(long)]
         seconds: Option<f64>,
     },
-    /// A JSON variable list (seed 000's format), or a CSV one, to the equivalent Rust struct.
+    /// A JSON variable list, or a CSV one, to the equivalent Rust struct.
     Import {
         /// The JSON file (a whole project file works: only its "variables" are read), or the
         /// CSV file with --csv (a name ending in .csv is read as CSV anyway).
@@ -99,7 +99,7 @@ enum Command {
         #[arg(long = "struct", default_value = "Gm")]
         struct_name: String,
     },
-    /// The declaration of a running program as a JSON variable list (seed 000's format), or CSV.
+    /// The declaration of a running program as a JSON variable list, or CSV.
     Export {
         /// Segment name.
         segment: String,

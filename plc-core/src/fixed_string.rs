@@ -1,11 +1,11 @@
-//! `FixedString<N>`: seed 000's fixed-capacity string, stored as `N` zero-padded bytes.
+//! `FixedString<N>`: the JSON format's fixed-capacity string, stored as `N` zero-padded bytes.
 
 use core::fmt;
 use core::hash::{Hash, Hasher};
 use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 
 /// UTF-8 text of at most `N` bytes, zero padded, laid out as exactly `[u8; N]` so it can live in
-/// shared memory (seed 000: `string` is `FixedString<N>`, `N` = `max_length`, 1..=255).
+/// shared memory (the JSON variable-list format: `string` is `FixedString<N>`, `N` = `max_length`, 1..=255).
 ///
 /// The bytes may come from another process; reading never panics: [`as_str`](Self::as_str)
 /// returns the longest valid UTF-8 prefix before the first zero byte.
@@ -15,13 +15,13 @@ use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 /// let mut id = FixedString::<8>::new();
 /// id.set("TEST-001");
 /// assert_eq!(id.as_str(), "TEST-001");
-/// id.set("TEST-0001"); // seed 000: silently truncated at a character boundary
+/// id.set("TEST-0001"); // the JSON variable-list format: silently truncated at a character boundary
 /// assert_eq!(id, "TEST-000");
 /// assert!(id.try_set("TEST-0001").is_err()); // refuses instead, leaving the value unchanged
 /// assert_eq!(id.len(), 8);
 /// ```
 ///
-/// `N` must be 1..=255 (seed 000 and seed 003); other capacities fail to compile when used:
+/// `N` must be 1..=255; other capacities fail to compile when used:
 ///
 /// ```compile_fail
 /// let s = plc_core::FixedString::<256>::new();
@@ -86,7 +86,7 @@ pub(crate) fn floor_char_boundary(s: &str, max: usize) -> &str {
 impl<const N: usize> FixedString<N> {
     const VALID_CAPACITY: () = assert!(
         plc_rules::capacity::is_valid_string_capacity(N),
-        "FixedString<N> needs a capacity N of 1..=255 bytes (seed 000 max_length)"
+        "FixedString<N> needs a capacity N of 1..=255 bytes (`max_length` of a JSON variable list)"
     );
 
     /// An empty string.
@@ -106,7 +106,7 @@ impl<const N: usize> FixedString<N> {
         out
     }
 
-    /// Stores `s`, silently truncated at the last UTF-8 character boundary that fits (seed 000),
+    /// Stores `s`, silently truncated at the last UTF-8 character boundary that fits,
     /// and at its first NUL if it has one (a zero byte ends the stored text, so what follows it
     /// could never be read back).
     ///
@@ -304,7 +304,7 @@ mod tests {
     use zerocopy::{FromBytes, IntoBytes};
 
     #[test]
-    fn seed_000_usage() {
+    fn json_format_usage() {
         let mut test_id = FixedString::<64>::new();
         test_id.set("TEST-001");
         assert_eq!(test_id.as_str(), "TEST-001");

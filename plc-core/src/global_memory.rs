@@ -7,7 +7,7 @@ use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 
 pub use plc_rules::{Access, Direction};
 
-/// A bool mapped onto one bit of an integer variable (seed 000: `source` and `bit`).
+/// A bool mapped onto one bit of an integer variable (the JSON variable-list format: `source` and `bit`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct BitMapping {
     /// Index of the source variable in [`GlobalMemory::VARIABLES`].
@@ -209,10 +209,10 @@ pub trait GlobalMemory: Sized {
     /// [`layout_hash`] of [`VARIABLES`](Self::VARIABLES).
     const LAYOUT_HASH: u64;
 
-    /// Copies each bit-mapped bool out of its source word (seed 000: after reading inputs).
+    /// Copies each bit-mapped bool out of its source word (the JSON variable-list format: after reading inputs).
     fn unpack_bits(&mut self);
 
-    /// Copies each bit-mapped bool into its source word, keeping unmapped bits (seed 000:
+    /// Copies each bit-mapped bool into its source word, keeping unmapped bits (the JSON variable-list format:
     /// before writing outputs).
     fn pack_bits(&mut self);
 
@@ -233,7 +233,7 @@ pub trait GlobalMemory: Sized {
     }
 
     /// Index in [`VARIABLES`](Self::VARIABLES) of the variable with this symbol name, compared
-    /// case-insensitively (seed 003).
+    /// case-insensitively (the variable-editor rules).
     fn index_of(name: &str) -> Option<usize> {
         Self::VARIABLES
             .iter()

@@ -55,7 +55,7 @@ pub use plc_rules::{
 };
 
 /// The declaration rules the derive applies, for tools that check what a user typed before it
-/// reaches a declaration: [`names`](rules::names) (seed 003), [`link`](rules::link),
+/// reaches a declaration: [`names`](rules::names) (the variable-editor rules), [`link`](rules::link),
 /// [`address`](rules::address), [`capacity`](rules::capacity), [`widening`](rules::widening)
 /// and [`layout`](rules::layout), with their error types ([`NameError`](rules::NameError),
 /// [`LinkError`](rules::LinkError), [`AddressErrorKind`]). This is the `plc-rules` crate, so a

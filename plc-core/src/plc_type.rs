@@ -42,7 +42,7 @@ mod sealed {
 }
 
 /// A supported variable type: `bool`, `u8`..`u64`, `i8`..`i64`, `f32`, `f64`, `FixedString<N>`,
-/// or an array of these (the derive limits arrays to 3 dimensions and 65,535 items, seed 003).
+/// or an array of these (the derive limits arrays to 3 dimensions and 65,535 items, the variable-editor rules).
 ///
 /// ```
 /// use plc_core::{PlcType, IecType};
@@ -362,7 +362,7 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
     const RANK: usize = T::RANK + 1;
     const DIMS: &'static [usize] = {
         // Dimensions beyond the third are cut here; the derive rejects such arrays with a
-        // spanned error (seed 003: at most 3 dimensions).
+        // spanned error (the variable-editor rules: at most 3 dimensions).
         const fn dim<T: PlcType>(i: usize) -> usize {
             if i < T::DIMS.len() { T::DIMS[i] } else { 0 }
         }
@@ -406,12 +406,12 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
     }
 }
 
-/// An integer type that can be the source word of bit-mapped bools (seed 000: `u8`..`u64`,
+/// An integer type that can be the source word of bit-mapped bools (the JSON variable-list format: `u8`..`u64`,
 /// `i8`..`i64`).
 #[diagnostic::on_unimplemented(
     message = "`{Self}` cannot be the source of bit-mapped bools",
     label = "not an integer",
-    note = "a `source` must be an integer: u8, u16, u32, u64, i8, i16, i32 or i64 (seed 000)"
+    note = "a `source` must be an integer: u8, u16, u32, u64, i8, i16, i32 or i64"
 )]
 pub trait BitSource: PlcScalar {
     /// Width in bits.

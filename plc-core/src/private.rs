@@ -133,7 +133,7 @@ impl TypeFacts {
     }
 
     /// Whether the type has at most 3 dimensions and 65,535 items, and a string capacity of
-    /// 1..=255 (seed 003).
+    /// 1..=255 (the variable-editor rules).
     pub const fn shape_fits(self) -> bool {
         let string_ok = !matches!(self.iec_type, IecType::String)
             || plc_rules::capacity::is_valid_string_capacity(self.string_capacity);
@@ -148,7 +148,7 @@ impl TypeFacts {
         self.elements >= 1
     }
 
-    /// Whether the type can be one I/O channel: a scalar, not an array or a string (seed 003).
+    /// Whether the type can be one I/O channel: a scalar, not an array or a string (the variable-editor rules).
     pub const fn is_channel(self) -> bool {
         self.rank == 0 && !matches!(self.iec_type, IecType::String)
     }
@@ -179,7 +179,7 @@ impl TypeFacts {
         matches!(self.iec_type, IecType::Bool)
     }
 
-    /// Whether an integer `initial` fits (integers by range; reals take bare integers, seed 001).
+    /// Whether an integer `initial` fits (integers by range; reals take bare integers).
     pub const fn initial_int_fits(self, v: i128) -> bool {
         match self.iec_type.int_range() {
             Some((lo, hi)) => v >= lo && v <= hi,

@@ -1,4 +1,4 @@
-//! Typed access to a process image by IEC 61131-3 address (seed 004).
+//! Typed access to a process image by IEC 61131-3 address.
 
 use crate::{IecAddress, Size};
 use core::fmt;
@@ -7,7 +7,7 @@ use plc_rules::AddressError;
 /// Byte order of words in a process image.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ByteOrder {
-    /// Most significant byte first, as seed 004 (the `process-image` crate) and most PLCs.
+    /// Most significant byte first, as IEC 61131-3 process images, the `process-image` crate and most PLCs.
     #[default]
     BigEndian,
     /// Least significant byte first, as EtherCAT process data.
@@ -26,7 +26,7 @@ pub enum ProcessImageError {
         /// The buffer's length in bytes.
         len: usize,
     },
-    /// A W/D/L address whose byte offset is not a multiple of its size (seed 004's alignment
+    /// A W/D/L address whose byte offset is not a multiple of its size (IEC 61131-3 addressing's alignment
     /// table); allow it with [`ProcessImage::allow_unaligned`].
     Misaligned {
         /// The address.
@@ -140,7 +140,7 @@ process_value! {
     u64 => LongWord, 8; i64 => LongWord, 8; f64 => LongWord, 8;
 }
 
-/// A process image over a byte buffer, read and written by IEC address (seed 004).
+/// A process image over a byte buffer, read and written by IEC address (IEC 61131-3 addressing).
 ///
 /// Words are big endian unless [`little_endian`](Self::little_endian) is set; W/D/L addresses
 /// must be aligned to their size unless [`allow_unaligned`](Self::allow_unaligned) is set. Every
@@ -148,7 +148,7 @@ process_value! {
 ///
 /// ```
 /// use plc_core::ProcessImage;
-/// // Seed 004's example, as a process image of inputs.
+/// // The IEC 61131-3 addressing example, as a process image of inputs.
 /// let pii = [0x01, 0xFF, 0x12, 0x34, 0, 0, 0, 0x2A, 0, 0, 0, 0, 0, 0, 0, 7];
 /// let pi = ProcessImage::new(&pii[..]);
 /// let b1: bool = pi.get("%IX0.0")?;
@@ -310,7 +310,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn seed_004_examples_read_big_endian() {
+    fn addressing_examples_read_big_endian() {
         let mut pii = [0u8; 16];
         pii[0] = 0b0000_0011;
         pii[1] = 0xAB;

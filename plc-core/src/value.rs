@@ -120,7 +120,7 @@ impl Value {
 
     /// Checks that the value fits `ty` (kind and range; `capacity` for strings) and returns it in
     /// its canonical form: `Int` for signed, `UInt` for unsigned integers and bit strings, `Real`
-    /// for reals (a whole number is accepted for a real, seed 001's bare literals).
+    /// for reals (a whole number is accepted for a real, IEC 61131-3's untyped literals).
     pub fn fit(self, ty: IecType, capacity: usize) -> Result<Value, ValueError> {
         let wrong = |v: &Value| ValueError::WrongKind {
             expected: ty,

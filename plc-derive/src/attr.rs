@@ -13,7 +13,7 @@ pub struct ContainerAttr {
     /// `crate = "path"`: where `plc_core` is, for re-exporting crates.
     #[darling(rename = "crate")]
     pub krate: Option<SpannedValue<syn::Path>>,
-    /// `byte_order = "little"` for located variables (default big endian, seed 004).
+    /// `byte_order = "little"` for located variables (default big endian, IEC 61131-3 addressing).
     pub byte_order: Option<SpannedValue<String>>,
     /// `unaligned`: located W/D/L variables may sit at any byte offset.
     pub unaligned: Switch,

@@ -45,8 +45,8 @@ impl Initial {
             Lit::Str(s) if !negative => InitialValue::Text(s.value()),
             Lit::Int(i) => match i.base10_parse::<i128>() {
                 Ok(n) => InitialValue::Int(if negative { -n } else { n }),
-                // Beyond every integer type, but a bare integer is fine for REAL/LREAL (seed
-                // 001): keep the digits, judge the number against the field's type later.
+                // Beyond every integer type, but a bare integer is fine for REAL/LREAL (IEC
+                // 61131-3): keep the digits, judge the number against the field's type later.
                 Err(_) => {
                     let digits = i.base10_digits();
                     let v: f64 = digits.parse().map_err(|_| bad())?;
@@ -160,7 +160,7 @@ impl Initial {
                     quote!(#facts.element_is_real()),
                     format!(
                         "initial value {text} is a real number, but the type of `{field}` is not \
-                         f32 or f64 (real to integer is never implicit, seed 001)"
+                         f32 or f64 (real to integer is never implicit)"
                     ),
                 ),
                 (

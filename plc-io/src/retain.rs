@@ -8,7 +8,7 @@
 //! the cycle.
 //!
 //! Loading matches variables by name (case-insensitive): new variables keep their `initial`,
-//! removed or renamed ones are reported, a changed type is converted only where seed 001's
+//! removed or renamed ones are reported, a changed type is converted only where IEC 61131-3's
 //! widening allows it (`can_widen`), otherwise reported and the initial value kept. A corrupt
 //! or truncated file is an error naming it, and the file is left untouched.
 //!
@@ -186,7 +186,7 @@ fn from_json(v: &serde_json::Value, saved_as: IecType) -> Option<Value> {
     })
 }
 
-/// Converts a saved value of type `from` for a variable now of type `to`, by seed 001's
+/// Converts a saved value of type `from` for a variable now of type `to`, by IEC 61131-3's
 /// widening (integer to wider integer, to real, REAL to LREAL). Other changes return `None`.
 fn widen(value: Value, from: IecType, to: IecType) -> Option<Value> {
     if from == to {

@@ -110,7 +110,7 @@ struct Words {
     outputs: u16,
     #[plc(source = "outputs", bit = 0)]
     cr_lift_brake: bool,
-    /// UINT input widens to a DINT variable (seed 001).
+    /// UINT input widens to a DINT variable (IEC 61131-3).
     #[plc(link = "ethercat.io.digital_inputs", direction = "input")]
     inputs_wide: i32,
 }
@@ -598,7 +598,7 @@ fn the_fault_hook_zeroes_outputs_and_drops_to_safe_op() {
 struct Analog {
     #[plc(link = "ethercat.ai.ch2_value", direction = "input")]
     ch2: i16,
-    /// INT widens to REAL (seed 001).
+    /// INT widens to REAL (IEC 61131-3).
     #[plc(link = "ethercat.ai.ch2_value", direction = "input")]
     ch2_real: f32,
     #[plc(link = "ethercat.ai.ch2_underrange", direction = "input")]

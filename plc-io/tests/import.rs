@@ -341,7 +341,7 @@ fn a_variable_without_a_usable_type_still_gets_every_other_error() {
 }
 
 #[test]
-fn the_seed_example_message_for_a_bit_out_of_range() {
+fn the_format_example_message_for_a_bit_out_of_range() {
     let e = errors(&vars(
         r#""impact67_0_digital_inputs": { "type": "u16" },
            "ls_lift_neg": { "type": "bool", "source": "impact67_0_digital_inputs", "bit": 16 }"#,

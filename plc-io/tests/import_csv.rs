@@ -321,7 +321,7 @@ fn cell_errors_name_the_line_variable_and_column() {
 }
 
 #[test]
-fn the_seed_example_message_through_csv() {
+fn the_format_example_message_through_csv() {
     let e = csv_errors(&table(&[
         "impact67_0_digital_inputs,u16,,ethercat.impact67_0.digital_inputs,,,,,,,,,",
         "ls_lift_neg,bool,,,,,impact67_0_digital_inputs,16,,,,,",

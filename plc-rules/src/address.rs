@@ -1,4 +1,4 @@
-//! IEC 61131-3 direct addresses (seed 004).
+//! IEC 61131-3 direct addresses.
 //!
 //! ```text
 //!  +------- The process image that is referenced: I=inputs, Q=outputs, M=internal memory
@@ -19,7 +19,7 @@
 //! | D | u32 / i32 / f32 | 4 | 4 |
 //! | L | u64 / i64 / f64 | 8 | 8 |
 //!
-//! plc-vars follows seed 004 (and IEC 61131-3) where seed 003 differs: `X` is a bit, `B` a byte.
+//! plc-vars follows IEC 61131-3 where the variable-editor rules differ: `X` is a bit, `B` a byte.
 //!
 //! ```
 //! use plc_rules::{IecAddress, Area, Size};
@@ -165,7 +165,7 @@ impl IecAddress {
         start..start + self.size.bytes()
     }
 
-    /// Whether the byte offset is a multiple of the item's size (seed 004's alignment table).
+    /// Whether the byte offset is a multiple of the item's size (IEC 61131-3 addressing's alignment rule).
     pub const fn is_aligned(&self) -> bool {
         (self.byte as usize).is_multiple_of(self.size.bytes())
     }
@@ -407,7 +407,7 @@ mod tests {
     }
 
     #[test]
-    fn seed_004_examples_parse() {
+    fn addressing_examples_parse() {
         let a: IecAddress = "%IX100.4".parse().unwrap();
         assert_eq!(
             (a.area, a.size, a.byte, a.bit),

@@ -1,4 +1,4 @@
-//! The IEC 61131-3 elementary types plc-vars supports, with seed 000's Rust equivalents.
+//! The IEC 61131-3 elementary types plc-vars supports, with the Rust equivalents of the JSON variable-list format.
 
 use core::fmt;
 use core::str::FromStr;
@@ -121,7 +121,7 @@ impl IecType {
         }
     }
 
-    /// The Rust type of seed 000's table (`"FixedString"` for `STRING`).
+    /// The Rust type of the JSON variable-list format's type table (`"FixedString"` for `STRING`).
     pub const fn rust_name(self) -> &'static str {
         match self {
             IecType::Bool => "bool",
@@ -344,7 +344,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn seed_000_table_maps_rust_names_to_iec_types() {
+    fn json_format_table_maps_rust_names_to_iec_types() {
         let table = [
             ("bool", IecType::Bool, 1),
             ("u8", IecType::Usint, 8),
@@ -365,7 +365,7 @@ mod tests {
             assert_eq!(iec.rust_name(), rust);
         }
         assert_eq!("string".parse::<IecType>(), Ok(IecType::String));
-        // The bit-string family shares storage with the unsigned integers (seed 000: u8 = USINT / BYTE).
+        // The bit-string family shares storage with the unsigned integers (the JSON variable-list format: u8 = USINT / BYTE).
         assert!(IecType::Byte.same_storage(IecType::Usint));
         assert!(IecType::Lword.same_storage(IecType::Ulint));
         assert!(!IecType::Word.same_storage(IecType::Udint));

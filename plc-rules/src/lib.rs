@@ -2,11 +2,11 @@
 //! `plc-core` (at compile time of the user's program) and `plc-io` (at run time) apply exactly the
 //! same rules.
 //!
-//! - [`IecType`]: the IEC 61131-3 elementary types and their Rust equivalents (seed 000's table).
-//! - [`widening`]: seed 001's implicit widening matrices.
-//! - [`names`]: seed 003's naming rules.
+//! - [`IecType`]: the IEC 61131-3 elementary types and their Rust equivalents (the JSON variable-list format's type table).
+//! - [`widening`]: IEC 61131-3's implicit widening matrices.
+//! - [`names`]: the variable-editor naming rules.
 //! - [`link`]: `ethercat.<device>.<entry>` hardware links.
-//! - [`address`]: IEC 61131-3 direct addresses such as `%IX100.4` (seed 004).
+//! - [`address`]: IEC 61131-3 direct addresses such as `%IX100.4`.
 //! - [`capacity`]: the limits on strings and arrays.
 //! - [`layout`]: the layout hash that lets a reader detect a changed declaration.
 //!

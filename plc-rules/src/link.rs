@@ -1,4 +1,4 @@
-//! Hardware links: `ethercat.<device>.<entry>` (seed 000's "hardware FQDN link").
+//! Hardware links: `ethercat.<device>.<entry>` (the JSON variable-list format's "hardware FQDN link").
 //!
 //! ```
 //! use plc_rules::link::Link;
@@ -95,7 +95,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn seed_000_links_parse() {
+    fn json_format_links_parse() {
         for l in [
             "ethercat.el2004.output1",
             "ethercat.impact67_0.digital_outputs",

@@ -1,4 +1,4 @@
-//! Seed 003's naming rules for variables (and link identifiers).
+//! The variable-editor naming rules for variables (and link identifiers).
 //!
 //! A name begins with a letter or an underscore, followed by letters, digits or underscores
 //! (ASCII), has no two consecutive underscores, is not a reserved keyword, an IEC type name, or
@@ -14,7 +14,7 @@
 
 use core::fmt;
 
-/// Why a name breaks seed 003's rules.
+/// Why a name breaks the variable-editor naming rules.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum NameError {
     /// The name is empty.
@@ -219,7 +219,7 @@ pub const TYPE_NAMES: &[&str] = &[
 ];
 
 /// Standard functions and function blocks (IEC 61131-3 ed. 3 tables 22-36 and 43-46), which
-/// seed 003 reserves. The conversion functions (`<TYPE>_TO_<TYPE>`, `TO_<TYPE>`,
+/// the variable-editor rules reserve. The conversion functions (`<TYPE>_TO_<TYPE>`, `TO_<TYPE>`,
 /// `<TYPE>_TRUNC_<TYPE>`, `TRUNC_<TYPE>`, and the BCD forms) are recognised by pattern instead,
 /// as [`reserved_word`] does.
 pub const STANDARD_FUNCTIONS: &[&str] = &[
@@ -343,7 +343,7 @@ pub const STANDARD_FUNCTIONS: &[&str] = &[
     "IS_VALID_BCD",
 ];
 
-/// Checks one name against seed 003's rules.
+/// Checks one name against the variable-editor naming rules.
 pub fn check_name(name: &str) -> Result<(), NameError> {
     let first = name.chars().next().ok_or(NameError::Empty)?;
     if first.is_ascii_digit() {
@@ -427,7 +427,7 @@ fn strip_suffix_ci<'a>(s: &'a str, p: &str) -> Option<&'a str> {
         .then(|| &s[..n])
 }
 
-/// Whether two names are the same name (seed 003: naming is case insensitive).
+/// Whether two names are the same name (the variable-editor rules: naming is case insensitive).
 pub fn same_name(a: &str, b: &str) -> bool {
     a.eq_ignore_ascii_case(b)
 }
@@ -437,7 +437,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn seed_000_and_003_style_names_are_accepted() {
+    fn json_format_and_editor_style_names_are_accepted() {
         for ok in [
             "ls_centering_neg",
             "_hidden",

@@ -1,13 +1,13 @@
-//! Implicit widening, as seed 001 (IronPLC's IEC 61131-3 type hierarchy) lays it out.
+//! Implicit widening, as the IEC 61131-3 type hierarchy lays it out (as IronPLC documents it).
 //!
-//! The three matrices of the seed are written here as they appear there (rows: source, columns:
-//! target), so a reader can compare them cell by cell. On top of them, as DESIGN.md fixes: a type
-//! widens to itself; `REAL` widens to `LREAL` (seed 001's own rule: every `REAL` is exactly
+//! The three matrices are written here as they appear there (rows: source, columns:
+//! target), so a reader can compare them cell by cell. On top of them, as plc-vars defines it: a type
+//! widens to itself; `REAL` widens to `LREAL` (the widening rule itself: every `REAL` is exactly
 //! representable as an `LREAL`); `BOOL` never widens; real to integer and integer to bit string
-//! are never implicit. Seed 001's cross-family table (bit string to integer) is a vendor
+//! are never implicit. IEC 61131-3's cross-family table (bit string to integer) is a vendor
 //! extension, off unless [`WideningOptions::cross_family`] is set.
 //!
-//! Note: `LINT`/`ULINT` to `LREAL` is allowed because the seed's matrix says so, though an `f64`
+//! Note: `LINT`/`ULINT` to `LREAL` is allowed because the matrix says so, though an `f64`
 //! holds 53 significant bits: values beyond 2^53 are rounded.
 //!
 //! ```
@@ -24,7 +24,7 @@ use crate::IecType::{self, *};
 /// Options of [`can_widen_with`].
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct WideningOptions {
-    /// Allow seed 001's cross-family widening: a bit string to an integer of strictly greater
+    /// Allow the cross-family widening: a bit string to an integer of strictly greater
     /// width (IronPLC's `--allow-cross-family-widening`).
     pub cross_family: bool,
 }
@@ -39,7 +39,7 @@ pub const BIT_STRING_ORDER: [IecType; 4] = [Byte, Word, Dword, Lword];
 /// Order of the columns of the integer-to-real matrix.
 pub const REAL_ORDER: [IecType; 2] = [Real, Lreal];
 
-/// Seed 001, "Implicit integer widening matrix" (`=` written as Yes).
+/// IEC 61131-3, "Implicit integer widening matrix" (`=` written as Yes).
 pub const INTEGER_MATRIX: [[bool; 8]; 8] = [
     //      SINT INT DINT LINT USINT UINT UDINT ULINT
     /* SINT  */
@@ -53,7 +53,7 @@ pub const INTEGER_MATRIX: [[bool; 8]; 8] = [
     /* ULINT */ [N, N, N, N, N, N, N, Y],
 ];
 
-/// Seed 001, "Implicit integer to real widening matrix".
+/// IEC 61131-3, "Implicit integer to real widening matrix".
 pub const INTEGER_TO_REAL_MATRIX: [[bool; 2]; 8] = [
     //       REAL LREAL
     /* SINT  */ [Y, Y],
@@ -66,7 +66,7 @@ pub const INTEGER_TO_REAL_MATRIX: [[bool; 2]; 8] = [
     /* ULINT */ [N, Y],
 ];
 
-/// Seed 001, "Implicit bit-string widening matrix".
+/// IEC 61131-3, "Implicit bit-string widening matrix".
 pub const BIT_STRING_MATRIX: [[bool; 4]; 4] = [
     //      BYTE WORD DWORD LWORD
     /* BYTE  */ [Y, Y, Y, Y],
@@ -75,7 +75,7 @@ pub const BIT_STRING_MATRIX: [[bool; 4]; 4] = [
     /* LWORD */ [N, N, N, Y],
 ];
 
-/// Seed 001, "Cross-family widening: bit-string to integer" (needs the option).
+/// IEC 61131-3, "Cross-family widening: bit-string to integer" (needs the option).
 pub const CROSS_FAMILY_MATRIX: [[bool; 8]; 4] = [
     //      SINT INT DINT LINT USINT UINT UDINT ULINT
     /* BYTE  */
@@ -96,7 +96,7 @@ const fn position(order: &[IecType], t: IecType) -> Option<usize> {
     None
 }
 
-/// Whether a value of `from` may implicitly become a `to` (seed 001, cross-family off).
+/// Whether a value of `from` may implicitly become a `to` (IEC 61131-3, cross-family off).
 pub const fn can_widen(from: IecType, to: IecType) -> bool {
     can_widen_with(
         from,
@@ -110,7 +110,7 @@ pub const fn can_widen(from: IecType, to: IecType) -> bool {
 /// Whether a value of `from` may implicitly become a `to`, with the given options.
 pub const fn can_widen_with(from: IecType, to: IecType, options: WideningOptions) -> bool {
     if matches!(from, Bool) || matches!(to, Bool) {
-        // BOOL has boolean semantics; it is no numeric bit container (seed 001).
+        // BOOL has boolean semantics; it is no numeric bit container (IEC 61131-3).
         return from as u8 == to as u8;
     }
     if from as u8 == to as u8 {
@@ -138,9 +138,9 @@ pub const fn can_widen_with(from: IecType, to: IecType, options: WideningOptions
 mod tests {
     use super::*;
 
-    /// The seed's matrices as text, copied cell by cell, so a typo in the tables above is caught
+    /// The matrices as text, copied cell by cell, so a typo in the tables above is caught
     /// by a second, independent transcription.
-    const SEED_INTEGER: &str = "
+    const MATRIX_INTEGER: &str = "
         SINT  = Yes Yes Yes No No No No
         INT   No = Yes Yes No No No No
         DINT  No No = Yes No No No No
@@ -149,7 +149,7 @@ mod tests {
         UINT  No No Yes Yes No = Yes Yes
         UDINT No No No Yes No No = Yes
         ULINT No No No No No No No =";
-    const SEED_INT_REAL: &str = "
+    const MATRIX_INT_REAL: &str = "
         SINT Yes Yes
         INT Yes Yes
         DINT No Yes
@@ -158,20 +158,20 @@ mod tests {
         UINT Yes Yes
         UDINT No Yes
         ULINT No Yes";
-    const SEED_BITS: &str = "
+    const MATRIX_BITS: &str = "
         BYTE = Yes Yes Yes
         WORD No = Yes Yes
         DWORD No No = Yes
         LWORD No No No =";
-    const SEED_CROSS: &str = "
+    const MATRIX_CROSS: &str = "
         BYTE No Yes Yes Yes No Yes Yes Yes
         WORD No No Yes Yes No No Yes Yes
         DWORD No No No Yes No No No Yes
         LWORD No No No No No No No No";
 
-    fn check(seed: &str, columns: &[IecType], options: WideningOptions) -> usize {
+    fn check(matrix: &str, columns: &[IecType], options: WideningOptions) -> usize {
         let mut cells = 0;
-        for line in seed.lines().filter(|l| !l.trim().is_empty()) {
+        for line in matrix.lines().filter(|l| !l.trim().is_empty()) {
             let mut words = line.split_whitespace();
             let from: IecType = words.next().unwrap().parse().unwrap();
             for (cell, &to) in words.zip(columns) {
@@ -188,17 +188,17 @@ mod tests {
     }
 
     #[test]
-    fn every_cell_of_the_three_seed_matrices_holds() {
+    fn every_cell_of_the_three_matrices_holds() {
         let off = WideningOptions::default();
-        assert_eq!(check(SEED_INTEGER, &INTEGER_ORDER, off), 64);
-        assert_eq!(check(SEED_INT_REAL, &REAL_ORDER, off), 16);
-        assert_eq!(check(SEED_BITS, &BIT_STRING_ORDER, off), 16);
+        assert_eq!(check(MATRIX_INTEGER, &INTEGER_ORDER, off), 64);
+        assert_eq!(check(MATRIX_INT_REAL, &REAL_ORDER, off), 16);
+        assert_eq!(check(MATRIX_BITS, &BIT_STRING_ORDER, off), 16);
     }
 
     #[test]
     fn cross_family_cells_hold_only_with_the_option() {
         let on = WideningOptions { cross_family: true };
-        assert_eq!(check(SEED_CROSS, &INTEGER_ORDER, on), 32);
+        assert_eq!(check(MATRIX_CROSS, &INTEGER_ORDER, on), 32);
         for b in BIT_STRING_ORDER {
             for i in INTEGER_ORDER {
                 assert!(!can_widen(b, i), "{b} -> {i} must need the option");

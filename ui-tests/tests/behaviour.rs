@@ -12,7 +12,7 @@ use proptest::prelude::*;
 use zerocopy::IntoBytes;
 use zerocopy::byteorder::little_endian::{F32, F64, I32, U16};
 
-/// Seed 000's variables, as a control program declares them.
+/// The example variables of the JSON variable-list format, as a control program declares them.
 #[derive(GlobalMemory, Debug, Clone, PartialEq)]
 pub struct Gm {
     /// Digital inputs of the IO module
@@ -42,7 +42,7 @@ pub struct Gm {
 
 type Image = <Gm as GlobalMemory>::Image;
 
-/// `Gm`'s image as DESIGN.md describes it: a `#[repr(C)]` struct of the stored forms in
+/// `Gm`'s image as `GlobalMemory::Image` documents it: a `#[repr(C)]` struct of the stored forms in
 /// declaration order. The derive's image is a byte array; it must have exactly these bytes.
 #[derive(zerocopy::IntoBytes, zerocopy::Immutable)]
 #[repr(C)]
@@ -435,7 +435,7 @@ fn alias_fields_behave_like_the_types_they_name() {
 
 type Lreal = f64;
 
-/// Bare integers on reals (seed 001), beyond the integer types included.
+/// Bare integers on reals (IEC 61131-3), beyond the integer types included.
 #[derive(GlobalMemory, Debug)]
 pub struct BareIntegers {
     #[plc(initial = 100000000000000000000)]

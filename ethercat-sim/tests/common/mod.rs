@@ -23,7 +23,7 @@ macro_rules! storage {
     }};
 }
 
-/// EK1100 + EL1004 + EL2004 + EL2889, the bench of issue 6.
+/// EK1100 + EL1004 + EL2004 + EL2889, the tensile tester's bench.
 pub fn bench() -> SimBus {
     SimBus::new(vec![
         Device::ek1100(),

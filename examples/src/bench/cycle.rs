@@ -1,7 +1,7 @@
 //! The cycle figures: the framework's work per cycle, the same work hand-written, and the
 //! memcpy floor, each as a step that a timing loop repeats.
 //!
-//! The work of one cycle, as issue 9 defines it: a snapshot of the image in, `unpack_bits`,
+//! The work of one cycle, as the benchmark defines it: a snapshot of the image in, `unpack_bits`,
 //! `pack_bits`, the image out, a seqlock publish; the program's tick is empty.
 
 use super::hand_seqlock::HandSeqlock;

@@ -1,4 +1,4 @@
-//! The benchmark workloads of issue 9 as Rust source: a `#[derive(GlobalMemory)]` struct and
+//! The benchmark workloads as Rust source: a `#[derive(GlobalMemory)]` struct and
 //! the same variables hand-written (a plain struct with manual shifts and byte copies at the
 //! same offsets, over a fixed-size byte array so the compiler drops the bounds checks, as a
 //! careful hand-writer would).

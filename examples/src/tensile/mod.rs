@@ -1,7 +1,7 @@
 //! The tensile tester: its variables, its program and a model of the machine that animates the
 //! simulated bus.
 //!
-//! - [`Gm`]: seed 000's variables (impact67 I/O words with bit-mapped limit switches and a lift
+//! - [`Gm`]: the example variables of the JSON variable-list format (impact67 I/O words with bit-mapped limit switches and a lift
 //!   brake, test information strings, nonvolatile offsets) plus the signal tower on an EL2004.
 //! - [`process_tick`]: a state machine idle -> centering -> lifting -> testing -> done.
 //! - [`plant`]: the machine itself, reading the simulated outputs and setting the simulated

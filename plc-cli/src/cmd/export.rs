@@ -1,5 +1,5 @@
 //! `plc export <segment> [--csv]`: the running program's declaration as a JSON variable list in
-//! seed 000's format (plus direction, read_only, at and dims, which plc-vars adds), or as the CSV
+//! the JSON variable-list format (plus direction, read_only, at and dims, which plc-vars adds), or as the CSV
 //! table `plc import --csv` reads.
 
 use super::Error;

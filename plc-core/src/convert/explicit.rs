@@ -1,4 +1,4 @@
-//! The explicit conversion functions `<SOURCE>_TO_<TARGET>` of IEC 61131-3 (seed 001), in
+//! The explicit conversion functions `<SOURCE>_TO_<TARGET>` of IEC 61131-3, in
 //! snake case, for every pair of numeric, bit-string and boolean types.
 //!
 //! Semantics: narrowing integers wrap (two's complement, like `as`); real to integer truncates

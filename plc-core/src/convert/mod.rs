@@ -1,6 +1,6 @@
-//! Type conversions (seed 001): implicit widening and the explicit conversion functions.
+//! Type conversions (IEC 61131-3): implicit widening and the explicit conversion functions.
 //!
-//! - [`can_widen`] / [`can_widen_with`]: seed 001's matrices (from `plc-rules`).
+//! - [`can_widen`] / [`can_widen_with`]: IEC 61131-3's widening matrices (from `plc-rules`).
 //! - [`Widen`]: the implicit widenings as a Rust trait, implemented for exactly the pairs of Rust
 //!   primitives that [`can_widen`] allows, so a forbidden widening does not compile.
 //! - [`explicit`]: `dint_to_int`, `real_to_int`, ... with IEC semantics and `checked_` variants.
@@ -16,21 +16,21 @@
 //!
 //! ```compile_fail
 //! use plc_core::convert::Widen;
-//! let r: f32 = 7i32.widen(); // DINT does not widen to REAL (seed 001)
+//! let r: f32 = 7i32.widen(); // DINT does not widen to REAL (IEC 61131-3)
 //! ```
 
 pub mod explicit;
 
 pub use plc_rules::widening::{WideningOptions, can_widen, can_widen_with};
 
-/// An implicit widening of seed 001 between Rust primitives: integer to a wider integer (an
+/// An implicit widening of IEC 61131-3 between Rust primitives: integer to a wider integer (an
 /// unsigned one also to a strictly wider signed one), integer to `f32`/`f64` where exact, `f32`
 /// to `f64`, and each type to itself.
 ///
-/// `u64`/`i64` to `f64` is allowed because seed 001's matrix says so; an `f64` holds 53
+/// `u64`/`i64` to `f64` is allowed because the IEC 61131-3 widening matrix says so; an `f64` holds 53
 /// significant bits, so larger values are rounded.
 #[diagnostic::on_unimplemented(
-    message = "`{Self}` does not widen implicitly to `{T}` (IEC 61131-3, seed 001)",
+    message = "`{Self}` does not widen implicitly to `{T}` (IEC 61131-3)",
     label = "not an implicit widening",
     note = "convert explicitly with a `<source>_to_<target>` function of \
             `plc_core::convert::explicit`, named by the IEC types in snake case, such as \

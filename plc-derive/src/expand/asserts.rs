@@ -39,7 +39,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 quote_spanned!(v.ty_span()=> #p::facts::<#ty>().shape_fits()),
                 format!(
                     "the type of `{name}` must have at most 3 dimensions and 65535 items, and \
-                     strings a capacity of 1..=255 bytes (seed 003)"
+                     strings a capacity of 1..=255 bytes (the variable-editor rules)"
                 ),
             ));
             out.extend(assert(
@@ -63,7 +63,7 @@ pub fn expand(c: &Container) -> TokenStream {
                     quote_spanned!(src.ty_span()=> #p::facts::<#sty>().is_integer()),
                     format!(
                         "the source `{}` must be an integer (u8, u16, u32, u64, i8, i16, i32 or \
-                         i64, seed 000), but its type is not",
+                         i64), but its type is not",
                         src.field_name()
                     ),
                 ));
@@ -91,7 +91,7 @@ fn unknown_type_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut Tok
         out.extend(assert(
             v.ty_span(),
             quote_spanned!(v.ty_span()=> #p::facts::<#ty>().is_bool()),
-            format!("`{name}` is mapped to a bit, so its type must be bool (seed 000)"),
+            format!("`{name}` is mapped to a bit, so its type must be bool"),
         ));
     }
     if let (Some(address), Some(at)) = (&v.address, &m.at) {
@@ -105,7 +105,7 @@ fn unknown_type_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut Tok
             quote!(#facts.is_channel()),
             format!(
                 "`at` locates one channel: the type of `{name}` must be a scalar, not an array \
-                 or string (seed 003: only internal variables have dimensions; no string \
+                 or string (only internal variables have dimensions; no string \
                  channels)"
             ),
         ));

@@ -1,4 +1,4 @@
-//! `unpack_bits` / `pack_bits` (seed 000): branch-free single-bit moves; the other bits of a
+//! `unpack_bits` / `pack_bits`: branch-free single-bit moves; the other bits of a
 //! source word are never touched.
 
 use super::private;

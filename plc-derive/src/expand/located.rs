@@ -1,4 +1,4 @@
-//! `read_inputs` / `write_outputs` for located variables (`at = "%IW4"`, seed 004). Byte order
+//! `read_inputs` / `write_outputs` for located variables (`at = "%IW4"`, IEC 61131-3 addressing). Byte order
 //! and alignment are facts of the declaration, so they are fixed here, not by the caller.
 
 use super::private;

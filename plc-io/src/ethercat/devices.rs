@@ -4,7 +4,7 @@
 //! revision is left open (`None`), since terminals of one product ship in several revisions.
 //! Channel entries are named `input1..inputN` / `output1..outputN` after the terminal's channel
 //! numbers (ESI names them all "Input"/"Output"). [`DeviceConfig::grouped`] merges the channels
-//! of one direction into one word, as seed 000's impact67 `digital_inputs`.
+//! of one direction into one word, as the JSON variable-list format's impact67 `digital_inputs`.
 //!
 //! ```
 //! use plc_io::ethercat::{devices, BusConfig, PdoDirection};

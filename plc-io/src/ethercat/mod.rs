@@ -7,7 +7,7 @@
 //!    [`devices`] has ready descriptions of the Beckhoff terminals the simulated bus models.
 //! 2. [`layout`] and [`resolve`]: each entry's bit range in its SubDevice's process data, and
 //!    each `#[plc(link = "ethercat.<device>.<entry>")]` of the struct checked against it
-//!    (existence, direction, seed 001 widening, one writer per output). All problems are
+//!    (existence, direction widening, one writer per output). All problems are
 //!    reported together, before anything is sent to the bus.
 //! 3. [`EtherCatBackend`] (`backend`): an ethercrab MainDevice with one group brought to OP
 //!    after the identities and process data sizes are checked; each `exchange` is one `tx_rx`
@@ -35,7 +35,7 @@
 //! Multi-bit entries over 1-bit channels: an entry of N bits covers the next N bits of the
 //! process data, so grouping four consecutive 1-bit channels into one 4-bit `UINT` entry gives
 //! a word whose bit 0 is the first channel. Declare the word in the struct (e.g. `u16`) and map
-//! bools onto its bits with `source`/`bit`, as seed 000 does for an impact67 module.
+//! bools onto its bits with `source`/`bit`, as the JSON variable-list format does for an impact67 module.
 #![deny(missing_docs)]
 
 mod backend;

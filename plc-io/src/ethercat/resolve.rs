@@ -5,10 +5,10 @@
 //! - the device and the entry must exist in the bus description;
 //! - directions: an input entry feeds a variable declared `direction = "input"`, an output
 //!   entry is fed by one declared `direction = "output"`; a linked variable left `internal`
-//!   (the default, e.g. from a seed 000 JSON list, which has no directions) takes the entry's
+//!   (the default, e.g. from a JSON variable list, which has no directions) takes the entry's
 //!   direction. `command` and `status` variables cannot be linked.
 //! - types: an input widens from the entry's type to the variable's, an output from the
-//!   variable's type to the entry's, as [`plc_core::convert::can_widen`] allows (seed 001);
+//!   variable's type to the entry's, as [`plc_core::convert::can_widen`] allows (IEC 61131-3);
 //! - one variable per output entry (two writers would fight); any number per input entry;
 //! - only scalar variables, not strings or arrays.
 
@@ -189,7 +189,7 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
             };
             problem(format!(
                 "the variable is {} and the {} entry is {} ({} bit{}); {} does not widen \
-                 implicitly to {} (IEC 61131-3, seed 001): {suggestion}",
+                 implicitly to {} (IEC 61131-3): {suggestion}",
                 v.iec_type,
                 entry.direction,
                 entry.iec_type,

@@ -5,7 +5,7 @@
 use super::parse::Parsed;
 use serde_json::Value;
 
-/// The CSV columns: first those of the seed 000 framework's tooling (`name` .. `initial`), then
+/// The CSV columns: first those of the tooling of the framework the JSON format comes from (`name` .. `initial`), then
 /// the rest of a variable's fields, so that nothing of a declaration is lost.
 pub const COLUMNS: [&str; 13] = [
     "name",

@@ -203,7 +203,7 @@ fn field_by_prettyplease(text: &str) -> Result<String, String> {
 }
 
 /// The module, formatted as prettyplease formats it. Writing it directly is ten times faster
-/// than parsing and printing 10,000 fields (issue 9); the fields that prettyplease would break
+/// than parsing and printing 10,000 fields (BENCHMARKS.md, `import_10k_ms`); the fields that prettyplease would break
 /// across lines are still printed by it, and a test checks the whole against prettyplease.
 pub fn emit(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> Result<String, String> {
     let origin = one_line(origin);

@@ -1,5 +1,5 @@
 //! The way back: a declaration (a compiled type's `VARIABLES`, or a running program's
-//! descriptor) as a JSON variable list in seed 000's format, plus the keys plc-vars adds; and
+//! descriptor) as a JSON variable list in the JSON variable-list format, plus the keys plc-vars adds; and
 //! the same as CSV.
 
 use crate::shm::LayoutDescriptor;

@@ -1,4 +1,4 @@
-//! Variable lists (seed 000's JSON project files, and CSV tables with the same columns) to Rust,
+//! Variable lists (JSON project files, and CSV tables with the same columns) to Rust,
 //! and back.
 //!
 //! ```

@@ -184,7 +184,7 @@ impl LayoutDescriptor {
         Ok(())
     }
 
-    /// Index of a variable by name, case-insensitively (seed 003).
+    /// Index of a variable by name, case-insensitively (the variable-editor rules).
     pub fn index_of(&self, name: &str) -> Option<usize> {
         self.variables
             .iter()

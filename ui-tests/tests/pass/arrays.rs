@@ -1,4 +1,4 @@
-// Arrays of up to 3 dimensions and 65,535 items (seed 003), also of strings.
+// Arrays of up to 3 dimensions and 65,535 items (the variable-editor rules), also of strings.
 use plc_core::{FixedString, GlobalMemory};
 
 #[derive(GlobalMemory, Debug, Clone)]

@@ -1,4 +1,4 @@
-// A bare integer literal is fine for REAL and LREAL: it has no declared type (seed 001), also
+// A bare integer literal is fine for REAL and LREAL: it has no declared type (IEC 61131-3), also
 // through an alias and beyond the range of every integer type.
 use plc_core::{GlobalMemory, Value};
 

@@ -1,4 +1,5 @@
-// A 2,000-variable struct must compile (issue 3); generated, with every kind of variable.
+// A 2,000-variable struct must compile, with every kind of variable. Written by
+// `tests/generated.rs`: edit that, not this.
 use plc_core::{FixedString, GlobalMemory};
 
 #[derive(GlobalMemory, Debug, Clone)]

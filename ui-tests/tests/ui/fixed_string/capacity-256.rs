@@ -1,4 +1,4 @@
-// Seed 000 and seed 003: a string's capacity cannot exceed 255 bytes.
+// A string's capacity cannot exceed 255 bytes.
 use plc_core::FixedString;
 
 fn main() {

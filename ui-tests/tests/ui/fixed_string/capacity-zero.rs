@@ -1,4 +1,4 @@
-// Seed 000: a string's capacity is 1..=255 bytes.
+// A string's capacity is 1..=255 bytes.
 use plc_core::FixedString;
 
 fn main() {

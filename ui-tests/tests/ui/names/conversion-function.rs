@@ -1,4 +1,4 @@
-// Seed 003: a variable cannot have the name of a standard function; the conversion functions
+// The variable-editor rules: a variable cannot have the name of a standard function; the conversion functions
 // of IEC 61131-3 ed. 3 come in several forms, each reserved.
 use plc_core::GlobalMemory;
 

@@ -1,4 +1,4 @@
-// BOOL has boolean semantics, not a numeric bit container (seed 001). Named through the trait,
+// BOOL has boolean semantics, not a numeric bit container (IEC 61131-3). Named through the trait,
 // so the compiler reports the missing widening rather than a plain type mismatch.
 use plc_core::convert::Widen;
 

@@ -1,4 +1,4 @@
-// DINT does not widen to REAL: a 32-bit integer does not fit the 24-bit mantissa (seed 001).
+// DINT does not widen to REAL: a 32-bit integer does not fit the 24-bit mantissa (IEC 61131-3).
 use plc_core::convert::Widen;
 
 fn main() {

@@ -1,4 +1,4 @@
-// Narrowing (DINT to INT) needs an explicit conversion such as `dint_to_int` (seed 001).
+// Narrowing (DINT to INT) needs an explicit conversion such as `dint_to_int` (IEC 61131-3).
 use plc_core::convert::Widen;
 
 fn main() {

@@ -1,4 +1,4 @@
-// Real to integer is never implicit: it would truncate (seed 001, use `real_to_dint`).
+// Real to integer is never implicit: it would truncate (IEC 61131-3, use `real_to_dint`).
 use plc_core::convert::Widen;
 
 fn main() {

@@ -1,4 +1,4 @@
-// The struct of issue 3: seed 000's variables (impact67 IO with bit-mapped limit switches and a
+// The example variables of the JSON variable-list format (impact67 IO with bit-mapped limit switches and a
 // lift brake, a test id, a nonvolatile offset) plus a located input, a bit-string word and a
 // 2-D array.
 use plc_core::{FixedString, GlobalMemory};

@@ -1,4 +1,4 @@
-// Seed 000's variables exactly as its JSON declares them (types, links, descriptions,
+// The example variables of the JSON variable-list format exactly as its JSON declares them (types, links, descriptions,
 // max_length, source and bit), and its control-program snippets run against them.
 // "string" without max_length is FixedString<64> (the default capacity); 128 and 255 as given.
 use plc_core::{FixedString, GlobalMemory, IecType};
@@ -25,7 +25,7 @@ pub struct Gm {
     pub cr_lift_brake: bool,
 }
 
-/// Seed 000's snippets, with its log lines turned into what they observe.
+/// The JSON variable-list format's usage snippets, with its log lines turned into what they observe.
 fn process_tick(gm: &mut Gm, log: &mut Vec<String>) {
     // Read a string
     let test_id = gm.info_test_id.as_str();
