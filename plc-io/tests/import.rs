@@ -395,6 +395,64 @@ fn emitted_code_matches_the_golden_file() {
     assert_eq!(g.code, include_str!("golden/press.rs"));
 }
 
+/// Text rustc refuses in source (bidirectional controls in a description, a file name or a
+/// string, other control characters) still gives code that compiles: the hostile golden file
+/// is compiled by `examples/tests/imported_golden.rs`, where rustc denies such characters in
+/// comments and literals by default.
+#[test]
+fn control_and_bidi_characters_give_code_that_compiles() {
+    let g = generate(
+        include_str!("golden/hostile.json"),
+        &Options {
+            struct_name: "Hostile".into(),
+            origin: "hostile\u{202e}nosj.json".into(),
+        },
+    )
+    .unwrap();
+    if std::env::var_os("GOLDEN_OVERWRITE").is_some() {
+        std::fs::write(
+            concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/hostile.rs"),
+            &g.code,
+        )
+        .unwrap();
+    }
+    assert_eq!(g.code, include_str!("golden/hostile.rs"));
+    for c in ['\u{202e}', '\u{202c}', '\u{2066}', '\u{2069}', '\u{7}'] {
+        assert!(!g.code.contains(c), "{c:?} written as it is");
+    }
+}
+
+/// The struct name must give code that compiles: not a keyword, not a name the generated
+/// module imports or defines.
+#[test]
+fn a_struct_name_the_module_cannot_use_is_refused() {
+    for bad in [
+        "fn",
+        "Self",
+        "_",
+        "self",
+        "type",
+        "FixedString",
+        "GlobalMemory",
+    ] {
+        let e = match generate(
+            &vars(r#""a": { "type": "string" }"#),
+            &Options {
+                struct_name: bad.into(),
+                ..Options::default()
+            },
+        ) {
+            Err(ImportErrors(e)) => e,
+            Ok(_) => panic!("{bad:?} was accepted"),
+        };
+        assert_eq!(e.len(), 1, "{e:?}");
+        assert!(
+            e[0].starts_with(&format!("struct name {bad:?} is")),
+            "{e:?}"
+        );
+    }
+}
+
 #[test]
 fn a_ten_thousand_variable_file_imports() {
     let mut body = Vec::new();

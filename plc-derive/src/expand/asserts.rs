@@ -39,7 +39,7 @@ pub fn expand(c: &Container) -> TokenStream {
                 quote_spanned!(v.ty_span()=> #p::facts::<#ty>().shape_fits()),
                 format!(
                     "the type of `{name}` must have at most 3 dimensions and 65535 items, and \
-                     strings a capacity of 1..=255 bytes (the variable-editor rules)"
+                     strings a capacity of 1..=255 bytes"
                 ),
             ));
             out.extend(assert(
