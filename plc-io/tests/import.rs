@@ -377,22 +377,26 @@ fn two_variables_on_one_link_are_a_warning() {
 /// `examples/tests/imported_golden.rs`: the emitted code passes the derive's checks.
 #[test]
 fn emitted_code_matches_the_golden_file() {
+    let code = golden("press", include_str!("golden/press.json"), "Press", "press.json");
+    assert_eq!(code, include_str!("golden/press.rs"));
+}
+
+/// Imports `golden/<name>.json` (given as `json`) and returns the code; with
+/// `GOLDEN_OVERWRITE` set, writes it to `golden/<name>.rs` first.
+fn golden(name: &str, json: &str, struct_name: &str, origin: &str) -> String {
     let g = generate(
-        include_str!("golden/press.json"),
+        json,
         &Options {
-            struct_name: "Press".into(),
-            origin: "press.json".into(),
+            struct_name: struct_name.into(),
+            origin: origin.into(),
         },
     )
     .unwrap();
     if std::env::var_os("GOLDEN_OVERWRITE").is_some() {
-        std::fs::write(
-            concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/press.rs"),
-            &g.code,
-        )
-        .unwrap();
+        let path = format!("{}/tests/golden/{name}.rs", env!("CARGO_MANIFEST_DIR"));
+        std::fs::write(path, &g.code).unwrap();
     }
-    assert_eq!(g.code, include_str!("golden/press.rs"));
+    g.code
 }
 
 /// Text rustc refuses in source (bidirectional controls in a description, a file name or a
@@ -401,24 +405,11 @@ fn emitted_code_matches_the_golden_file() {
 /// comments and literals by default.
 #[test]
 fn control_and_bidi_characters_give_code_that_compiles() {
-    let g = generate(
-        include_str!("golden/hostile.json"),
-        &Options {
-            struct_name: "Hostile".into(),
-            origin: "hostile\u{202e}nosj.json".into(),
-        },
-    )
-    .unwrap();
-    if std::env::var_os("GOLDEN_OVERWRITE").is_some() {
-        std::fs::write(
-            concat!(env!("CARGO_MANIFEST_DIR"), "/tests/golden/hostile.rs"),
-            &g.code,
-        )
-        .unwrap();
-    }
-    assert_eq!(g.code, include_str!("golden/hostile.rs"));
+    let json = include_str!("golden/hostile.json");
+    let code = golden("hostile", json, "Hostile", "hostile\u{202e}nosj.json");
+    assert_eq!(code, include_str!("golden/hostile.rs"));
     for c in ['\u{202e}', '\u{202c}', '\u{2066}', '\u{2069}', '\u{7}'] {
-        assert!(!g.code.contains(c), "{c:?} written as it is");
+        assert!(!code.contains(c), "{c:?} written as it is");
     }
 }
 
