@@ -65,6 +65,10 @@ pub struct VarInfo {
     pub access: Access,
     /// Where its value comes from.
     pub direction: Direction,
+    /// `ux`: meant for an operator UI (the framework's web UI shows it).
+    pub ux: bool,
+    /// `quantity = "force"`: the physical quantity a display uses to pick units.
+    pub quantity: Option<&'static str>,
 }
 
 impl VarInfo {
@@ -106,6 +110,8 @@ impl VarInfo {
             nonvolatile: p.nonvolatile,
             access: p.access,
             direction: p.direction,
+            ux: p.ux,
+            quantity: p.quantity,
         }
     }
 }

@@ -30,6 +30,8 @@ pub struct VarInfoParts {
     pub nonvolatile: bool,
     pub access: Access,
     pub direction: Direction,
+    pub ux: bool,
+    pub quantity: Option<&'static str>,
 }
 
 /// Builds a [`VarInfo`](crate::VarInfo) in a `const`.

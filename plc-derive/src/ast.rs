@@ -296,6 +296,8 @@ fn fill_from_attr(
         model.description = d.trim().to_string();
     }
     model.read_only = a.read_only.is_present();
+    model.ux = a.ux.is_present();
+    model.quantity = a.quantity.as_ref().map(at);
     if let Some(d) = a.direction {
         match Direction::from_name(&d) {
             Some(dir) => model.direction = Some(At::new(dir, Loc::Span(d.span()))),

@@ -35,6 +35,8 @@ pub struct FieldAttr {
     pub direction: Option<SpannedValue<String>>,
     pub name: Option<SpannedValue<String>>,
     pub iec_type: Option<SpannedValue<String>>,
+    pub ux: Switch,
+    pub quantity: Option<SpannedValue<String>>,
 }
 
 /// `initial = <literal>` kept as the expression written (darling would parse a string's

@@ -26,6 +26,7 @@ pub fn expects(key: &str) -> Option<&'static str> {
         "direction" => "a string: \"input\", \"output\", \"command\", \"status\" or \"internal\"",
         "name" => "a string",
         "iec_type" => "a string such as \"WORD\"",
+        "quantity" => "a string such as \"force\"",
         "crate" => "a path as a string, such as \"::plc_core\"",
         "byte_order" => "\"little\" or \"big\"",
         _ => return None,

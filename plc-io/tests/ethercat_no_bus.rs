@@ -37,6 +37,8 @@ impl GlobalMemory for OneInput {
         nonvolatile: false,
         access: Access::ReadWrite,
         direction: Direction::Input,
+        ux: false,
+        quantity: None,
     })];
     const LAYOUT_HASH: u64 = 0;
     fn unpack_bits(&mut self) {}

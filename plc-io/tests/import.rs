@@ -23,7 +23,14 @@ fn syntax_errors_give_line_and_column() {
     let e = errors("{\n  \"variables\": {\n    \"a\": { \"type\": \"u8\" },,\n  }\n}");
     assert_eq!(e.len(), 1);
     assert!(e[0].starts_with("JSON error at line 3, column"), "{e:?}");
-    assert!(errors("{}")[0].contains("no \"variables\" object"));
+    // A fresh project's file has no variables: an empty struct, with a note.
+    let g = generate("{ \"control\": {} }", &Options::default()).unwrap();
+    assert!(g.code.contains("pub struct Gm {}"), "{}", g.code);
+    assert!(
+        g.warnings[0].contains("no \"variables\" object"),
+        "{:?}",
+        g.warnings
+    );
 }
 
 #[test]
@@ -377,7 +384,12 @@ fn two_variables_on_one_link_are_a_warning() {
 /// `examples/tests/imported_golden.rs`: the emitted code passes the derive's checks.
 #[test]
 fn emitted_code_matches_the_golden_file() {
-    let code = golden("press", include_str!("golden/press.json"), "Press", "press.json");
+    let code = golden(
+        "press",
+        include_str!("golden/press.json"),
+        "Press",
+        "press.json",
+    );
     assert_eq!(code, include_str!("golden/press.rs"));
 }
 

@@ -9,7 +9,7 @@ use plc_io::import::{
 };
 use proptest::prelude::*;
 
-const HEADER: &str = "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims";
+const HEADER: &str = "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity";
 
 fn csv_errors(csv: &str) -> Vec<String> {
     match generate_csv(csv, &Options::default()) {
@@ -137,11 +137,11 @@ fn the_export_quotes_as_rfc_4180_says() {
         csv,
         format!(
             "{HEADER}\r\n\
-             offset,f64,,,\"Offset, in \"\"mm\"\"\",12.5,,,,true,,,\r\n\
-             label,string,,,,\"a,b \"\"c\"\"\r\nd\",,,32,,,,\r\n\
-             inputs,u16,input,ethercat.io.inputs,,,,,,,,,\r\n\
-             flag,bool,,,,,inputs,15,,,true,,\r\n\
-             grid,i8,,,,,,,,,,,\"[3,2]\"\r\n"
+             offset,f64,,,\"Offset, in \"\"mm\"\"\",12.5,,,,true,,,,,\r\n\
+             label,string,,,,\"a,b \"\"c\"\"\r\nd\",,,32,,,,,,\r\n\
+             inputs,u16,input,ethercat.io.inputs,,,,,,,,,,,\r\n\
+             flag,bool,,,,,inputs,15,,,true,,,,\r\n\
+             grid,i8,,,,,,,,,,,\"[3,2]\",,\r\n"
         )
     );
 }
@@ -212,7 +212,7 @@ fn header_mistakes_are_errors() {
 #[test]
 fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() {
     let e = csv_errors(&table(&[
-        "a,u8,,,,,,,,,,,,extra",
+        "a,u8,,,,,,,,,,,,,,extra",
         ",u8,,,,,,,,,,,",
         "b,u8,,,,300,,,,,,,",
         "B,u8,,,,,,,,,,,",
@@ -220,7 +220,7 @@ fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() 
     assert_eq!(
         e,
         [
-            "line 2: 14 cells but the header names 13 columns: put a cell that holds a comma in double quotes",
+            "line 2: 16 cells but the header names 15 columns: put a cell that holds a comma in double quotes",
             "line 3, column name: empty: every row needs the variable's name",
             "line 4, variable b, column initial: 300 is out of range for USINT (u8 holds 0..=255)",
             "line 5, variable B: declared twice: \"B\" is already used by \"b\" (line 4), and names are case-insensitive; rename one",

@@ -1,9 +1,13 @@
-//! Hardware links: `ethercat.<device>.<entry>` (the JSON variable-list format's "hardware FQDN link").
+//! Hardware links: `ethercat.<device>.<entry>` (the JSON variable-list format's "hardware FQDN
+//! link"). The entry is a path of one or more dotted identifiers, as the framework's motion
+//! axes name theirs (`ethercat.motion.x.position`: device `motion`, entry `x.position`).
 //!
 //! ```
 //! use plc_rules::link::Link;
 //! let l = Link::parse("ethercat.impact67_0.digital_inputs").unwrap();
 //! assert_eq!((l.device, l.entry), ("impact67_0", "digital_inputs"));
+//! let axis = Link::parse("ethercat.motion.x.actual_velocity").unwrap();
+//! assert_eq!((axis.device, axis.entry), ("motion", "x.actual_velocity"));
 //! ```
 
 use core::fmt;
@@ -16,7 +20,8 @@ pub const ETHERCAT: &str = "ethercat";
 pub struct Link<'a> {
     /// The SubDevice's name in the bus description, e.g. `impact67_0`.
     pub device: &'a str,
-    /// The PDO entry's name in the bus description, e.g. `digital_inputs`.
+    /// The PDO entry's name in the bus description, e.g. `digital_inputs`, or a dotted path
+    /// such as `x.position`.
     pub entry: &'a str,
 }
 
@@ -25,11 +30,11 @@ pub struct Link<'a> {
 pub enum LinkError {
     /// The link does not start with `ethercat.`.
     UnknownBus,
-    /// The link does not have exactly three dot-separated parts.
+    /// The link has fewer than three dot-separated parts.
     Shape,
     /// The device part is not an identifier.
     BadDevice,
-    /// The entry part is not an identifier.
+    /// A part of the entry path is not an identifier.
     BadEntry,
 }
 
@@ -39,14 +44,17 @@ impl fmt::Display for LinkError {
             LinkError::UnknownBus => {
                 "a link must start with `ethercat.`: write `ethercat.<device>.<entry>`"
             }
-            LinkError::Shape => "a link has three parts: write `ethercat.<device>.<entry>`",
+            LinkError::Shape => {
+                "a link has at least three parts: write `ethercat.<device>.<entry>`"
+            }
             LinkError::BadDevice => {
                 "the device of a link must be an identifier (letters, digits, underscores; \
                  not starting with a digit), e.g. `ethercat.el1004_0.input1`"
             }
             LinkError::BadEntry => {
-                "the entry of a link must be an identifier (letters, digits, underscores; \
-                 not starting with a digit), e.g. `ethercat.el1004_0.input1`"
+                "the entry of a link must be an identifier, or identifiers joined by dots \
+                 (letters, digits, underscores; not starting with a digit), e.g. \
+                 `ethercat.el1004_0.input1` or `ethercat.motion.x.position`"
             }
         })
     }
@@ -62,12 +70,17 @@ pub fn is_identifier(s: &str) -> bool {
         && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
+/// Whether `s` is an entry path: one or more identifiers joined by dots (`x.position`).
+pub fn is_entry_path(s: &str) -> bool {
+    s.split('.').all(is_identifier)
+}
+
 impl<'a> Link<'a> {
-    /// Parses `ethercat.<device>.<entry>`.
+    /// Parses `ethercat.<device>.<entry>`, the entry one or more dotted identifiers.
     pub fn parse(text: &'a str) -> Result<Self, LinkError> {
-        let mut parts = text.split('.');
-        let (bus, device, entry) = match (parts.next(), parts.next(), parts.next(), parts.next()) {
-            (Some(b), Some(d), Some(e), None) => (b, d, e),
+        let mut parts = text.splitn(3, '.');
+        let (bus, device, entry) = match (parts.next(), parts.next(), parts.next()) {
+            (Some(b), Some(d), Some(e)) => (b, d, e),
             (Some(b), ..) if b != ETHERCAT => return Err(LinkError::UnknownBus),
             _ => return Err(LinkError::Shape),
         };
@@ -77,7 +90,7 @@ impl<'a> Link<'a> {
         if !is_identifier(device) {
             return Err(LinkError::BadDevice);
         }
-        if !is_identifier(entry) {
+        if !is_entry_path(entry) {
             return Err(LinkError::BadEntry);
         }
         Ok(Link { device, entry })
@@ -99,6 +112,9 @@ mod tests {
         for l in [
             "ethercat.el2004.output1",
             "ethercat.impact67_0.digital_outputs",
+            "ethercat.motion.x.position",
+            "ethercat.motion.x.actual_velocity",
+            "ethercat.rack.slot1.ch2.value",
         ] {
             assert_eq!(Link::parse(l).unwrap().to_string(), l);
         }
@@ -108,7 +124,9 @@ mod tests {
     fn malformed_links_say_what_is_wrong() {
         assert_eq!(Link::parse("modbus.a.b"), Err(LinkError::UnknownBus));
         assert_eq!(Link::parse("ethercat.a"), Err(LinkError::Shape));
-        assert_eq!(Link::parse("ethercat.a.b.c"), Err(LinkError::Shape));
+        assert_eq!(Link::parse("ethercat.a.b..c"), Err(LinkError::BadEntry));
+        assert_eq!(Link::parse("ethercat.a.b."), Err(LinkError::BadEntry));
+        assert_eq!(Link::parse("ethercat.a.x.1st"), Err(LinkError::BadEntry));
         assert_eq!(Link::parse("ethercat.1a.b"), Err(LinkError::BadDevice));
         assert_eq!(Link::parse("ethercat.a.b-c"), Err(LinkError::BadEntry));
         assert_eq!(Link::parse("ethercat..b"), Err(LinkError::BadDevice));

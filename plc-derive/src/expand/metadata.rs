@@ -78,6 +78,8 @@ pub fn expand(c: &Container) -> TokenStream {
             quote!(#krate::Access::ReadWrite)
         };
         let dir = direction(c, v.effective_direction);
+        let ux = m.ux;
+        let quantity = opt_str(m.quantity.as_ref().map(|q| q.value.as_str()));
         quote! {
             #p::var_info(#p::VarInfoParts {
                 name: #name,
@@ -94,6 +96,8 @@ pub fn expand(c: &Container) -> TokenStream {
                 nonvolatile: #nonvolatile,
                 access: #access,
                 direction: #dir,
+                ux: #ux,
+                quantity: #quantity,
             })
         }
     });

@@ -358,10 +358,11 @@ fn check_entry(
     problems: &mut Vec<String>,
 ) {
     let at = format!("device {pos} (`{}`), entry `{}`", d.name, e.name);
-    if !plc_rules::link::is_identifier(&e.name) {
+    if !plc_rules::link::is_entry_path(&e.name) {
         problems.push(format!(
-            "{at}: the name is not an identifier (letters, digits, underscores, not starting \
-             with a digit): rename it, e.g. `output1`"
+            "{at}: the name is not an identifier, or identifiers joined by dots (letters, \
+             digits, underscores, not starting with a digit): rename it, e.g. `output1` or \
+             `x.position`"
         ));
     }
     if module_before

@@ -124,11 +124,12 @@ impl BusLayout {
     }
 
     /// The entry `entry` of the device (or module of consecutive devices) `device`, by the
-    /// names links use.
+    /// names links use, compared case-insensitively as links compare
+    /// (`ethercat.RC8_0.statusword` is `ethercat.rc8_0.statusword`).
     pub fn entry(&self, device: &str, entry: &str) -> Option<&EntryLayout> {
-        self.entries
-            .iter()
-            .find(|e| self.names[e.device] == device && e.name == entry)
+        self.entries.iter().find(|e| {
+            self.names[e.device].eq_ignore_ascii_case(device) && e.name.eq_ignore_ascii_case(entry)
+        })
     }
 
     /// Checks the computed slice sizes against the ones ethercrab reports after reaching

@@ -273,6 +273,8 @@ mod tests {
             nonvolatile: false,
             access: Access::ReadWrite,
             direction: dir,
+            ux: false,
+            quantity: None,
         })
     }
 
@@ -465,6 +467,8 @@ mod tests {
             nonvolatile: v.nonvolatile,
             access: v.access,
             direction: v.direction,
+            ux: v.ux,
+            quantity: v.quantity,
         }
     }
 

@@ -7,7 +7,7 @@ use serde_json::Value;
 
 /// The CSV columns: first those of the tooling of the framework the JSON format comes from (`name` .. `initial`), then
 /// the rest of a variable's fields, so that nothing of a declaration is lost.
-pub const COLUMNS: [&str; 13] = [
+pub const COLUMNS: [&str; 15] = [
     "name",
     "type",
     "direction",
@@ -21,6 +21,8 @@ pub const COLUMNS: [&str; 13] = [
     "read_only",
     "at",
     "dims",
+    "ux",
+    "quantity",
 ];
 
 /// A CSV file read into the JSON front end's form, with the line of each row.
@@ -103,10 +105,19 @@ fn number(cell: &str) -> Value {
     }
 }
 
-/// The value of an `initial` cell: text for a string variable, else a bool or a number as JSON
-/// writes it.
+/// The value of an `initial` cell: text for a string variable (plain, or as JSON text in
+/// double quotes, as the framework's own export writes it: `"abc"` is `abc`), else a bool or a
+/// number as JSON writes it.
 fn initial(cell: &str, ty: &str) -> Value {
     if ty.trim().eq_ignore_ascii_case("string") {
+        let quoted = cell.trim();
+        if quoted.len() >= 2
+            && quoted.starts_with('"')
+            && quoted.ends_with('"')
+            && let Ok(text @ Value::String(_)) = serde_json::from_str::<Value>(quoted)
+        {
+            return text;
+        }
         return Value::String(cell.to_string());
     }
     match flag(cell.trim()) {
@@ -139,7 +150,7 @@ fn cell_value(col: &str, cell: &str, ty: &str) -> Option<Value> {
     Some(match col {
         "initial" => initial(c, ty),
         "bit" | "max_length" => number(c),
-        "nonvolatile" | "read_only" => flag(c),
+        "nonvolatile" | "read_only" | "ux" => flag(c),
         "dims" => dims(c),
         _ => Value::String(c.to_string()),
     })

@@ -50,10 +50,11 @@ pub fn check_struct_name(name: &str) -> Result<(), String> {
 
 /// Characters that do not belong in a comment line: the bidirectional text controls, which
 /// rustc refuses (they can make code read differently from what it does), and control
-/// characters other than tab and the line ends (which split a description into lines).
+/// characters other than the line ends (which split a description into lines); a tab too,
+/// which clippy refuses in doc comments.
 fn breaks_comment(c: char) -> bool {
     matches!(c, '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
-        || (c.is_control() && !matches!(c, '\t' | '\n' | '\r'))
+        || (c.is_control() && !matches!(c, '\n' | '\r'))
 }
 
 /// One line of a doc comment, with what does not belong there made a space.
@@ -167,6 +168,12 @@ fn field(v: &Var<ListAt>, origin: &str) -> Result<String, String> {
     }
     if v.read_only {
         keys.push("read_only".into());
+    }
+    if v.ux {
+        keys.push("ux".into());
+    }
+    if let Some(q) = &v.quantity {
+        keys.push(format!("quantity = {:?}", q.value));
     }
     if description.is_empty() {
         keys.push("description = \"\"".into());

@@ -51,6 +51,12 @@ pub fn descriptor_to_json(desc: &LayoutDescriptor) -> Value {
         if !v.dims.is_empty() {
             o.insert("dims".into(), json!(v.dims));
         }
+        if v.ux {
+            o.insert("ux".into(), json!(true));
+        }
+        if let Some(q) = &v.quantity {
+            o.insert("quantity".into(), json!(q));
+        }
         vars.insert(v.name.clone(), Value::Object(o));
     }
     json!({ "variables": vars })
@@ -93,8 +99,8 @@ pub fn descriptor_to_csv(desc: &LayoutDescriptor) -> String {
 /// let csv = plc_io::import::export_csv::<Gm>();
 /// assert_eq!(
 ///     csv,
-///     "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims\r\n\
-///      press_home_offset_mm,f64,,,\"Offset, in mm\",12.5,,,,true,,,\r\n"
+///     "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity\r\n\
+///      press_home_offset_mm,f64,,,\"Offset, in mm\",12.5,,,,true,,,,,\r\n"
 /// );
 /// ```
 pub fn export_csv<T: GlobalMemory>() -> String {

@@ -91,7 +91,16 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
             None => format!("variables.{name}: {}", p.message),
         }
     };
-    finish(&checked, options, Vec::new(), place)
+    let mut generated = finish(&checked, options, Vec::new(), place)?;
+    if !parsed.has_variables {
+        generated.warnings.insert(
+            0,
+            "the file has no \"variables\" object, so the struct declares no variable: add \
+             { \"variables\": { \"name\": { \"type\": \"u16\" } } } to declare some"
+                .into(),
+        );
+    }
+    Ok(generated)
 }
 
 /// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same

@@ -12,6 +12,8 @@ pub struct Parsed {
     pub variables: Vec<(String, Value)>,
     /// The second and later uses of a name, with what they declared (checked, not generated).
     pub duplicates: Vec<(String, Value)>,
+    /// Whether the file has a `variables` object (a fresh project's file may have none).
+    pub has_variables: bool,
     /// The names so far in lower case: a set, so a 10,000-variable file is not quadratic.
     seen: HashSet<String>,
 }
@@ -21,6 +23,7 @@ impl Parsed {
         Parsed {
             variables: Vec::new(),
             duplicates: Vec::new(),
+            has_variables: true,
             seen: HashSet::new(),
         }
     }
@@ -96,10 +99,7 @@ pub fn parse(json: &str) -> Result<Parsed, String> {
                 e.column()
             )
         })?;
-    if !found {
-        return Err(
-            "the file has no \"variables\" object: write { \"variables\": { ... } }".into(),
-        );
-    }
+    // A fresh project's file has no variables yet: an empty struct, with a note.
+    parsed.has_variables = found;
     Ok(parsed)
 }

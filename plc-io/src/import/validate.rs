@@ -354,6 +354,8 @@ fn read_var(
         .map_or_else(String::new, |d| d.value);
     model.nonvolatile = r.flag("nonvolatile") | r.flag("retain");
     model.read_only = r.flag("read_only");
+    model.ux = r.flag("ux");
+    model.quantity = r.string("quantity");
     model
 }
 

@@ -43,6 +43,12 @@ pub struct VarDescriptor {
     pub access: Access,
     /// Input, output, command, status or internal.
     pub direction: Direction,
+    /// Meant for an operator UI.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub ux: bool,
+    /// The physical quantity a display uses to pick units (`"force"`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub quantity: Option<String>,
 }
 
 /// A bit-mapped bool's source.
@@ -98,6 +104,8 @@ impl From<&VarInfo> for VarDescriptor {
             nonvolatile: v.nonvolatile,
             access: v.access,
             direction: v.direction,
+            ux: v.ux,
+            quantity: v.quantity.map(str::to_string),
         }
     }
 }

@@ -10,7 +10,7 @@ pub struct Hostile {
         description = "Start \u{202e}evil\u{202c} here\u{2066}x\u{2069}"
     )]
     pub label: FixedString<16>,
-    /// rings  twice	and more
+    /// rings  twice and more
     #[plc(description = "rings\u{7} twice\tand more")]
     pub bell: u8,
     /// line one

@@ -192,6 +192,10 @@ pub struct Var<L> {
     pub read_only: bool,
     /// The description (`description = ".."` or the doc comment).
     pub description: String,
+    /// `ux`: the variable is meant for an operator UI.
+    pub ux: bool,
+    /// `quantity = "force"`: the physical quantity a display uses to pick units.
+    pub quantity: Option<Located<String, L>>,
 }
 
 impl<L: Clone> Var<L> {
@@ -214,6 +218,8 @@ impl<L: Clone> Var<L> {
             nonvolatile: false,
             read_only: false,
             description: String::new(),
+            ux: false,
+            quantity: None,
         }
     }
 }
@@ -232,6 +238,8 @@ pub const ATTRIBUTE_KEYS: &[&str] = &[
     "description",
     "read_only",
     "direction",
+    "ux",
+    "quantity",
 ];
 
 /// A whole declaration: the variables in order, and the settings that rules depend on.
