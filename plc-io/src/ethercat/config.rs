@@ -9,6 +9,7 @@ use super::MAX_PDI;
 use super::MAX_SUBDEVICES;
 use plc_core::{IecType, TypeFamily};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::fmt;
 use std::path::Path;
 
@@ -76,6 +77,26 @@ pub struct DeviceConfig {
     /// mixed as they come (each direction is laid out on its own). Empty for a coupler.
     #[serde(default)]
     pub entries: Vec<PdoEntry>,
+}
+
+impl DeviceConfig {
+    /// Bits of this device's entries of `direction`, per SyncManager.
+    pub fn sync_manager_bits(&self, direction: PdoDirection) -> BTreeMap<u8, usize> {
+        let mut sms = BTreeMap::new();
+        for e in self.entries.iter().filter(|e| e.direction == direction) {
+            *sms.entry(e.sm).or_insert(0) += e.bits as usize;
+        }
+        sms
+    }
+
+    /// Bytes of this device's process data in `direction`: each SyncManager's bits rounded
+    /// up to whole bytes.
+    pub fn process_data_bytes(&self, direction: PdoDirection) -> usize {
+        self.sync_manager_bits(direction)
+            .values()
+            .map(|bits| bits.div_ceil(8))
+            .sum()
+    }
 }
 
 /// The identity a SubDevice reports from its EEPROM (SII words 0x08..0x0D).
@@ -328,8 +349,8 @@ impl BusConfig {
             .devices
             .iter()
             .map(|d| {
-                super::layout::device_bytes(d, PdoDirection::Input)
-                    + super::layout::device_bytes(d, PdoDirection::Output)
+                d.process_data_bytes(PdoDirection::Input)
+                    + d.process_data_bytes(PdoDirection::Output)
             })
             .sum();
         if pdi > MAX_PDI {
