@@ -49,6 +49,7 @@ pub(crate) fn from_raw(raw: u64, ty: IecType, bits: u32) -> Value {
 
 /// `v` as the raw bits of type `ty`, the inverse of [`from_raw`]; the caller keeps the low
 /// bits it has room for. A number becomes a REAL or LREAL by conversion, text becomes 0.
+#[cfg(any(feature = "ethercat", test))]
 pub(crate) fn to_raw(v: Value, ty: IecType) -> u64 {
     let real = |f: f64| match ty {
         IecType::Real => u64::from((f as f32).to_bits()),
