@@ -72,7 +72,7 @@ pub struct Options {
     pub inputs_on_fault: InputsOnFault,
     /// While the bus is faulty, how often `exchange` tries to bring SubDevices that answer
     /// but are not in OP back to OP (a few datagrams per SubDevice; see
-    /// [`EtherCatBackend::problems`]).
+    /// [`EtherCatBackend::problems`](super::EtherCatBackend::problems)).
     pub recovery_interval: std::time::Duration,
 }
 

@@ -52,7 +52,7 @@ use hex::{hex_u32, hex_u32_opt};
 ///
 /// Every problem of a description is reported at once ([`ConfigError`]): names that are not
 /// identifiers or repeat, an entry wider than its type, a bus beyond the caps
-/// ([`MAX_SUBDEVICES`], [`MAX_PDI`]).
+/// ([`MAX_SUBDEVICES`](super::MAX_SUBDEVICES), [`MAX_PDI`](super::MAX_PDI)).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BusConfig {
