@@ -91,10 +91,11 @@ fn main() -> ExitCode {
 }
 
 /// The runtime's messages (retained values, EtherCAT problems) on stderr as plain lines, from
-/// level info on; `RUST_LOG` chooses others (`RUST_LOG=debug`, `RUST_LOG=plc_io=warn`).
+/// level info on. `RUST_LOG` chooses others: `RUST_LOG=plc_io=warn` for fewer,
+/// `RUST_LOG=info` to add ethercrab's own.
 fn init_logging() {
     use std::io::Write;
-    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("info"))
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("plc_io=info"))
         .format(|out, record| writeln!(out, "{}", record.args()))
         .init();
 }

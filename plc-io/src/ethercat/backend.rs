@@ -198,6 +198,8 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             return self.status;
         };
         let md = &running.maindevice;
+        // Any error of the exchange (a lost frame, a timeout) means no answer this cycle: it
+        // is counted and reported as such below.
         let answer = match &running.group {
             Some(Stage::Op(g)) => cycle(g, md, gm, &self.outputs),
             Some(Stage::SafeOp(g)) => cycle(g, md, gm, &self.outputs),

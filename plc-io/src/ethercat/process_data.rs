@@ -90,3 +90,42 @@ pub(super) fn zero_outputs<S: HasPdi>(g: &Group<S>, md: &MainDevice<'static>) {
         sd.outputs_raw_mut().fill(0);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::per_device;
+    use crate::ethercat::layout::BusLayout;
+    use crate::ethercat::resolve::resolve;
+    use crate::ethercat::{BusConfig, devices};
+
+    #[derive(plc_core::GlobalMemory, Clone)]
+    struct Gm {
+        #[plc(link = "ethercat.left.output1", direction = "output")]
+        a: bool,
+        #[plc(link = "ethercat.left.output3", direction = "output")]
+        b: bool,
+        #[plc(link = "ethercat.right.output2", direction = "output")]
+        c: bool,
+    }
+
+    #[test]
+    fn bindings_come_in_one_run_per_device() {
+        let bus = BusConfig {
+            devices: vec![
+                devices::ek1100("coupler"),
+                devices::el2004("left"),
+                devices::el2004("right"),
+            ],
+        };
+        let bindings = resolve::<Gm>(&BusLayout::new(&bus)).unwrap();
+        let runs: Vec<(usize, Vec<usize>)> = per_device(&bindings)
+            .map(|(dev, run)| (dev, run.iter().map(|b| b.var).collect()))
+            .collect();
+        assert_eq!(runs, [(1, vec![0, 1]), (2, vec![2])]);
+    }
+
+    #[test]
+    fn no_bindings_give_no_runs() {
+        assert_eq!(per_device(&[]).count(), 0);
+    }
+}
