@@ -2,9 +2,26 @@
 //! RFC 4180 quoting. Each cell becomes the JSON value the same field has in a project file, so
 //! CSV goes through exactly the checks JSON does; this file only knows about rows and cells.
 
-use super::columns::COLUMNS;
 use super::parse::Parsed;
 use serde_json::Value;
+
+/// The CSV columns: first those of the seed 000 framework's tooling (`name` .. `initial`), then
+/// the rest of a variable's fields, so that nothing of a declaration is lost.
+pub const COLUMNS: [&str; 13] = [
+    "name",
+    "type",
+    "direction",
+    "link",
+    "description",
+    "initial",
+    "source",
+    "bit",
+    "max_length",
+    "nonvolatile",
+    "read_only",
+    "at",
+    "dims",
+];
 
 /// A CSV file read into the JSON front end's form, with the line of each row.
 pub struct Table {

@@ -2,7 +2,7 @@
 //! 4180 quoting (CRLF line ends, fields with commas, quotes or line breaks in double quotes).
 //! The cells are written so that reading them back gives the same JSON values.
 
-use super::columns::COLUMNS;
+use super::csv_read::COLUMNS;
 use serde_json::Value;
 
 fn cell(col: &str, v: Option<&Value>) -> String {
