@@ -142,10 +142,10 @@ impl SimBus {
     /// SyncManager). Devices without inputs ignore it.
     pub fn set_input_bit(&self, pos: usize, bit: usize, value: bool) {
         self.with(pos, |d| {
-            if let Some(&(start, len)) = d.areas(4).first()
-                && bit / 8 < len
+            if let Some(area) = d.areas(4).first()
+                && bit / 8 < area.len()
             {
-                let a = start + bit / 8;
+                let a = area.start + bit / 8;
                 let mask = 1 << (bit % 8);
                 d.mem[a] = if value {
                     d.mem[a] | mask
@@ -160,9 +160,9 @@ impl SimBus {
     /// holds).
     pub fn set_inputs(&self, pos: usize, bytes: &[u8]) {
         self.with(pos, |d| {
-            if let Some(&(start, len)) = d.areas(4).first() {
-                let n = len.min(bytes.len());
-                d.mem[start..start + n].copy_from_slice(&bytes[..n]);
+            if let Some(area) = d.areas(4).first() {
+                let n = area.len().min(bytes.len());
+                d.mem[area.start..area.start + n].copy_from_slice(&bytes[..n]);
             }
         })
     }
@@ -174,7 +174,7 @@ impl SimBus {
             let op = d.al_state() == al::OP;
             d.areas(3)
                 .iter()
-                .flat_map(|&(start, len)| d.mem[start..start + len].to_vec())
+                .flat_map(|area| d.mem[area.clone()].to_vec())
                 .map(|b| if op { b } else { 0 })
                 .collect()
         })
@@ -407,17 +407,18 @@ fn logical(dev: &mut Device, command: Command, start: u32, data: &mut [u8], wkc:
     let (mut read, mut wrote) = (false, false);
     let start = start as u64;
     let end = start + data.len() as u64;
-    for (log, flen, phys, reads, writes) in dev.fmmus() {
-        let (f_start, f_end) = (log as u64, log as u64 + flen as u64);
+    for fmmu in dev.fmmus() {
+        let f_start = u64::from(fmmu.logical);
+        let f_end = f_start + fmmu.len as u64;
         let (lo, hi) = (f_start.max(start), f_end.min(end));
         for l in lo..hi {
-            let p = phys + (l - f_start) as usize;
+            let p = fmmu.physical + (l - f_start) as usize;
             let i = (l - start) as usize;
-            if reads && command != Command::Lwr {
+            if fmmu.reads && command != Command::Lwr {
                 data[i] = dev.mem.get(p).copied().unwrap_or(0);
                 read = true;
             }
-            if writes && command != Command::Lrd {
+            if fmmu.writes && command != Command::Lrd {
                 if let Some(m) = dev.mem.get_mut(p) {
                     *m = data[i];
                 }

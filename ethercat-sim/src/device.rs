@@ -7,6 +7,23 @@ use crate::dc::{self, Position};
 use crate::esc::{self, EscInfo, SPACE, reg};
 use crate::fault::Faults;
 use crate::sii::{self, Completed, Eeprom, SiiSyncManager};
+use std::ops::Range;
+
+/// An active FMMU: logical bytes `logical..logical + len` of a datagram map to the ESC's own
+/// bytes from `physical` on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Fmmu {
+    /// First logical address (register bytes 0-3).
+    pub(crate) logical: u32,
+    /// Bytes mapped (bytes 4-5).
+    pub(crate) len: usize,
+    /// First physical address (bytes 8-9).
+    pub(crate) physical: usize,
+    /// A read FMMU: LRD and LRW take its bytes into the datagram (type byte 11, bit 0).
+    pub(crate) reads: bool,
+    /// A write FMMU: LWR and LRW store the datagram's bytes (type byte 11, bit 1).
+    pub(crate) writes: bool,
+}
 
 /// A simulated EtherCAT SubDevice.
 ///
@@ -392,6 +409,10 @@ impl Device {
                 self.mem[a] = b;
             }
         }
+        if reg::RX_ERROR_COUNTERS.start < ado + data.len() && ado < reg::RX_ERROR_COUNTERS.end {
+            // A write to any RX error counter clears them all, whatever is written.
+            self.mem[reg::RX_ERROR_COUNTERS].fill(0);
+        }
         if touches(reg::AL_CONTROL) {
             self.on_al_control();
         }
@@ -488,8 +509,8 @@ impl Device {
             .copy_from_slice(&diff.to_le_bytes());
     }
 
-    /// Active FMMUs: (logical start, length, physical start, reads, writes).
-    pub(crate) fn fmmus(&self) -> Vec<(u32, usize, usize, bool, bool)> {
+    /// The active FMMUs.
+    pub(crate) fn fmmus(&self) -> Vec<Fmmu> {
         (0..self.esc.fmmus as usize)
             .filter_map(|i| {
                 let b = reg::FMMU0 + i * 16;
@@ -497,20 +518,20 @@ impl Device {
                     return None;
                 }
                 let kind = self.mem[b + 11];
-                Some((
-                    self.u32_at(b),
-                    self.u16_at(b + 4) as usize,
-                    self.u16_at(b + 8) as usize,
-                    kind & 1 != 0,
-                    kind & 2 != 0,
-                ))
+                Some(Fmmu {
+                    logical: self.u32_at(b),
+                    len: self.u16_at(b + 4) as usize,
+                    physical: self.u16_at(b + 8) as usize,
+                    reads: kind & 1 != 0,
+                    writes: kind & 2 != 0,
+                })
             })
             .collect()
     }
 
-    /// The process data areas of SyncManagers of `kind` (3 outputs, 4 inputs): start and the
-    /// length configured in the SM registers (or the SII's length until configured).
-    pub(crate) fn areas(&self, kind: u8) -> Vec<(usize, usize)> {
+    /// The process data areas (ESC addresses) of SyncManagers of `kind` (3 outputs, 4 inputs),
+    /// as long as configured in the SM registers (or the SII's length until configured).
+    pub(crate) fn areas(&self, kind: u8) -> Vec<Range<usize>> {
         self.sync_managers
             .iter()
             .enumerate()
@@ -522,7 +543,8 @@ impl Device {
                 } else {
                     sm.len.max(1) as usize
                 };
-                (sm.start as usize, len)
+                let start = sm.start as usize;
+                start..start + len
             })
             .collect()
     }
@@ -586,5 +608,44 @@ mod tests {
         );
         d.write(0x0502, &[0x00, 0x04], 0);
         assert_eq!(d.u16_at(reg::STATION_ALIAS), 0xABCD);
+    }
+
+    #[test]
+    fn a_write_to_any_rx_error_counter_clears_them_all() {
+        let mut d = Device::el2004();
+        d.mem[reg::RX_ERROR_COUNTERS].copy_from_slice(&[1, 2, 3, 4, 5, 6, 7, 8]);
+        d.write(0x0305, &[0x55], 0);
+        let mut counters = [0xffu8; 8];
+        d.read(0x0300, &mut counters, 0);
+        assert_eq!(counters, [0; 8]);
+    }
+
+    #[test]
+    fn a_write_beside_the_rx_error_counters_keeps_them() {
+        let mut d = Device::el2004();
+        d.mem[reg::RX_ERROR_COUNTERS].copy_from_slice(&[1, 2, 3, 4, 5, 6, 7, 8]);
+        d.write(0x0308, &[0], 0);
+        d.write(0x02FE, &[0, 0], 0);
+        assert_eq!(&d.mem[reg::RX_ERROR_COUNTERS], &[1, 2, 3, 4, 5, 6, 7, 8]);
+    }
+
+    #[test]
+    fn an_fmmu_reads_back_as_its_fields() {
+        let mut d = Device::el2004();
+        let mut fmmu = [0u8; 16];
+        fmmu[0..4].copy_from_slice(&0x0001_0000u32.to_le_bytes());
+        fmmu[4..6].copy_from_slice(&1u16.to_le_bytes());
+        fmmu[8..10].copy_from_slice(&0x0f00u16.to_le_bytes());
+        fmmu[11] = 2;
+        fmmu[12] = 1;
+        d.write(reg::FMMU0, &fmmu, 0);
+        let expected = Fmmu {
+            logical: 0x0001_0000,
+            len: 1,
+            physical: 0x0f00,
+            reads: false,
+            writes: true,
+        };
+        assert_eq!(d.fmmus(), [expected]);
     }
 }

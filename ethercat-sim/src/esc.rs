@@ -22,6 +22,9 @@ pub mod reg {
     pub const AL_STATUS: usize = 0x0130;
     /// AL status code (u16).
     pub const AL_STATUS_CODE: usize = 0x0134;
+    /// RX error counters, two bytes per port (invalid frames, then RX errors). A write to any
+    /// of them clears all eight bytes; the value written does not matter.
+    pub const RX_ERROR_COUNTERS: std::ops::Range<usize> = 0x0300..0x0308;
     /// SII EEPROM configuration / PDI access.
     pub const SII_CONFIG: usize = 0x0500;
     /// SII EEPROM control/status (u16).

@@ -67,7 +67,8 @@
 //! Not simulated: mailbox services other than expedited SDO transfers and normal uploads
 //! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of
 //! terminals with a microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a
-//! test trips the watchdog), and EEPROM contents the captures do not hold (see
+//! test trips the watchdog), line errors (the RX error counters 0x0300-0x0307 count nothing;
+//! a write clears them, as on an ESC), and EEPROM contents the captures do not hold (see
 //! `data/README.md`).
 #![deny(missing_docs)]
 

@@ -113,6 +113,14 @@ fn main() -> ExitCode {
     // Die quietly on a closed pipe (`plc list x | head`), as command-line tools do.
     // SAFETY: setting a signal disposition to the default before any thread starts.
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
+    // Whatever plc-io logs while a command runs, as plain lines on stderr; `RUST_LOG`
+    // chooses other levels and crates.
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("plc_io=info"))
+        .format(|out, record| {
+            use std::io::Write;
+            writeln!(out, "{}", record.args())
+        })
+        .init();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::List { segment, json } => cmd::list::run(segment.as_deref(), json),

@@ -121,23 +121,24 @@ pub struct RetainReport {
 }
 
 impl RetainReport {
-    /// Writes the report's warnings to stderr (removed and reset variables).
+    /// Logs the report's warnings (removed and reset variables) and the temporary files it
+    /// removed, through the `log` crate (target `plc_io::retain`).
     pub fn log(&self, path: &Path) {
         for name in &self.removed {
-            eprintln!(
+            log::warn!(
                 "retain {}: `{name}` is no longer a nonvolatile variable (removed or renamed); \
                  its saved value is ignored",
                 path.display()
             );
         }
         for (name, why) in &self.reset {
-            eprintln!(
+            log::warn!(
                 "retain {}: `{name}` keeps its initial value: {why}",
                 path.display()
             );
         }
         for temp in &self.stale_temps {
-            eprintln!(
+            log::info!(
                 "retain {}: removed {}, left by a save that did not finish",
                 path.display(),
                 temp.display()
@@ -484,6 +485,7 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
         let (tx, rx) = mpsc::channel::<Option<I>>();
         let failed_saves = Arc::new(AtomicU64::new(0));
         let failed = failed_saves.clone();
+        let path = store.path().to_owned();
         let thread = std::thread::Builder::new()
             .name("plc-retain".into())
             .spawn(move || {
@@ -496,7 +498,7 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                 let save = |image: I, pending: &mut Option<I>| {
                     if let Err(e) = store.save(&T::from_image(&image)) {
                         failed.fetch_add(1, Ordering::Relaxed);
-                        eprintln!("{e}; the values are kept and saved again later");
+                        log::error!("{e}; the values are kept and saved again later");
                         pending.get_or_insert(image);
                     }
                 };
@@ -528,7 +530,11 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
             Ok(t) => Some(t),
             Err(e) => {
                 // Without the thread nothing would ever be saved: say so once, loudly.
-                eprintln!("retained values will not be saved: cannot start the retain writer: {e}");
+                log::error!(
+                    "retain file {}: retained values will not be saved: cannot start the retain \
+                     writer: {e}",
+                    path.display()
+                );
                 failed_saves.fetch_add(1, Ordering::Relaxed);
                 None
             }

@@ -7,7 +7,7 @@ use common::{kill9, role, spawn_role, unique, wait_for};
 use plc_core::{GlobalMemory, Value};
 use plc_io::retain::RetainStore;
 use plc_io::shm::{DynSegment, OwnerState, RunState, SharedGlobalMemory, ShmError};
-use plc_io::{Context, IoBackend, IoError, IoStatus, Runtime, RuntimeError};
+use plc_io::{BusState, Context, IoBackend, IoError, IoStatus, Runtime, RuntimeError};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -48,7 +48,7 @@ impl IoBackend<Gm> for Recorder {
         IoStatus {
             inputs_valid: true,
             bus_fault: false,
-            bus_state: "OP",
+            bus_state: BusState::Op,
         }
     }
     fn fault(&mut self, gm: &mut Gm) {
@@ -229,8 +229,8 @@ fn tools_see_the_running_program_and_their_writes_arrive() {
         (typed.snapshot().ok()?.seen_setpoint == 1234).then_some(())
     });
     let status = seg.status();
-    assert_eq!(status.period, Duration::from_millis(2));
-    assert!(status.max >= status.min && status.writes_applied == 1);
+    assert_eq!(status.stats.period, Duration::from_millis(2));
+    assert!(status.stats.max >= status.stats.min && status.writes_applied == 1);
     stop.stop();
     let gm = t.join().unwrap();
     assert_eq!(gm.setpoint, 1234);
@@ -246,7 +246,7 @@ fn context_for_test_runs_a_tick_without_bus_or_segment() {
     ctx.gm.start_button = true;
     ctx.gm.motor_on = ctx.gm.start_button && ctx.inputs_valid;
     assert!(ctx.gm.motor_on);
-    assert_eq!(ctx.bus_state, "NONE");
+    assert_eq!(ctx.bus_state, BusState::NoBus);
 }
 
 #[test]

@@ -80,6 +80,7 @@ fn parse_args() -> Result<Args, String> {
 }
 
 fn main() -> ExitCode {
+    init_logging();
     match run() {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
@@ -87,6 +88,16 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// The runtime's messages (retained values, EtherCAT problems) on stderr as plain lines, from
+/// level info on. `RUST_LOG` chooses others: `RUST_LOG=plc_io=warn` for fewer,
+/// `RUST_LOG=info` to add ethercrab's own.
+fn init_logging() {
+    use std::io::Write;
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("plc_io=info"))
+        .format(|out, record| writeln!(out, "{}", record.args()))
+        .init();
 }
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
@@ -175,10 +186,10 @@ fn status_line(segment: String, stop: plc_io::StopHandle) -> std::thread::JoinHa
                 "cycle {:>7} | work last/mean/max {}/{}/{} us | overruns {} | bus {}{} | {} {} \
                  | force {} kN | tests {}",
                 st.cycle_count,
-                st.last.as_micros(),
-                st.mean.as_micros(),
-                st.max.as_micros(),
-                st.overruns,
+                st.stats.last.as_micros(),
+                st.stats.mean.as_micros(),
+                st.stats.max.as_micros(),
+                st.stats.overruns,
                 st.bus_state,
                 if st.inputs_valid {
                     ""

@@ -40,7 +40,7 @@ pub fn check(seg: &DynSegment, assignment: &str) -> Result<Checked, Error> {
 /// How long to wait for the program to take the writes: fifty of its cycles, at least a second
 /// (a busy machine), at most ten (a person is waiting at the terminal).
 fn patience(seg: &DynSegment) -> Duration {
-    (seg.status().period * 50).clamp(Duration::from_secs(1), Duration::from_secs(10))
+    (seg.status().stats.period * 50).clamp(Duration::from_secs(1), Duration::from_secs(10))
 }
 
 pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {

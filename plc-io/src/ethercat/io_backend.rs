@@ -1,6 +1,7 @@
 //! The EtherCAT backend as the runtime's `IoBackend`.
 
-use super::backend::{EtherCatBackend, EtherCatError};
+use super::backend::EtherCatBackend;
+use super::error::EtherCatError;
 use crate::runtime::{IoBackend, IoError, IoStatus};
 use plc_core::GlobalMemory;
 
@@ -20,7 +21,7 @@ impl<T: GlobalMemory> IoBackend<T> for EtherCatBackend<T> {
         IoStatus {
             inputs_valid: s.inputs_valid,
             bus_fault: s.bus_fault,
-            bus_state: s.state.name(),
+            bus_state: s.state,
         }
     }
 

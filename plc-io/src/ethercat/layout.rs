@@ -16,7 +16,7 @@
 //! assert_eq!(layout.devices[1].output_bytes, 2);
 //! ```
 
-use super::config::{BusConfig, DeviceConfig, PdoDirection};
+use super::config::{BusConfig, PdoDirection};
 use plc_core::IecType;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -60,22 +60,6 @@ pub struct BusLayout {
     pub entries: Vec<EntryLayout>,
 }
 
-/// Bytes of a device's slice in one direction.
-pub fn device_bytes(device: &DeviceConfig, direction: PdoDirection) -> usize {
-    sm_bits(device, direction)
-        .values()
-        .map(|bits| bits.div_ceil(8))
-        .sum()
-}
-
-fn sm_bits(device: &DeviceConfig, direction: PdoDirection) -> BTreeMap<u8, usize> {
-    let mut sms = BTreeMap::new();
-    for e in device.entries.iter().filter(|e| e.direction == direction) {
-        *sms.entry(e.sm).or_insert(0) += e.bits as usize;
-    }
-    sms
-}
-
 impl BusLayout {
     /// Lays out every entry of `bus` (call [`BusConfig::validate`] first; entries with an
     /// unknown type are skipped).
@@ -87,7 +71,7 @@ impl BusLayout {
                 // Start bit of each SyncManager: the SMs follow in index order, byte-aligned.
                 let mut start = BTreeMap::new();
                 let mut byte = 0;
-                for (sm, bits) in sm_bits(d, direction) {
+                for (sm, bits) in d.sync_manager_bits(direction) {
                     start.insert(sm, byte * 8);
                     byte += bits.div_ceil(8);
                 }
@@ -112,8 +96,8 @@ impl BusLayout {
                 }
             }
             devices.push(DeviceLayout {
-                input_bytes: device_bytes(d, PdoDirection::Input),
-                output_bytes: device_bytes(d, PdoDirection::Output),
+                input_bytes: d.process_data_bytes(PdoDirection::Input),
+                output_bytes: d.process_data_bytes(PdoDirection::Output),
             });
         }
         BusLayout {

@@ -10,10 +10,13 @@
 //!    (existence, direction widening, one writer per output). All problems are
 //!    reported together, before anything is sent to the bus.
 //! 3. [`EtherCatBackend`] (`backend`): an ethercrab MainDevice with one group brought to OP
-//!    after the identities and process data sizes are checked; each `exchange` is one `tx_rx`
-//!    with a working-counter check. The transport is a raw socket on a NIC
-//!    ([`Transport::Interface`]) or anything that drives ethercrab's `PduTx`/`PduRx`, such as
-//!    the in-process simulated bus of `ethercat-sim` ([`Transport::custom`]).
+//!    after the identities and process data sizes are checked (`bringup`); each `exchange` is
+//!    one `tx_rx` with a working-counter check (`status`), moving the linked variables
+//!    (`process_data`) and bringing SubDevices back to OP after a fault (`recovery`). The
+//!    transport (`transport`) is a raw socket on a NIC ([`Transport::Interface`]) or anything
+//!    that drives ethercrab's `PduTx`/`PduRx`, such as the in-process simulated bus of
+//!    `ethercat-sim` ([`Transport::custom`]). Settings are [`Options`], failures to start
+//!    [`EtherCatError`].
 //!
 //! ```
 //! use plc_io::ethercat::{devices, layout::BusLayout, resolve, BusConfig, PdoDirection};
@@ -39,20 +42,27 @@
 #![deny(missing_docs)]
 
 mod backend;
+mod bringup;
 pub mod config;
 pub mod devices;
+mod error;
 mod io_backend;
 pub mod layout;
+mod options;
+mod process_data;
 mod recovery;
 pub mod resolve;
+mod status;
+mod transport;
 
-pub use backend::{
-    BusState, BusStatus, DriverFn, DriverGuard, EtherCatBackend, EtherCatError, InputsOnFault,
-    Options, Transport,
-};
+pub use crate::runtime::BusState;
+pub use backend::EtherCatBackend;
 pub use config::{BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry};
+pub use error::EtherCatError;
 pub use layout::{BusLayout, LayoutError};
+pub use options::{DriverFn, DriverGuard, InputsOnFault, Options, Transport};
 pub use resolve::{Binding, ResolveError};
+pub use status::BusStatus;
 
 /// Most SubDevices on one bus (ethercrab's const-generic `MAX_SUBDEVICES`). A larger
 /// description is refused with a clear error.

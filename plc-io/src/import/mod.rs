@@ -24,21 +24,34 @@
 //! assert!(generated.code.contains("/// Test identifier, as printed"));
 //! ```
 
+// The importer is feature `import`, the export feature `export`. The export writes the CSV
+// reader's columns, so the reader (and the parsed form it reads into) compile with either.
+#[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod csv_read;
+#[cfg(feature = "export")]
 mod csv_write;
+#[cfg(feature = "import")]
 mod emit;
+#[cfg(feature = "export")]
 mod export;
+#[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod parse;
+#[cfg(feature = "import")]
 mod validate;
 
 pub use csv_read::COLUMNS;
+#[cfg(feature = "export")]
 pub use export::{descriptor_to_csv, descriptor_to_json, export_csv, export_json};
 
+#[cfg(feature = "import")]
 use validate::{ListAt, Problem};
 
+#[cfg(feature = "import")]
 use std::fmt;
+#[cfg(feature = "import")]
 use std::path::Path;
 
+#[cfg(feature = "import")]
 /// Import settings.
 #[derive(Clone, Debug)]
 pub struct Options {
@@ -48,6 +61,7 @@ pub struct Options {
     pub origin: String,
 }
 
+#[cfg(feature = "import")]
 impl Default for Options {
     fn default() -> Self {
         Options {
@@ -57,6 +71,7 @@ impl Default for Options {
     }
 }
 
+#[cfg(feature = "import")]
 /// The generated module and the warnings about suspicious but legal input.
 #[derive(Clone, Debug)]
 pub struct Generated {
@@ -66,18 +81,22 @@ pub struct Generated {
     pub warnings: Vec<String>,
 }
 
+#[cfg(feature = "import")]
 /// Every error of the file, each naming the variable and field.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ImportErrors(pub Vec<String>);
 
+#[cfg(feature = "import")]
 impl fmt::Display for ImportErrors {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.0.join("\n"))
     }
 }
 
+#[cfg(feature = "import")]
 impl std::error::Error for ImportErrors {}
 
+#[cfg(feature = "import")]
 /// Checks a JSON variable list and generates the equivalent `#[derive(GlobalMemory)]` struct.
 ///
 /// Errors and warnings read `variables.<name>.<field>: <what is wrong>`.
@@ -103,6 +122,7 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
     Ok(generated)
 }
 
+#[cfg(feature = "import")]
 /// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same
 /// rules as [`generate`].
 ///
@@ -132,6 +152,7 @@ pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErr
     })
 }
 
+#[cfg(feature = "import")]
 /// The line a CSV message starts with (`line 4, ...`); messages about no line go last.
 fn line_of(message: &str) -> u64 {
     message
@@ -141,6 +162,7 @@ fn line_of(message: &str) -> u64 {
         .unwrap_or(u64::MAX)
 }
 
+#[cfg(feature = "import")]
 /// The checks of the generated code itself, and emission, shared by the JSON and CSV front
 /// ends; `place` words a problem for the input's format.
 fn finish(
@@ -177,6 +199,7 @@ fn finish(
     })
 }
 
+#[cfg(feature = "import")]
 /// For `build.rs`: generates `out` from the JSON file `path` (a CSV file if its name ends in
 /// `.csv`), written atomically and only when it changed; prints the warnings as cargo warnings
 /// and `cargo:rerun-if-changed`.
@@ -204,12 +227,14 @@ pub fn generate_from_file(path: &Path, out: &Path) -> Result<(), Box<dyn std::er
     Ok(())
 }
 
+#[cfg(feature = "import")]
 /// Whether a file is a CSV variable list, by its name (`.csv`, any case).
 pub fn is_csv(path: &Path) -> bool {
     path.extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"))
 }
 
+#[cfg(feature = "import")]
 /// Writes a file whole or not at all: a temporary file beside it, synced, renamed over it, and
 /// the directory synced, so that a crash leaves the old file or the new one. On an error the
 /// temporary file is removed and the old file is untouched. An unchanged file is not rewritten

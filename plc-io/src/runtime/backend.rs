@@ -1,5 +1,6 @@
 //! The I/O side of the cycle: a backend moves inputs into the struct and outputs out of it.
 
+use super::BusState;
 use std::fmt;
 
 /// What one exchange achieved.
@@ -9,8 +10,8 @@ pub struct IoStatus {
     pub inputs_valid: bool,
     /// The bus is not healthy this cycle.
     pub bus_fault: bool,
-    /// The bus state as EtherCAT tools name it (`OP`, `SAFE-OP`, ...), `NONE` without a bus.
-    pub bus_state: &'static str,
+    /// The bus state ([`BusState::NoBus`] without a bus).
+    pub bus_state: BusState,
 }
 
 impl IoStatus {
@@ -18,7 +19,7 @@ impl IoStatus {
     pub const NONE: IoStatus = IoStatus {
         inputs_valid: true,
         bus_fault: false,
-        bus_state: "NONE",
+        bus_state: BusState::NoBus,
     };
 }
 

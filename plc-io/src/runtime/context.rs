@@ -1,40 +1,7 @@
 //! What the program's tick sees: its variables and the facts of the cycle.
 
+use super::{BusState, CycleStats};
 use std::time::Duration;
-
-/// Cycle-time statistics: the work of one cycle (exchange to publish), not the sleep.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct CycleStats {
-    /// The configured period.
-    pub period: Duration,
-    /// Last cycle.
-    pub last: Duration,
-    /// Shortest cycle.
-    pub min: Duration,
-    /// Longest cycle.
-    pub max: Duration,
-    /// Mean cycle.
-    pub mean: Duration,
-    /// Cycles that did not finish within their period.
-    pub overruns: u64,
-}
-
-impl CycleStats {
-    pub(crate) fn add(&mut self, took: Duration, count: u64) {
-        self.last = took;
-        if count == 1 || took < self.min {
-            self.min = took;
-        }
-        self.max = self.max.max(took);
-        // Running mean without overflow: mean += (x - mean) / n.
-        let n = count.max(1) as f64;
-        let mean = self.mean.as_secs_f64();
-        self.mean = Duration::from_secs_f64(mean + (took.as_secs_f64() - mean) / n);
-        if took > self.period && !self.period.is_zero() {
-            self.overruns += 1;
-        }
-    }
-}
 
 /// The program's view of one cycle.
 ///
@@ -73,20 +40,31 @@ pub struct Context<T> {
     pub inputs_valid: bool,
     /// The bus is not healthy.
     pub bus_fault: bool,
-    /// The bus state (`OP`, ... or `NONE`).
-    pub bus_state: &'static str,
+    /// The bus state ([`BusState::NoBus`] without a bus).
+    pub bus_state: BusState,
 }
 
 impl<T> Context<T> {
     /// A context for unit tests of a tick function: cycle 1, valid inputs, no bus.
     pub fn for_test(gm: T) -> Self {
         Context {
-            gm,
             cycle: 1,
-            stats: CycleStats::default(),
+            ..Context::before_first_cycle(gm, Duration::ZERO)
+        }
+    }
+
+    /// The runtime's context before its first cycle: no cycle done, statistics empty.
+    pub(crate) fn before_first_cycle(gm: T, period: Duration) -> Self {
+        Context {
+            gm,
+            cycle: 0,
+            stats: CycleStats {
+                period,
+                ..CycleStats::default()
+            },
             inputs_valid: true,
             bus_fault: false,
-            bus_state: "NONE",
+            bus_state: BusState::NoBus,
         }
     }
 }

@@ -2,21 +2,26 @@
 //! retained variables.
 
 mod backend;
+mod bus_state;
 mod context;
+mod cycle;
+mod stats;
 
 pub use backend::{IoBackend, IoError, IoStatus, NoIo};
-pub use context::{Context, CycleStats};
+pub use bus_state::BusState;
+pub use context::Context;
+pub use stats::CycleStats;
 
-use crate::retain::{RetainError, RetainReport, RetainStore, RetainWriter};
-use crate::shm::{BUS_STATES, CycleReport, RunState, SharedGlobalMemory, ShmError};
+use cycle::Cycle;
+
+use crate::retain::RetainError;
+use crate::shm::ShmError;
 use plc_core::{Direction, GlobalMemory, IecType, TypeFamily, Value};
 use std::fmt;
-use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::time::{Duration, Instant};
-use zerocopy::{Immutable, IntoBytes};
+use std::time::Duration;
 
 /// Why the runtime stopped with an error.
 #[derive(Debug)]
@@ -218,21 +223,21 @@ pub fn zero_outputs<T: GlobalMemory>(gm: &mut T) {
         if v.direction != Direction::Output {
             continue;
         }
-        let zero = match v.iec_type.family() {
-            TypeFamily::Bool => Value::Bool(false),
-            TypeFamily::Real => Value::Real(0.0),
-            TypeFamily::String => Value::Text(Default::default()),
-            _ if v.iec_type == IecType::String => Value::Text(Default::default()),
-            _ => Value::UInt(0),
-        };
         for e in 0..v.elements() {
-            let _ = gm.set(i, e, zero);
+            // The zero of a variable's own type is always in range, so `set` accepts it.
+            let _ = gm.set(i, e, zero_of(v.iec_type));
         }
     }
 }
 
-fn bus_code(name: &str) -> u8 {
-    BUS_STATES.iter().position(|s| *s == name).unwrap_or(0) as u8
+/// The zero of a type: `false`, 0, 0.0 or "".
+pub(crate) fn zero_of(ty: IecType) -> Value {
+    match ty.family() {
+        TypeFamily::Bool => Value::Bool(false),
+        TypeFamily::Real => Value::Real(0.0),
+        TypeFamily::String => Value::Text(Default::default()),
+        _ => Value::UInt(0),
+    }
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T>
@@ -247,172 +252,9 @@ where
     /// Runs `tick` every period until stopped (handle, signal or `max_cycles`). Returns the
     /// variables as they were at the end.
     pub fn run(self, mut tick: impl FnMut(&mut Context<T>)) -> Result<T, RuntimeError> {
-        let mut s = self.settings;
-        if let Some(p) = s.realtime {
-            set_realtime(p)?;
-        }
-        if s.signals {
-            // Without the handlers Ctrl-C still stops the program, only not cleanly.
-            let _ = s.stop.stop_on_signals();
-        }
-        let mut gm = T::default();
-        let retain = match &s.retain {
-            Some(path) => {
-                let store = RetainStore::new(path);
-                let report: RetainReport = store.load(&mut gm).map_err(RuntimeError::Retain)?;
-                report.log(path);
-                Some(RetainWriter::spawn::<T>(store, s.retain_interval))
-            }
-            None => None,
-        };
-        let mut shm = match &s.segment {
-            Some(name) => Some(SharedGlobalMemory::<T>::create(name).map_err(RuntimeError::Shm)?),
-            None => None,
-        };
-        let mut ctx = Context::for_test(gm);
-        ctx.cycle = 0;
-        ctx.stats.period = s.period;
-        // On a cache line: the image type has alignment 1, and the word copies into shared
-        // memory cost up to three times as much from a buffer that straddles lines.
-        let mut image_buf = Box::new(Aligned(ctx.gm.to_image()));
-        let image = &mut image_buf.0;
-        let mut retained = RetainedBytes::new::<T>(image);
-        // The initial and restored values go out before the bus starts (which can take
-        // seconds): a tool attaching meanwhile reads them, not a zeroed image.
-        if let Some(shm) = &shm {
-            // Cannot fail: the runtime created the segment, so it is its owner.
-            let _ = shm.publish_image(image);
-        }
-        s.backend.start().map_err(RuntimeError::Io)?;
-        if let Some(shm) = &shm {
-            shm.set_run_state(RunState::Running);
-        }
-        let mut next = Instant::now();
-        let result = loop {
-            if s.stop.is_stopped() || s.max_cycles.is_some_and(|m| ctx.cycle >= m) {
-                break Ok(());
-            }
-            let start = Instant::now();
-            ctx.cycle += 1;
-            let io = s.backend.exchange(&mut ctx.gm);
-            ctx.inputs_valid = io.inputs_valid;
-            ctx.bus_fault = io.bus_fault;
-            ctx.bus_state = io.bus_state;
-            ctx.gm.unpack_bits();
-            if let Some(shm) = shm.as_mut() {
-                shm.apply_mailbox(&mut ctx.gm);
-            }
-            if let Err(panic) = catch_unwind(AssertUnwindSafe(|| tick(&mut ctx))) {
-                let message = panic
-                    .downcast_ref::<&str>()
-                    .map(|s| s.to_string())
-                    .or_else(|| panic.downcast_ref::<String>().cloned())
-                    .unwrap_or_else(|| "(no message)".into());
-                zero_outputs(&mut ctx.gm);
-                ctx.gm.pack_bits();
-                s.backend.fault(&mut ctx.gm);
-                if let Some(shm) = &shm {
-                    let _ = shm.publish(&ctx.gm);
-                    shm.set_run_state(RunState::Faulted);
-                }
-                break Err(RuntimeError::Panicked {
-                    cycle: ctx.cycle,
-                    message,
-                });
-            }
-            ctx.gm.pack_bits();
-            ctx.gm.store_image(image);
-            if let Some(shm) = &shm {
-                let _ = shm.publish_image(image); // the owner's: cannot fail
-            }
-            if let Some(writer) = &retain
-                && retained.changed(image)
-            {
-                writer.offer(*image);
-            }
-            let took = start.elapsed();
-            ctx.stats.add(took, ctx.cycle);
-            if let Some(shm) = &shm {
-                shm.report(&CycleReport {
-                    period: s.period,
-                    cycle_count: ctx.cycle,
-                    last: ctx.stats.last,
-                    min: ctx.stats.min,
-                    max: ctx.stats.max,
-                    mean: ctx.stats.mean,
-                    overruns: ctx.stats.overruns,
-                    bus_state: bus_code(io.bus_state),
-                    bus_fault: io.bus_fault,
-                    inputs_valid: io.inputs_valid,
-                });
-            }
-            next += s.period;
-            let now = Instant::now();
-            if next > now {
-                std::thread::sleep(next - now);
-            } else {
-                // Late: start the next cycle now, from now (no burst of catch-up cycles).
-                next = now;
-            }
-        };
-        s.backend.stop();
-        if let Some(writer) = retain {
-            // `image` is the last completed cycle's. After a panic `gm` holds a half-done tick
-            // and zeroed outputs, which must not become the values the next start restores.
-            writer.finish(Some(*image));
-        }
-        if let Some(shm) = &shm {
-            shm.set_run_state(if result.is_ok() {
-                RunState::Stopped
-            } else {
-                RunState::Faulted
-            });
-        }
-        drop(shm);
-        result.map(|()| ctx.gm)
-    }
-}
-
-/// An image on a cache-line boundary.
-#[repr(C, align(64))]
-struct Aligned<I>(I);
-
-/// The image bytes of the nonvolatile variables as last handed to the retain writer, to notice
-/// a change without decoding. Their ranges are found once, so a cycle compares bytes in place
-/// and neither walks `VARIABLES` nor allocates.
-struct RetainedBytes {
-    ranges: Vec<std::ops::Range<usize>>,
-    last: Vec<u8>,
-}
-
-impl RetainedBytes {
-    fn new<T: GlobalMemory>(image: &T::Image) -> Self {
-        let ranges: Vec<_> = T::VARIABLES
-            .iter()
-            .filter(|v| v.nonvolatile)
-            .map(|v| v.offset..v.offset + v.size)
-            .collect();
-        let bytes = image.as_bytes();
-        let last = ranges
-            .iter()
-            .flat_map(|r| bytes[r.clone()].iter().copied())
-            .collect();
-        RetainedBytes { ranges, last }
-    }
-
-    /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).
-    fn changed<I: IntoBytes + Immutable>(&mut self, image: &I) -> bool {
-        let bytes = image.as_bytes();
-        let mut at = 0;
-        let mut changed = false;
-        for r in &self.ranges {
-            let (now, was) = (&bytes[r.clone()], &mut self.last[at..at + r.len()]);
-            if now != was {
-                was.copy_from_slice(now);
-                changed = true;
-            }
-            at += r.len();
-        }
-        changed
+        let mut settings = self.settings;
+        let mut cycle = Cycle::start(&mut settings)?;
+        let result = cycle.repeat(&mut settings, &mut tick);
+        cycle.stop(&mut *settings.backend, result)
     }
 }

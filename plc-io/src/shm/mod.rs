@@ -21,7 +21,7 @@
 //! before use, and each mailbox request is checked again against the program's own declaration.
 
 mod bytes;
-mod codec;
+pub(crate) mod codec;
 mod descriptor;
 mod dynamic;
 mod error;
@@ -37,7 +37,7 @@ pub use dynamic::DynSegment;
 pub use error::ShmError;
 pub use owner::SharedGlobalMemory;
 pub use segment::normalise as normalise_name;
-pub use status::{BUS_STATES, CycleReport, OwnerState, RunState, Status};
+pub use status::{OwnerState, RunState, Status};
 
 /// A running (or left behind) segment, as `plc list` shows it.
 #[derive(Clone, Debug)]

@@ -6,9 +6,10 @@ use super::error::not_writable_reason;
 use super::layout::*;
 use super::mailbox::{self, Consumer, Rejection, Request};
 use super::segment::{self, Segment};
-use super::status::{CycleReport, OwnerState, RunState, Status, now_ns, write_report};
+use super::status::{OwnerState, RunState, Status, now_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
+use crate::runtime::{CycleStats, IoStatus};
 use plc_core::{GlobalMemory, Value};
 use std::marker::PhantomData;
 use std::mem::size_of;
@@ -238,10 +239,10 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         n
     }
 
-    /// Publishes the cycle figures and a heartbeat (owner only).
-    pub fn report(&self, report: &CycleReport) {
+    /// Publishes the figures of cycle `cycle_count` and a heartbeat (owner only).
+    pub fn report(&self, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
         if self.is_owner() {
-            write_report(&self.view.base, report);
+            write_report(&self.view.base, cycle_count, stats, io);
         }
     }
 

@@ -1,6 +1,7 @@
 //! The status block: what the owner reports about its cycle, and the one owner state tools show.
 
 use super::layout::*;
+use crate::runtime::{BusState, CycleStats, IoStatus};
 use std::fmt;
 use std::time::Duration;
 
@@ -62,18 +63,6 @@ impl fmt::Display for OwnerState {
     }
 }
 
-/// Names of bus states, by code (the runtime stores the code).
-pub const BUS_STATES: [&str; 8] = [
-    "NONE",
-    "STOPPED",
-    "INIT",
-    "PRE-OP",
-    "SAFE-OP",
-    "OP",
-    "MIXED",
-    "NO-ANSWER",
-];
-
 /// Bus flag: the bus is faulty.
 pub const BUS_FAULT: u64 = 1;
 /// Bus flag: this cycle's inputs are valid.
@@ -86,22 +75,12 @@ pub struct Status {
     pub pid: u64,
     /// The owner's own account.
     pub run_state: RunState,
-    /// Cycle period.
-    pub period: Duration,
     /// Cycles done.
     pub cycle_count: u64,
-    /// Last cycle's working time.
-    pub last: Duration,
-    /// Shortest cycle.
-    pub min: Duration,
-    /// Longest cycle.
-    pub max: Duration,
-    /// Mean cycle.
-    pub mean: Duration,
-    /// Cycles that overran the period.
-    pub overruns: u64,
-    /// Bus state name (`OP`, `SAFE-OP`, ... or `NONE` without a bus).
-    pub bus_state: &'static str,
+    /// The period and the cycle times, as the owner's program sees them.
+    pub stats: CycleStats,
+    /// The bus state ([`BusState::NoBus`] without a bus).
+    pub bus_state: BusState,
     /// The bus is faulty.
     pub bus_fault: bool,
     /// This cycle's inputs are valid.
@@ -154,17 +133,16 @@ impl Status {
         Status {
             pid: base.load(S_PID),
             run_state: Self::read_run_state(base),
-            period: d(S_PERIOD_NS),
             cycle_count: base.load(S_CYCLES),
-            last: d(S_LAST_NS),
-            min: d(S_MIN_NS),
-            max: d(S_MAX_NS),
-            mean: d(S_MEAN_NS),
-            overruns: base.load(S_OVERRUNS),
-            bus_state: BUS_STATES
-                .get(base.load(S_BUS_STATE) as usize)
-                .copied()
-                .unwrap_or("NONE"),
+            stats: CycleStats {
+                period: d(S_PERIOD_NS),
+                last: d(S_LAST_NS),
+                min: d(S_MIN_NS),
+                max: d(S_MAX_NS),
+                mean: d(S_MEAN_NS),
+                overruns: base.load(S_OVERRUNS),
+            },
+            bus_state: BusState::from_code(base.load(S_BUS_STATE)),
             bus_fault: flags & BUS_FAULT != 0,
             inputs_valid: flags & INPUTS_VALID != 0,
             heartbeat_age: Duration::from_nanos(now_ns().saturating_sub(base.load(S_HEARTBEAT_NS))),
@@ -187,7 +165,7 @@ impl Status {
             RunState::Stopped => OwnerState::Stopped,
             _ => {
                 // Stalled: no heartbeat for ten periods, and at least half a second.
-                let limit = (self.period * 10).max(Duration::from_millis(500));
+                let limit = (self.stats.period * 10).max(Duration::from_millis(500));
                 if self.heartbeat_age > limit {
                     OwnerState::Stalled
                 } else {
@@ -198,41 +176,18 @@ impl Status {
     }
 }
 
-/// Cycle figures the owner publishes each cycle.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct CycleReport {
-    /// Cycle period.
-    pub period: Duration,
-    /// Cycles done.
-    pub cycle_count: u64,
-    /// Last cycle's working time.
-    pub last: Duration,
-    /// Shortest.
-    pub min: Duration,
-    /// Longest.
-    pub max: Duration,
-    /// Mean.
-    pub mean: Duration,
-    /// Overruns.
-    pub overruns: u64,
-    /// Bus state code (index into [`BUS_STATES`]).
-    pub bus_state: u8,
-    /// Bus faulty.
-    pub bus_fault: bool,
-    /// Inputs valid.
-    pub inputs_valid: bool,
-}
-
-pub(crate) fn write_report(base: &Base, r: &CycleReport) {
-    base.store(S_PERIOD_NS, r.period.as_nanos() as u64);
-    base.store(S_CYCLES, r.cycle_count);
-    base.store(S_LAST_NS, r.last.as_nanos() as u64);
-    base.store(S_MIN_NS, r.min.as_nanos() as u64);
-    base.store(S_MAX_NS, r.max.as_nanos() as u64);
-    base.store(S_MEAN_NS, r.mean.as_nanos() as u64);
-    base.store(S_OVERRUNS, r.overruns);
-    base.store(S_BUS_STATE, r.bus_state as u64);
-    let flags = (r.bus_fault as u64 * BUS_FAULT) | (r.inputs_valid as u64 * INPUTS_VALID);
+/// Stores one cycle's figures and a heartbeat.
+pub(crate) fn write_report(base: &Base, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
+    let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
+    base.store(S_PERIOD_NS, ns(stats.period));
+    base.store(S_CYCLES, cycle_count);
+    base.store(S_LAST_NS, ns(stats.last));
+    base.store(S_MIN_NS, ns(stats.min));
+    base.store(S_MAX_NS, ns(stats.max));
+    base.store(S_MEAN_NS, ns(stats.mean));
+    base.store(S_OVERRUNS, stats.overruns);
+    base.store(S_BUS_STATE, u64::from(io.bus_state.code()));
+    let flags = (io.bus_fault as u64 * BUS_FAULT) | (io.inputs_valid as u64 * INPUTS_VALID);
     base.store(S_BUS_FLAGS, flags);
     base.store(S_HEARTBEAT_NS, now_ns());
 }

@@ -39,13 +39,13 @@ const STEPS_PER_ATTEMPT: usize = 5;
 
 /// The registers ethercrab configured on one SubDevice, read back once it reached OP.
 #[derive(Clone, Debug)]
-pub(super) struct Configured {
+pub(in crate::ethercat) struct Configured {
     /// Ring position.
-    pub(super) position: u16,
+    pub(in crate::ethercat) position: u16,
     /// Station address ethercrab gave it.
-    pub(super) address: u16,
+    pub(in crate::ethercat) address: u16,
     /// Its name as ethercrab read it from the EEPROM (the model, e.g. "EL2004").
-    pub(super) model: String,
+    pub(in crate::ethercat) model: String,
     /// Vendor and product ethercrab read at start-up, checked again after a restart.
     identity: (u32, u32),
     /// Enabled SyncManagers: register address and the 8 bytes ethercrab wrote.
@@ -56,7 +56,7 @@ pub(super) struct Configured {
 
 impl Configured {
     /// Reads the enabled SyncManagers and FMMUs of the SubDevice at `address`.
-    pub(super) async fn read(
+    pub(in crate::ethercat) async fn read(
         md: &MainDevice<'_>,
         position: u16,
         address: u16,
@@ -111,7 +111,7 @@ impl Configured {
 
 /// Where one SubDevice stands after a recovery attempt.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(super) enum Outcome {
+pub(in crate::ethercat) enum Outcome {
     /// In OP without error.
     Op,
     /// Not in OP yet; the text says what it is and what was done.
@@ -122,7 +122,7 @@ pub(super) enum Outcome {
 
 /// One attempt to bring the SubDevice `dev` back to OP (see the module documentation).
 /// `eeprom_timeout` bounds the EEPROM reads that check a restarted device's identity.
-pub(super) async fn attempt(
+pub(in crate::ethercat) async fn attempt(
     md: &MainDevice<'_>,
     dev: &Configured,
     eeprom_timeout: Duration,

@@ -1,0 +1,291 @@
+//! The steps of [`Runtime::run`](super::Runtime::run): start, one cycle repeated at the period,
+//! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
+
+use super::{
+    Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
+};
+use crate::retain::{RetainStore, RetainWriter};
+use crate::shm::{RunState, SharedGlobalMemory};
+use plc_core::GlobalMemory;
+use std::any::Any;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::time::{Duration, Instant};
+use zerocopy::{Immutable, IntoBytes};
+
+/// What a running program owns besides its settings.
+pub(super) struct Cycle<T: GlobalMemory + 'static>
+where
+    T::Image: Send,
+{
+    ctx: Context<T>,
+    /// The last completed cycle's image. On a cache line: the image type has alignment 1, and
+    /// the word copies into shared memory cost up to three times as much from a buffer that
+    /// straddles lines.
+    image: Box<Aligned<T::Image>>,
+    retained: RetainedBytes,
+    retain: Option<RetainWriter<T::Image>>,
+    shm: Option<SharedGlobalMemory<T>>,
+}
+
+impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
+where
+    T::Image: Send,
+{
+    /// Realtime priority and signals as asked, retained values loaded, the segment created
+    /// and the initial image published, then the I/O started.
+    pub(super) fn start(s: &mut RuntimeBuilder<T>) -> Result<Self, RuntimeError> {
+        if let Some(p) = s.realtime {
+            set_realtime(p)?;
+        }
+        if s.signals
+            && let Err(e) = s.stop.stop_on_signals()
+        {
+            // Ctrl-C still ends the program, only without the clean stop.
+            log::warn!("Ctrl-C and SIGTERM will end the program without a clean stop: {e}");
+        }
+        let mut gm = T::default();
+        let retain = match &s.retain {
+            Some(path) => {
+                let store = RetainStore::new(path);
+                let report = store.load(&mut gm).map_err(RuntimeError::Retain)?;
+                report.log(path);
+                Some(RetainWriter::spawn::<T>(store, s.retain_interval))
+            }
+            None => None,
+        };
+        let shm = match &s.segment {
+            Some(name) => Some(SharedGlobalMemory::<T>::create(name).map_err(RuntimeError::Shm)?),
+            None => None,
+        };
+        let image = Box::new(Aligned(gm.to_image()));
+        let cycle = Cycle {
+            retained: RetainedBytes::new::<T>(&image.0),
+            ctx: Context::before_first_cycle(gm, s.period),
+            image,
+            retain,
+            shm,
+        };
+        // The initial and restored values go out before the bus starts (which can take
+        // seconds): a tool attaching meanwhile reads them, not a zeroed image.
+        cycle.publish_image();
+        s.backend.start().map_err(RuntimeError::Io)?;
+        if let Some(shm) = &cycle.shm {
+            shm.set_run_state(RunState::Running);
+        }
+        Ok(cycle)
+    }
+
+    /// Cycles every period until a stop is asked for, `max_cycles` are done or the tick
+    /// panics. A late cycle is followed at once by the next, timed from then: no burst of
+    /// catch-up cycles.
+    pub(super) fn repeat(
+        &mut self,
+        s: &mut RuntimeBuilder<T>,
+        tick: &mut impl FnMut(&mut Context<T>),
+    ) -> Result<(), RuntimeError> {
+        let mut next = Instant::now();
+        while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
+            self.once(&mut *s.backend, tick)?;
+            next += s.period;
+            let now = Instant::now();
+            if next > now {
+                std::thread::sleep(next - now);
+            } else {
+                next = now;
+            }
+        }
+        Ok(())
+    }
+
+    /// One cycle: exchange, unpack bits, mailbox, tick, pack bits, publish, retain, report.
+    fn once(
+        &mut self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        tick: &mut impl FnMut(&mut Context<T>),
+    ) -> Result<(), RuntimeError> {
+        let start = Instant::now();
+        let ctx = &mut self.ctx;
+        ctx.cycle += 1;
+        let io = backend.exchange(&mut ctx.gm);
+        ctx.inputs_valid = io.inputs_valid;
+        ctx.bus_fault = io.bus_fault;
+        ctx.bus_state = io.bus_state;
+        ctx.gm.unpack_bits();
+        if let Some(shm) = self.shm.as_mut() {
+            shm.apply_mailbox(&mut ctx.gm);
+        }
+        if let Err(panic) = catch_unwind(AssertUnwindSafe(|| tick(ctx))) {
+            return Err(self.fault(backend, panic));
+        }
+        ctx.gm.pack_bits();
+        ctx.gm.store_image(&mut self.image.0);
+        self.publish_image();
+        if let Some(writer) = &self.retain
+            && self.retained.changed(&self.image.0)
+        {
+            writer.offer(self.image.0);
+        }
+        self.report(start.elapsed(), &io);
+        Ok(())
+    }
+
+    /// The tick panicked: outputs to zero, on the bus and in the segment, and the I/O in its
+    /// safe state.
+    fn fault(
+        &mut self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        panic: Box<dyn Any + Send>,
+    ) -> RuntimeError {
+        let message = panic_message(&*panic);
+        let gm = &mut self.ctx.gm;
+        zero_outputs(gm);
+        gm.pack_bits();
+        backend.fault(gm);
+        if let Some(shm) = &self.shm {
+            if let Err(e) = shm.publish(gm) {
+                log::error!(
+                    "segment `{}`: the zeroed outputs were not published: {e}",
+                    shm.name()
+                );
+            }
+            shm.set_run_state(RunState::Faulted);
+        }
+        RuntimeError::Panicked {
+            cycle: self.ctx.cycle,
+            message,
+        }
+    }
+
+    /// The I/O stopped, the last completed cycle's retained values saved, the segment marked
+    /// stopped (or faulted) and removed; the variables, or the error `repeat` ended with.
+    pub(super) fn stop(
+        self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        result: Result<(), RuntimeError>,
+    ) -> Result<T, RuntimeError> {
+        backend.stop();
+        if let Some(writer) = self.retain {
+            // The last completed cycle's image. After a panic `gm` holds a half-done tick and
+            // zeroed outputs, which must not become the values the next start restores.
+            writer.finish(Some(self.image.0));
+        }
+        if let Some(shm) = &self.shm {
+            shm.set_run_state(if result.is_ok() {
+                RunState::Stopped
+            } else {
+                RunState::Faulted
+            });
+        }
+        drop(self.shm);
+        result.map(|()| self.ctx.gm)
+    }
+
+    fn publish_image(&self) {
+        if let Some(shm) = &self.shm
+            && let Err(e) = shm.publish_image(&self.image.0)
+        {
+            // The runtime created the segment, so it owns it and the publish succeeds; were
+            // that ever not so, tools would see stale values: say so rather than hide it.
+            log::error!(
+                "segment `{}`: this cycle's values were not published: {e}",
+                shm.name()
+            );
+        }
+    }
+
+    fn report(&mut self, took: Duration, io: &IoStatus) {
+        self.ctx.stats.add(took, self.ctx.cycle);
+        if let Some(shm) = &self.shm {
+            shm.report(self.ctx.cycle, &self.ctx.stats, io);
+        }
+    }
+}
+
+/// A panic's message, when it has one.
+fn panic_message(panic: &(dyn Any + Send)) -> String {
+    panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "(no message)".into())
+}
+
+/// An image on a cache-line boundary.
+#[repr(C, align(64))]
+struct Aligned<I>(I);
+
+/// The image bytes of the nonvolatile variables as last handed to the retain writer, to notice
+/// a change without decoding. Their ranges are found once, so a cycle compares bytes in place
+/// and neither walks `VARIABLES` nor allocates.
+struct RetainedBytes {
+    ranges: Vec<std::ops::Range<usize>>,
+    last: Vec<u8>,
+}
+
+impl RetainedBytes {
+    fn new<T: GlobalMemory>(image: &T::Image) -> Self {
+        let ranges: Vec<_> = T::VARIABLES
+            .iter()
+            .filter(|v| v.nonvolatile)
+            .map(|v| v.offset..v.offset + v.size)
+            .collect();
+        let bytes = image.as_bytes();
+        let last = ranges
+            .iter()
+            .flat_map(|r| bytes[r.clone()].iter().copied())
+            .collect();
+        RetainedBytes { ranges, last }
+    }
+
+    /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).
+    fn changed<I: IntoBytes + Immutable>(&mut self, image: &I) -> bool {
+        let bytes = image.as_bytes();
+        let mut at = 0;
+        let mut changed = false;
+        for r in &self.ranges {
+            let (now, was) = (&bytes[r.clone()], &mut self.last[at..at + r.len()]);
+            if now != was {
+                was.copy_from_slice(now);
+                changed = true;
+            }
+            at += r.len();
+        }
+        changed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{RetainedBytes, panic_message};
+    use plc_core::GlobalMemory;
+
+    #[derive(GlobalMemory, Clone, Debug)]
+    #[plc(crate = "plc_core")]
+    struct Gm {
+        #[plc(nonvolatile)]
+        kept: u16,
+        scratch: u16,
+    }
+
+    #[test]
+    fn only_a_change_of_a_nonvolatile_variable_counts() {
+        let mut gm = Gm::default();
+        let mut retained = RetainedBytes::new::<Gm>(&gm.to_image());
+        gm.scratch = 5;
+        assert!(!retained.changed(&gm.to_image()));
+        gm.kept = 1;
+        assert!(retained.changed(&gm.to_image()));
+        assert!(
+            !retained.changed(&gm.to_image()),
+            "the change is remembered"
+        );
+    }
+
+    #[test]
+    fn panic_messages_of_both_kinds_are_read() {
+        let text = std::panic::catch_unwind(|| panic!("at {}", 3)).unwrap_err();
+        assert_eq!(panic_message(&*text), "at 3");
+        let literal = std::panic::catch_unwind(|| panic!("plain")).unwrap_err();
+        assert_eq!(panic_message(&*literal), "plain");
+    }
+}
