@@ -40,8 +40,9 @@ fn the_generated_struct_works() {
 }
 
 /// The rows of a CSV table, each as column -> cell, with what the export writes differently
-/// filled in: string capacity 64 where none is given, and a description's lines joined by a
-/// space as the derive joins a doc comment's.
+/// filled in: string capacity 64 where none is given, a description's lines joined by a
+/// space as the derive joins a doc comment's, and the columns a table leaves out as empty
+/// cells (a spreadsheet made before the `ux` and `quantity` columns).
 fn csv_rows(text: &str) -> Vec<BTreeMap<String, String>> {
     let mut r = csv::Reader::from_reader(text.as_bytes());
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
@@ -52,6 +53,9 @@ fn csv_rows(text: &str) -> Vec<BTreeMap<String, String>> {
                 .cloned()
                 .zip(rec.unwrap().iter().map(String::from))
                 .collect();
+            for col in plc_io::import::COLUMNS {
+                row.entry(col.to_string()).or_default();
+            }
             if row["type"] == "string" && row["max_length"].is_empty() {
                 row.insert("max_length".into(), "64".into());
             }

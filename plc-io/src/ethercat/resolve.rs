@@ -103,7 +103,11 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
                 continue;
             }
         };
-        if !layout.names.iter().any(|n| n == parsed.device) {
+        if !layout
+            .names
+            .iter()
+            .any(|n| n.eq_ignore_ascii_case(parsed.device))
+        {
             problem(format!(
                 "the bus has no device `{}`: use one of {} or add the device to the bus \
                  description",
@@ -116,7 +120,7 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
             let names: Vec<&str> = layout
                 .entries
                 .iter()
-                .filter(|e| layout.names[e.device] == parsed.device)
+                .filter(|e| layout.names[e.device].eq_ignore_ascii_case(parsed.device))
                 .map(|e| e.name.as_str())
                 .collect();
             problem(if names.is_empty() {
@@ -253,7 +257,7 @@ fn list<'a>(names: impl Iterator<Item = &'a str>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ethercat::{BusConfig, devices};
+    use crate::ethercat::{BusConfig, PdoEntry, devices};
     use plc_core::__private::{VarInfoParts, var_info};
     use plc_core::Access;
 
@@ -297,6 +301,47 @@ mod tests {
                 devices::el2889("dq").grouped(PdoDirection::Output, "word", IecType::Uint),
             ],
         })
+    }
+
+    /// Links compare case-insensitively, as the framework's tools compare them: one entry by two
+    /// spellings is one entry, so two writers of it are refused.
+    #[test]
+    fn links_that_differ_only_in_case_are_one_link() {
+        let vars = [
+            var("a", IecType::Bool, Direction::Input, "ethercat.DI.Input2"),
+            var("b", IecType::Bool, Direction::Input, "ethercat.di.input2"),
+        ];
+        let b = resolve_vars(&vars, &layout()).unwrap();
+        assert_eq!(b[0].entry, b[1].entry);
+        assert_problems(
+            &[
+                var("w", IecType::Uint, Direction::Output, "ethercat.dq.word"),
+                var("v", IecType::Uint, Direction::Output, "ethercat.DQ.Word"),
+            ],
+            &["`w` is written to this output entry already"],
+        );
+    }
+
+    /// An entry named by a dotted path, as the framework's motion axes name theirs.
+    #[test]
+    fn an_entry_path_of_several_parts_resolves() {
+        let mut axis = devices::el1004("motion");
+        axis.entries = vec![
+            PdoEntry::new("x.position", PdoDirection::Input, 16, IecType::Int),
+            PdoEntry::new("x.actual_velocity", PdoDirection::Input, 16, IecType::Int),
+        ];
+        let bus = BusConfig {
+            devices: vec![devices::ek1100("coupler"), axis],
+        };
+        bus.validate().unwrap();
+        let vars = [var(
+            "v",
+            IecType::Dint,
+            Direction::Input,
+            "ethercat.motion.x.actual_velocity",
+        )];
+        let b = resolve_vars(&vars, &BusLayout::new(&bus)).unwrap();
+        assert_eq!((b[0].entry.bit_offset, b[0].entry.bits), (16, 16));
     }
 
     #[test]

@@ -246,8 +246,9 @@ impl Reader<'_> {
         Some(Located::new(initial, self.at("initial")))
     }
 
-    /// `source` and `bit`, each checked on its own so that both mistakes show. When either is
-    /// malformed neither is kept, so the other is not also told it lacks its partner.
+    /// `source` and `bit`, each checked on its own so that both mistakes show. A malformed one
+    /// (reported here) still counts as given: its partner is not told it lacks it, and alone
+    /// it is still told it lacks its partner (through a stand-in the checker takes as valid).
     #[allow(clippy::type_complexity)]
     fn source_and_bit(
         &mut self,
@@ -273,7 +274,9 @@ impl Reader<'_> {
             }
         });
         match (source, bit) {
-            (Some(None), _) | (_, Some(None)) => (None, None),
+            (Some(_), Some(None)) | (Some(None), Some(_)) => (None, None),
+            (Some(None), None) => (Some(Located::new(String::new(), self.at("source"))), None),
+            (None, Some(None)) => (None, Some(Located::new(0, self.at("bit")))),
             (s, b) => (s.flatten(), b.flatten()),
         }
     }
