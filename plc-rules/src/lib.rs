@@ -21,6 +21,8 @@
 
 pub mod access;
 pub mod address;
+#[cfg(feature = "bus")]
+pub mod bus;
 pub mod capacity;
 #[cfg(feature = "std")]
 pub mod decl;

@@ -44,7 +44,7 @@
 mod backend;
 mod bringup;
 pub mod config;
-pub mod devices;
+pub use plc_rules::bus::devices;
 mod error;
 mod io_backend;
 pub mod layout;
@@ -64,13 +64,7 @@ pub use options::{DriverFn, DriverGuard, InputsOnFault, Options, Transport};
 pub use resolve::{Binding, ResolveError};
 pub use status::BusStatus;
 
-/// Most SubDevices on one bus (ethercrab's const-generic `MAX_SUBDEVICES`). A larger
-/// description is refused with a clear error.
-pub const MAX_SUBDEVICES: usize = 16;
-
-/// Most bytes of process data, inputs and outputs together (ethercrab's const-generic
-/// `MAX_PDI`). A larger description is refused with a clear error.
-pub const MAX_PDI: usize = 1024;
+pub use plc_rules::bus::{MAX_PDI, MAX_SUBDEVICES};
 
 /// Frames ethercrab may have in flight.
 const MAX_FRAMES: usize = 16;

@@ -5,16 +5,28 @@
 //! and ESI files repeat names ("Output" eight times), so the description names every entry
 //! itself, as a configurator would. The file is TOML or JSON; see [`BusConfig`].
 
-use plc_core::IecType;
+use crate::IecType;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::path::Path;
 
+pub mod devices;
 mod hex;
+pub mod layout;
 mod validate;
 
+pub use layout::{BusLayout, EntryLayout, LayoutError};
+
 use hex::{hex_u32, hex_u32_opt};
+
+/// Most SubDevices on one bus (ethercrab's const-generic `MAX_SUBDEVICES`, which plc-io is
+/// built with). A larger description is refused with a clear error.
+pub const MAX_SUBDEVICES: usize = 16;
+
+/// Most bytes of process data, inputs and outputs together (ethercrab's const-generic
+/// `MAX_PDI`, which plc-io is built with). A larger description is refused with a clear error.
+pub const MAX_PDI: usize = 1024;
 
 /// A bus description: the SubDevices in ring order (position 0 is the one next to the
 /// MainDevice).
@@ -22,7 +34,7 @@ use hex::{hex_u32, hex_u32_opt};
 /// TOML (numbers may be hexadecimal; `revision` is optional, and when given must match):
 ///
 /// ```
-/// use plc_io::ethercat::BusConfig;
+/// use plc_rules::bus::BusConfig;
 /// let bus = BusConfig::from_toml_str(r#"
 ///     [[devices]]
 ///     name = "coupler"
@@ -43,7 +55,7 @@ use hex::{hex_u32, hex_u32_opt};
 /// `"0x044c2c52"`:
 ///
 /// ```
-/// use plc_io::ethercat::BusConfig;
+/// use plc_rules::bus::BusConfig;
 /// let bus = BusConfig::from_json_str(r#"{ "devices": [
 ///     { "name": "coupler", "identity": { "vendor": 2, "product": "0x044c2c52" } }
 /// ] }"#).unwrap();
@@ -52,7 +64,7 @@ use hex::{hex_u32, hex_u32_opt};
 ///
 /// Every problem of a description is reported at once ([`ConfigError`]): names that are not
 /// identifiers or repeat, an entry wider than its type, a bus beyond the caps
-/// ([`MAX_SUBDEVICES`](super::MAX_SUBDEVICES), [`MAX_PDI`](super::MAX_PDI)).
+/// ([`MAX_SUBDEVICES`], [`MAX_PDI`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BusConfig {
@@ -328,8 +340,8 @@ mod tests {
     fn toml_round_trips() {
         let bus = BusConfig {
             devices: vec![
-                crate::ethercat::devices::ek1100("coupler"),
-                crate::ethercat::devices::el1004("inputs").grouped(
+                crate::bus::devices::ek1100("coupler"),
+                crate::bus::devices::el1004("inputs").grouped(
                     PdoDirection::Input,
                     "digital_inputs",
                     IecType::Uint,

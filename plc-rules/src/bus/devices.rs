@@ -7,8 +7,8 @@
 //! of one direction into one word, as the JSON variable-list format's impact67 `digital_inputs`.
 //!
 //! ```
-//! use plc_io::ethercat::{devices, BusConfig, PdoDirection};
-//! use plc_core::IecType;
+//! use plc_rules::bus::{devices, BusConfig, PdoDirection};
+//! use plc_rules::IecType;
 //! let bus = BusConfig {
 //!     devices: vec![
 //!         devices::ek1100("coupler"),
@@ -21,8 +21,8 @@
 //! assert_eq!(bus.devices[2].entries[15].name, "output16");
 //! ```
 
-use super::config::{DeviceConfig, Identity, PdoDirection, PdoEntry};
-use plc_core::IecType;
+use super::{DeviceConfig, Identity, PdoDirection, PdoEntry};
+use crate::IecType;
 
 /// Beckhoff's EtherCAT vendor id.
 pub const BECKHOFF: u32 = 0x0000_0002;

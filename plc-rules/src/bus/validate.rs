@@ -1,8 +1,8 @@
 //! The checks of a bus description: every problem at once, each naming the device and entry.
 
 use super::{BusConfig, ConfigError, DeviceConfig, PdoDirection, PdoEntry};
-use crate::ethercat::{MAX_PDI, MAX_SUBDEVICES};
-use plc_core::TypeFamily;
+use super::{MAX_PDI, MAX_SUBDEVICES};
+use crate::TypeFamily;
 
 impl BusConfig {
     /// Checks the description; every problem at once. The parsers call it; call it yourself for
@@ -23,7 +23,7 @@ impl BusConfig {
             ));
         }
         for (pos, d) in self.devices.iter().enumerate() {
-            if !plc_rules::link::is_identifier(&d.name) {
+            if !crate::link::is_identifier(&d.name) {
                 problems.push(format!(
                     "device {pos}: name `{}` is not an identifier (letters, digits, underscores, \
                      not starting with a digit), so no link can name it: rename it, e.g. `el1004_0`",
@@ -89,7 +89,7 @@ fn check_entry(
     problems: &mut Vec<String>,
 ) {
     let at = format!("device {pos} (`{}`), entry `{}`", d.name, e.name);
-    if !plc_rules::link::is_entry_path(&e.name) {
+    if !crate::link::is_entry_path(&e.name) {
         problems.push(format!(
             "{at}: the name is not an identifier, or identifiers joined by dots (letters, \
              digits, underscores, not starting with a digit): rename it, e.g. `output1` or \
@@ -192,7 +192,7 @@ mod tests {
     fn a_bus_beyond_the_caps_is_refused() {
         let bus = BusConfig {
             devices: (0..MAX_SUBDEVICES + 1)
-                .map(|i| crate::ethercat::devices::el2889(&format!("do{i}")))
+                .map(|i| crate::bus::devices::el2889(&format!("do{i}")))
                 .collect(),
         };
         let err = bus.validate().unwrap_err().to_string();
