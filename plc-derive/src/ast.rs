@@ -51,6 +51,8 @@ pub struct Container<'a> {
     /// The declaration model of the struct, one variable per field, that `check` applies the
     /// rules to.
     pub decl: Decl<Loc>,
+    /// `bus = "..."`: the bus description the links are checked against.
+    pub bus: Option<At<String>>,
 }
 
 impl Container<'_> {
@@ -148,7 +150,12 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
     let mut krate = quote!(::plc_core);
     let mut little_endian = false;
     let mut unaligned = false;
+    let mut bus = None;
     if let Some(c) = container {
+        bus = c
+            .bus
+            .as_ref()
+            .map(|b| At::new(b.to_string(), Loc::Span(b.span())));
         if let Some(path) = c.krate {
             let path = path.as_ref();
             krate = quote!(#path);
@@ -182,6 +189,7 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
             vars: decl_vars,
             unaligned,
         },
+        bus,
     })
 }
 

@@ -17,6 +17,8 @@ pub struct ContainerAttr {
     pub byte_order: Option<SpannedValue<String>>,
     /// `unaligned`: located W/D/L variables may sit at any byte offset.
     pub unaligned: Switch,
+    /// `bus = "bus/machine.toml"`: check every link against this bus description.
+    pub bus: Option<SpannedValue<String>>,
 }
 
 /// `#[plc(...)]` on a field.

@@ -9,6 +9,7 @@
 mod agreement;
 mod ast;
 mod attr;
+mod bus;
 mod check;
 mod ctxt;
 mod expand;

@@ -13,7 +13,7 @@ pub fn field_keys() -> impl Iterator<Item = &'static str> {
 }
 
 /// Container keys.
-pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned"];
+pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned", "bus"];
 
 /// What a key's value looks like, for "wrong kind of value" messages.
 pub fn expects(key: &str) -> Option<&'static str> {
@@ -29,6 +29,7 @@ pub fn expects(key: &str) -> Option<&'static str> {
         "quantity" => "a string such as \"force\"",
         "crate" => "a path as a string, such as \"::plc_core\"",
         "byte_order" => "\"little\" or \"big\"",
+        "bus" => "the path of a bus description as a string, such as \"bus/machine.toml\"",
         _ => return None,
     })
 }

@@ -44,8 +44,10 @@ pub fn sim_transport(bus: SimBus) -> Transport {
     Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)))
 }
 
-/// The tensile tester's variables.
+/// The tensile tester's variables. Every link is checked against the bus description while
+/// compiling: a typo in one is a compile error under it.
 #[derive(GlobalMemory, Debug, Clone)]
+#[plc(bus = "bus/tensile_tester.toml")]
 pub struct Gm {
     /// impact67 input word (the EL1004 on the simulated bus)
     #[plc(link = "ethercat.impact67_0.digital_inputs", direction = "input")]

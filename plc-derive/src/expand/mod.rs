@@ -28,6 +28,8 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         return cx.into_tokens();
     };
     check::check(&mut c, &mut cx);
+    let bus_file = crate::bus::check(&c, &mut cx);
+    let tracked = crate::bus::track(bus_file.as_ref());
     // Type-dependent checks run whatever else failed, so all mistakes show at once.
     let asserts = asserts::expand(&c);
     if cx.has_errors() {
@@ -39,7 +41,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
         let errors = cx.into_tokens();
         return quote! {
             #errors
-            const _: () = { #asserts #fallback };
+            const _: () = { #tracked #asserts #fallback };
         };
     }
     let body = [
@@ -57,6 +59,7 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let image_struct = image::image_struct(&c);
     quote! {
         const _: () = {
+            #tracked
             #image_struct
             #asserts
 

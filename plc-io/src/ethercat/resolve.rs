@@ -1,22 +1,10 @@
-//! Link resolution: every `link = "ethercat.<device>.<entry>"` of a `GlobalMemory` type turned
-//! into a place in a SubDevice's process data, with every problem reported at once.
-//!
-//! Rules:
-//! - the device and the entry must exist in the bus description;
-//! - directions: an input entry feeds a variable declared `direction = "input"`, an output
-//!   entry is fed by one declared `direction = "output"`; a linked variable left `internal`
-//!   (the default, e.g. from a JSON variable list, which has no directions) takes the entry's
-//!   direction. `command` and `status` variables cannot be linked.
-//! - types: an input widens from the entry's type to the variable's, an output from the
-//!   variable's type to the entry's, as [`plc_core::convert::can_widen`] allows (IEC 61131-3);
-//! - one variable per output entry (two writers would fight); any number per input entry;
-//! - only scalar variables, not strings or arrays.
+//! Link resolution for a `GlobalMemory` type: its `VARIABLES` put through the bus
+//! description's rules ([`plc_rules::bus::links`], which the derive applies too, while
+//! compiling, to a struct that names its bus description), each good link a [`Binding`].
 
-use super::config::PdoDirection;
 use super::layout::{BusLayout, EntryLayout};
-use plc_core::convert::can_widen;
-use plc_core::{Direction, GlobalMemory, IecType, VarInfo};
-use plc_rules::link::Link;
+use plc_core::{GlobalMemory, IecType, VarInfo};
+use plc_rules::bus::{LinkedVar, resolve_links};
 use std::fmt;
 
 /// One resolved link: a variable and the process data it moves to or from.
@@ -80,186 +68,54 @@ pub fn resolve<T: GlobalMemory>(layout: &BusLayout) -> Result<Vec<Binding>, Reso
 
 /// Resolves the links of a variable list (what [`resolve`] does for `T::VARIABLES`).
 pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>, ResolveError> {
-    let mut bindings: Vec<Binding> = Vec::new();
-    let mut problems = Vec::new();
-    // Every output variable linked to an output entry, whether or not its link has other
-    // problems (its type):
-    // a second writer is reported even when the first one is wrong in another way too, so
-    // the user sees all problems of one run at once.
-    let mut writers: Vec<(usize, usize, &'static str)> = Vec::new();
-    for (index, v) in vars.iter().enumerate() {
-        let Some(link) = v.link else { continue };
-        let mut problem = |message: String| {
-            problems.push(LinkProblem {
-                variable: v.name,
-                link,
-                message,
+    let linked: Vec<Option<LinkedVar>> = vars
+        .iter()
+        .map(|v| {
+            Some(LinkedVar {
+                name: v.name,
+                link: v.link?,
+                iec_type: Some(v.iec_type),
+                array: Some(!v.dims.is_empty()),
+                direction: v.direction,
             })
-        };
-        let parsed = match Link::parse(link) {
-            Ok(l) => l,
-            Err(e) => {
-                problem(e.to_string());
-                continue;
-            }
-        };
-        if !layout
-            .names
-            .iter()
-            .any(|n| n.eq_ignore_ascii_case(parsed.device))
-        {
-            problem(format!(
-                "the bus has no device `{}`: use one of {} or add the device to the bus \
-                 description",
-                parsed.device,
-                list(unique(&layout.names))
-            ));
-            continue;
-        }
-        let Some(entry) = layout.entry(parsed.device, parsed.entry) else {
-            let names: Vec<&str> = layout
-                .entries
-                .iter()
-                .filter(|e| layout.names[e.device].eq_ignore_ascii_case(parsed.device))
-                .map(|e| e.name.as_str())
-                .collect();
-            problem(if names.is_empty() {
-                format!(
-                    "device `{}` has no process data (a coupler?): link an entry of an I/O \
-                     terminal",
-                    parsed.device
-                )
-            } else {
-                format!(
-                    "device `{}` has no entry `{}`: use one of {}",
-                    parsed.device,
-                    parsed.entry,
-                    list(names.iter().copied())
-                )
-            });
-            continue;
-        };
-        if !v.dims.is_empty() || v.iec_type == IecType::String {
-            problem(format!(
-                "only scalar numbers and bools can be linked, this is a {}{}: link a scalar \
-                 variable",
-                v.iec_type,
-                if v.dims.is_empty() { "" } else { " array" }
-            ));
-            continue;
-        }
-        let mut ok = true;
-        let dir_ok = matches!(
-            (entry.direction, v.direction),
-            (PdoDirection::Input, Direction::Input | Direction::Internal)
-                | (
-                    PdoDirection::Output,
-                    Direction::Output | Direction::Internal
-                )
-        );
-        if !dir_ok {
-            ok = false;
-            problem(format!(
-                "`{}` is an {} entry, but the variable is declared `direction = \"{}\"`: \
-                 declare `direction = \"{}\"` or link an {} entry",
-                parsed.entry,
-                entry.direction,
-                v.direction,
-                entry.direction,
-                if entry.direction == PdoDirection::Input {
-                    "output"
-                } else {
-                    "input"
-                }
-            ));
-        }
-        let (from, to) = match entry.direction {
-            PdoDirection::Input => (entry.iec_type, v.iec_type),
-            PdoDirection::Output => (v.iec_type, entry.iec_type),
-        };
-        if !can_widen(from, to) {
-            ok = false;
-            let suggestion = match entry.iec_type {
-                IecType::Bool => "declare it `bool`".to_owned(),
-                t => format!(
-                    "declare it `{}` (or a type it widens {} implicitly)",
-                    t.rust_name(),
-                    if entry.direction == PdoDirection::Input {
-                        "to"
-                    } else {
-                        "from"
-                    }
-                ),
-            };
-            problem(format!(
-                "the variable is {} and the {} entry is {} ({} bit{}); {} does not widen \
-                 implicitly to {} (IEC 61131-3): {suggestion}",
-                v.iec_type,
-                entry.direction,
-                entry.iec_type,
-                entry.bits,
-                if entry.bits == 1 { "" } else { "s" },
-                from,
-                to
-            ));
-        }
-        // A variable declared for the other direction does not write the entry: its problem
-        // is the direction, not a second writer.
-        if entry.direction == PdoDirection::Output && dir_ok {
-            if let Some(&(_, _, other)) = writers
-                .iter()
-                .find(|(d, e, _)| *d == entry.device && *e == entry.entry)
-            {
-                ok = false;
-                problem(format!(
-                    "`{other}` is written to this output entry already: an output has one \
-                     writer; link one variable and copy or bit-map the others from it in the \
-                     program"
-                ));
-            } else {
-                writers.push((entry.device, entry.entry, v.name));
-            }
-        }
-        if ok {
-            bindings.push(Binding {
-                var: index,
+        })
+        .collect();
+    let (entries, issues) = resolve_links(&linked, layout);
+    if !issues.is_empty() {
+        return Err(ResolveError {
+            problems: issues
+                .into_iter()
+                .map(|i| LinkProblem {
+                    variable: vars[i.var].name,
+                    link: vars[i.var].link.unwrap_or_default(),
+                    message: i.message,
+                })
+                .collect(),
+        });
+    }
+    Ok(entries
+        .into_iter()
+        .enumerate()
+        .filter_map(|(var, entry)| {
+            let v = &vars[var];
+            Some(Binding {
+                var,
                 var_name: v.name,
                 var_type: v.iec_type,
-                link,
-                entry: entry.clone(),
-            });
-        }
-    }
-    if problems.is_empty() {
-        Ok(bindings)
-    } else {
-        Err(ResolveError { problems })
-    }
-}
-
-fn unique(names: &[String]) -> impl Iterator<Item = &str> {
-    names
-        .iter()
-        .enumerate()
-        .filter(|(i, n)| *i == 0 || names[i - 1] != **n)
-        .map(|(_, n)| n.as_str())
-}
-
-fn list<'a>(names: impl Iterator<Item = &'a str>) -> String {
-    let names: Vec<String> = names.map(|n| format!("`{n}`")).collect();
-    if names.is_empty() {
-        "(none)".into()
-    } else {
-        names.join(", ")
-    }
+                link: v.link?,
+                entry: entry?,
+            })
+        })
+        .collect())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ethercat::{BusConfig, PdoEntry, devices};
+    use crate::ethercat::{BusConfig, PdoDirection, PdoEntry, devices};
     use plc_core::__private::{VarInfoParts, var_info};
     use plc_core::Access;
+    use plc_core::Direction;
 
     fn var(name: &'static str, ty: IecType, dir: Direction, link: &'static str) -> VarInfo {
         var_info(VarInfoParts {
@@ -438,7 +294,7 @@ mod tests {
             &vars,
             &[
                 "`no_dev` (link `ethercat.nope.input1`): the bus has no device `nope`: use one of `coupler`, `di`, `dq`",
-                "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9`: use one of `input1`, `input2`, `input3`, `input4`",
+                "`no_entry` (link `ethercat.di.input9`): device `di` has no entry `input9` (did you mean `input1`?): use one of `input1`, `input2`, `input3`, `input4`",
                 "`coupler_io` (link `ethercat.coupler.x`): device `coupler` has no process data",
                 "`wrong_dir` (link `ethercat.di.input1`): `input1` is an input entry, but the variable is declared `direction = \"output\"`",
                 "`wrong_type` (link `ethercat.di.input1`): the variable is USINT and the input entry is BOOL (1 bit); BOOL does not widen implicitly to USINT",

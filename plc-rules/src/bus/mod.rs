@@ -14,9 +14,11 @@ use std::path::Path;
 pub mod devices;
 mod hex;
 pub mod layout;
+pub mod links;
 mod validate;
 
 pub use layout::{BusLayout, EntryLayout, LayoutError};
+pub use links::{LinkIssue, LinkedVar, resolve_links};
 
 use hex::{hex_u32, hex_u32_opt};
 
