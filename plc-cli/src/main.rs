@@ -11,6 +11,7 @@
 //! plc export tensile_tester --csv > variables.csv
 //! plc import project.json -o src/gm.rs --struct Gm
 //! plc import --csv variables.csv -o src/gm.rs
+//! plc bus show bus/machine.toml     # the process image of a bus description
 //! ```
 
 mod cmd;
@@ -89,7 +90,7 @@ enum Command {
         project: PathBuf,
         /// Read a CSV table: one row per variable under a header line naming the columns,
         /// RFC 4180 quoting. Columns, in any order:
-        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims
+        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity
         #[arg(long)]
         csv: bool,
         /// Write the module here instead of standard output.
@@ -106,6 +107,21 @@ enum Command {
         /// Write a CSV table instead (the columns `plc import --csv` reads).
         #[arg(long)]
         csv: bool,
+    },
+    /// Bus descriptions.
+    Bus {
+        #[command(subcommand)]
+        command: BusCommand,
+    },
+}
+
+#[derive(Subcommand)]
+enum BusCommand {
+    /// The resolved process image of a bus description: each device's PDO entries with
+    /// direction, byte and bit, width and type, to check against the wiring.
+    Show {
+        /// The bus description (TOML, or JSON if the name ends in .json).
+        file: PathBuf,
     },
 }
 
@@ -148,6 +164,9 @@ fn main() -> ExitCode {
             struct_name,
         } => cmd::import::run(&project, csv, output.as_deref(), &struct_name),
         Command::Export { segment, csv } => cmd::export::run(&segment, csv),
+        Command::Bus {
+            command: BusCommand::Show { file },
+        } => cmd::bus::show(&file),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

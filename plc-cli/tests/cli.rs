@@ -517,3 +517,81 @@ fn csv_export_and_import_agree_with_json() {
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "// old\n");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `plc bus show` prints the process image of the main example's bus description, and names
+/// the file and the problem of one it cannot use.
+#[test]
+fn bus_show_prints_the_process_image_and_refuses_a_bad_file() {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../examples/bus/tensile_tester.toml"
+    );
+    let o = plc(&["bus", "show", file]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = stdout(&o);
+    let rows: Vec<Vec<&str>> = table
+        .lines()
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert_eq!(
+        rows[0],
+        [
+            "pos",
+            "device",
+            "entry",
+            "direction",
+            "byte.bit",
+            "bits",
+            "type"
+        ]
+    );
+    assert!(
+        rows.contains(&vec!["0", "coupler", "(no", "process", "data)"]),
+        "{table}"
+    );
+    assert!(
+        rows.contains(&vec![
+            "1",
+            "impact67_0",
+            "digital_inputs",
+            "input",
+            "0.0",
+            "4",
+            "UINT"
+        ]),
+        "{table}"
+    );
+    assert!(
+        rows.contains(&vec![
+            "2",
+            "impact67_0",
+            "digital_outputs",
+            "output",
+            "0.0",
+            "16",
+            "UINT"
+        ]),
+        "{table}"
+    );
+    assert!(
+        rows.contains(&vec!["3", "lamps", "horn", "output", "0.3", "1", "BOOL"]),
+        "{table}"
+    );
+
+    let dir = std::env::temp_dir().join(format!("plc-bus-show-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        "[[devices]]\nname = \"1st\"\nidentity = { vendor = 2, product = 3 }\n",
+    )
+    .unwrap();
+    let o = plc(&["bus", "show", bad.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("bad.toml") && err.contains("`1st` is not an identifier"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,5 +1,6 @@
 //! One module per subcommand, and what they share: finding a variable and formatting values.
 
+pub mod bus;
 pub mod export;
 pub mod get;
 pub mod import;

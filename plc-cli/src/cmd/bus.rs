@@ -1,0 +1,105 @@
+//! `plc bus show FILE`: the resolved process image of a bus description, the table a
+//! commissioning engineer checks against the wiring: each device in ring order with each PDO
+//! entry's direction, place (byte and bit in the device's input or output data), width and type.
+
+use super::Error;
+use plc_rules::bus::{BusConfig, BusLayout};
+use std::fmt::Write;
+use std::path::Path;
+
+pub fn show(file: &Path) -> Result<(), Error> {
+    let bus = BusConfig::load(file)?;
+    print!("{}", table(&bus));
+    Ok(())
+}
+
+/// The table, one line per entry (a device without process data gets one line saying so).
+pub fn table(bus: &BusConfig) -> String {
+    let layout = BusLayout::new(bus);
+    let mut rows: Vec<[String; 7]> = vec![[
+        "pos".into(),
+        "device".into(),
+        "entry".into(),
+        "direction".into(),
+        "byte.bit".into(),
+        "bits".into(),
+        "type".into(),
+    ]];
+    for (pos, name) in layout.names.iter().enumerate() {
+        let mut entries: Vec<_> = layout.entries.iter().filter(|e| e.device == pos).collect();
+        // Inputs first, then outputs, each in the order of the process data.
+        entries.sort_by_key(|e| (e.direction.name() != "input", e.bit_offset));
+        if entries.is_empty() {
+            rows.push([
+                pos.to_string(),
+                name.clone(),
+                "(no process data)".into(),
+                String::new(),
+                String::new(),
+                String::new(),
+                String::new(),
+            ]);
+        }
+        for e in entries {
+            rows.push([
+                pos.to_string(),
+                name.clone(),
+                e.name.clone(),
+                e.direction.name().into(),
+                format!("{}.{}", e.bit_offset / 8, e.bit_offset % 8),
+                e.bits.to_string(),
+                e.iec_type.name().into(),
+            ]);
+        }
+    }
+    let widths: Vec<usize> = (0..7)
+        .map(|c| rows.iter().map(|r| r[c].chars().count()).max().unwrap_or(0))
+        .collect();
+    let mut out = String::new();
+    for r in &rows {
+        let line: Vec<String> = r
+            .iter()
+            .zip(&widths)
+            .map(|(cell, w)| format!("{cell:<w$}"))
+            .collect();
+        let _ = writeln!(out, "{}", line.join("  ").trim_end());
+    }
+    out.push_str(
+        "\nbyte.bit: the place in the device's input or output data (each SyncManager starts on \
+         a byte).\n",
+    );
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use plc_rules::IecType;
+    use plc_rules::bus::{BusConfig, PdoDirection, devices};
+
+    #[test]
+    fn the_table_lists_each_entry_in_place() {
+        let bus = BusConfig {
+            devices: vec![
+                devices::ek1100("coupler"),
+                devices::el1004("di").grouped(PdoDirection::Input, "word", IecType::Uint),
+                devices::el2004("lamps"),
+            ],
+        };
+        let t = super::table(&bus);
+        let lines: Vec<&str> = t.lines().collect();
+        assert!(lines[0].starts_with("pos  device   entry"), "{t}");
+        assert_eq!(lines[1], "0    coupler  (no process data)");
+        assert_eq!(
+            lines[2],
+            "1    di       word               input      0.0       4     UINT"
+        );
+        assert_eq!(
+            lines[3],
+            "2    lamps    output1            output     0.0       1     BOOL"
+        );
+        assert_eq!(
+            lines[6],
+            "2    lamps    output4            output     0.3       1     BOOL"
+        );
+    }
+}
