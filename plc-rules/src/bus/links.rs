@@ -216,7 +216,7 @@ fn check_one<'l>(
 /// two), else nothing.
 fn did_you_mean(wrong: &str, names: &[&str]) -> String {
     let wrong_lower = wrong.to_ascii_lowercase();
-    let limit = (wrong.len() + 2) / 3;
+    let limit = wrong.len().div_ceil(3);
     names
         .iter()
         .map(|n| (edit_distance(&wrong_lower, &n.to_ascii_lowercase()), *n))
