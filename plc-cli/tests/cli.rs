@@ -307,6 +307,56 @@ fn log_stopped_with_ctrl_c_keeps_its_rows() {
 }
 
 #[test]
+fn a_rate_too_small_for_a_period_is_refused_not_a_panic() {
+    let owner = Owner::start("tinyrate");
+    let file = std::env::temp_dir().join(format!("plc-tinyrate-{}.csv", std::process::id()));
+    for command in ["log", "watch"] {
+        let mut args = vec![command, &owner.segment];
+        if command == "log" {
+            args.extend(["counter", "--csv", file.to_str().unwrap()]);
+        }
+        args.extend(["--rate", "1e-300"]);
+        let o = plc(&args);
+        assert_eq!(o.status.code(), Some(1), "{command}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("--rate must be between"),
+            "{}",
+            stderr(&o)
+        );
+    }
+    let _ = std::fs::remove_file(&file);
+}
+
+#[test]
+fn list_shows_a_damaged_segment_instead_of_hiding_it() {
+    let owner = Owner::start("damagedlist");
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .open(format!("/dev/shm/plc.{}", owner.segment))
+        .unwrap();
+    // A descriptor length no tool reads.
+    file.write_all_at(&u64::MAX.to_le_bytes(), 56).unwrap();
+    let o = plc(&["list"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let line = stdout(&o)
+        .lines()
+        .position(|l| l.starts_with(&owner.segment))
+        .map(|i| {
+            stdout(&o)
+                .lines()
+                .skip(i)
+                .take(2)
+                .collect::<Vec<_>>()
+                .join("\n")
+        })
+        .unwrap_or_else(|| panic!("not listed:\n{}", stdout(&o)));
+    assert!(
+        line.contains("damaged") && line.contains("descriptor"),
+        "{line}"
+    );
+}
+
+#[test]
 fn log_records_values_to_csv() {
     let owner = Owner::start("log");
     let file = std::env::temp_dir().join(format!("plc-log-{}.csv", std::process::id()));

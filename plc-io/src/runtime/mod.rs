@@ -27,6 +27,9 @@ pub enum RuntimeError {
     Shm(ShmError),
     /// The retain file could not be loaded.
     Retain(RetainError),
+    /// The retained values could not be saved when the program stopped: the file holds those
+    /// of the last save that succeeded.
+    RetainNotSaved(RetainError),
     /// Realtime scheduling was asked for but not permitted.
     Realtime(String),
     /// The program panicked in its tick: outputs were zeroed and the I/O put in a safe state.
@@ -44,6 +47,11 @@ impl fmt::Display for RuntimeError {
             RuntimeError::Io(e) => write!(f, "I/O did not start: {e}"),
             RuntimeError::Shm(e) => write!(f, "{e}"),
             RuntimeError::Retain(e) => write!(f, "{e}"),
+            RuntimeError::RetainNotSaved(e) => write!(
+                f,
+                "the retained values were not saved at stop: {e}; the file keeps the values of \
+                 the last save that succeeded"
+            ),
             RuntimeError::Realtime(e) => write!(f, "{e}"),
             RuntimeError::Panicked { cycle, message } => write!(
                 f,
@@ -299,10 +307,15 @@ where
             ctx.bus_fault = io.bus_fault;
             ctx.bus_state = io.bus_state;
             ctx.gm.unpack_bits();
-            if let Some(shm) = shm.as_mut() {
-                shm.apply_mailbox(&mut ctx.gm);
-            }
-            if let Err(panic) = catch_unwind(AssertUnwindSafe(|| tick(&mut ctx))) {
+            // The mailbox is applied under the same protection as the tick: whatever a write
+            // does, a panic still zeroes the outputs and puts the bus in a safe state.
+            let step = catch_unwind(AssertUnwindSafe(|| {
+                if let Some(shm) = shm.as_mut() {
+                    shm.apply_mailbox(&mut ctx.gm);
+                }
+                tick(&mut ctx)
+            }));
+            if let Err(panic) = step {
                 let message = panic
                     .downcast_ref::<&str>()
                     .map(|s| s.to_string())
@@ -345,6 +358,9 @@ where
                     bus_fault: io.bus_fault,
                     inputs_valid: io.inputs_valid,
                 });
+                if let Some(writer) = &retain {
+                    shm.set_retain_failures(writer.failed_saves());
+                }
             }
             next += s.period;
             let now = Instant::now();
@@ -356,11 +372,19 @@ where
             }
         };
         s.backend.stop();
-        if let Some(writer) = retain {
+        let saved = match retain {
             // `image` is the last completed cycle's. After a panic `gm` holds a half-done tick
             // and zeroed outputs, which must not become the values the next start restores.
-            writer.finish(Some(*image));
-        }
+            Some(writer) => {
+                let before = writer.failed_saves();
+                let saved = writer.finish(Some(*image));
+                if let Some(shm) = &shm {
+                    shm.set_retain_failures(before + u64::from(saved.is_err()));
+                }
+                saved
+            }
+            None => Ok(()),
+        };
         if let Some(shm) = &shm {
             shm.set_run_state(if result.is_ok() {
                 RunState::Stopped
@@ -369,7 +393,10 @@ where
             });
         }
         drop(shm);
-        result.map(|()| ctx.gm)
+        // A panic is the first thing to report; a lost final save comes next.
+        result?;
+        saved.map_err(RuntimeError::RetainNotSaved)?;
+        Ok(ctx.gm)
     }
 }
 

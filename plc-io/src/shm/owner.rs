@@ -10,6 +10,7 @@ use super::status::{CycleReport, OwnerState, RunState, Status, now_ns, write_rep
 use super::view::View;
 use super::{ShmError, bytes};
 use plc_core::{GlobalMemory, Value};
+use std::cell::Cell;
 use std::marker::PhantomData;
 use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
@@ -49,6 +50,10 @@ use zerocopy::{FromZeros, IntoBytes};
 pub struct SharedGlobalMemory<T: GlobalMemory> {
     view: View,
     consumer: Option<Consumer>,
+    /// The owner's seqlock counter, in its own memory: the shared word is only ever written
+    /// from it, never read back, so whatever another process stores there is overwritten at
+    /// the next publish instead of steering it.
+    seq: Cell<u64>,
     _t: PhantomData<fn() -> T>,
 }
 
@@ -89,6 +94,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
                 checked_alive: Default::default(),
             },
             consumer: Some(Consumer::default()),
+            seq: Cell::new(0),
             _t: PhantomData,
         })
     }
@@ -106,6 +112,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         Ok(SharedGlobalMemory {
             view,
             consumer: None,
+            seq: Cell::new(0),
             _t: PhantomData,
         })
     }
@@ -147,11 +154,13 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         self.owner_only()?;
         let base = &self.view.base;
         let seq = base.word(H_SEQ);
-        let s = seq.load(Ordering::Relaxed);
-        seq.store(s + 1, Ordering::Relaxed);
+        // Even: no write in progress. Wrapping keeps the parity.
+        let s = self.seq.get();
+        seq.store(s.wrapping_add(1), Ordering::Relaxed);
         fence(Ordering::Release);
         bytes::store(base, IMAGE, image.as_bytes());
-        seq.store(s + 2, Ordering::Release);
+        seq.store(s.wrapping_add(2), Ordering::Release);
+        self.seq.set(s.wrapping_add(2));
         base.store(S_HEARTBEAT_NS, now_ns());
         Ok(())
     }
@@ -229,19 +238,32 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
             audit(&r, &result);
             result.is_ok()
         });
-        if ok > 0 {
-            base.word(S_MB_APPLIED).fetch_add(ok, Ordering::Relaxed);
-        }
-        if bad > 0 {
-            base.word(S_MB_REJECTED).fetch_add(bad, Ordering::Relaxed);
-        }
+        // Counted here and stored: the shared words are for tools, never read back.
+        consumer.applied = consumer.applied.wrapping_add(ok);
+        consumer.rejected = consumer.rejected.wrapping_add(bad);
+        base.store(S_MB_APPLIED, consumer.applied);
+        base.store(S_MB_REJECTED, consumer.rejected);
         n
+    }
+
+    /// Whether another process truncated the segment while this handle maps it. The handle
+    /// keeps working (it reads zeros, and what it publishes reaches nobody) instead of the
+    /// process dying of SIGBUS; tools see a damaged segment until the program restarts.
+    pub fn damaged(&self) -> bool {
+        self.view.seg.damaged()
     }
 
     /// Publishes the cycle figures and a heartbeat (owner only).
     pub fn report(&self, report: &CycleReport) {
         if self.is_owner() {
             write_report(&self.view.base, report);
+        }
+    }
+
+    /// Publishes how many saves of retained values failed so far (owner only).
+    pub fn set_retain_failures(&self, failures: u64) {
+        if self.is_owner() {
+            self.view.base.store(S_RETAIN_FAILED, failures);
         }
     }
 
