@@ -260,7 +260,15 @@ fn writes_are_refused_up_front_with_the_reason() {
     let name = unique("refuse");
     let _owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
     let seg = DynSegment::attach(&name).unwrap();
-    let refused = |var: &str, v: Value| seg.write(var, v).unwrap_err().to_string();
+    let refused = |var: &str, v: Value| {
+        // Checking without sending refuses the same way, and sends nothing.
+        let checked = seg.check(var, 0, v).unwrap_err();
+        let written = seg.write(var, v).unwrap_err();
+        assert_eq!(checked, written);
+        written.to_string()
+    };
+    assert_eq!(seg.check("speed", 0, Value::Int(7)), Ok(Value::UInt(7)));
+    assert_eq!(seg.status().writes_pending, 0, "a check sends nothing");
     assert!(refused("sensor", Value::UInt(1)).contains("an input"));
     assert!(refused("state", Value::UInt(1)).contains("status"));
     assert!(refused("serial", Value::UInt(1)).contains("read-only"));

@@ -245,13 +245,14 @@ impl View {
         Ok(codec::decode(&image, var, element).unwrap_or(Value::Bool(false)))
     }
 
-    /// Checks a write as the owner would and posts it to the mailbox.
-    pub fn write_element(
+    /// Checks a write as the owner would, without posting it: the variable's index and the
+    /// value as it will be sent (fitted to the variable's type).
+    pub fn check_element(
         &self,
         name: &str,
         element: usize,
         value: Value,
-    ) -> Result<Ticket, ShmError> {
+    ) -> Result<(usize, Value), ShmError> {
         let index = self.var_index(name)?;
         let var = &self.desc.variables[index];
         if !var.writable_from_outside() {
@@ -274,6 +275,17 @@ impl View {
                 variable: var.name.clone(),
                 error,
             })?;
+        Ok((index, value))
+    }
+
+    /// Checks a write as the owner would and posts it to the mailbox.
+    pub fn write_element(
+        &self,
+        name: &str,
+        element: usize,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
+        let (index, value) = self.check_element(name, element, value)?;
         self.post(index, element, value)
     }
 
