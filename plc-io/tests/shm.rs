@@ -528,23 +528,6 @@ fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_pos
     }
 }
 
-#[test]
-fn a_reader_cannot_publish() {
-    let name = unique("publish");
-    let owner = SharedGlobalMemory::<Pattern>::create(&name).unwrap();
-    let mut gm = Pattern {
-        seq: 1,
-        ..Default::default()
-    };
-    owner.publish(&gm).unwrap();
-    let reader = SharedGlobalMemory::<Pattern>::attach(&name).unwrap();
-    gm.seq = 99;
-    let not_owner = ShmError::NotOwner(name.clone());
-    assert_eq!(reader.publish_image(&gm.to_image()), Err(not_owner.clone()));
-    assert_eq!(reader.publish(&gm), Err(not_owner));
-    assert_eq!(reader.snapshot().unwrap().seq, 1);
-}
-
 /// The segment's bytes through its file, as another (damaged or hostile) process could write
 /// them. Header words: 8 format version, 16 layout hash, 24 image size, 48 descriptor offset,
 /// 56 descriptor length; 152 heartbeat.

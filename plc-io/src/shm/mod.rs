@@ -41,7 +41,7 @@ mod view;
 pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use dynamic::DynSegment;
 pub use error::ShmError;
-pub use owner::SharedGlobalMemory;
+pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
 pub use segment::normalise as normalise_name;
 pub use status::{BUS_STATES, CycleReport, OwnerState, RunState, Status};
 
