@@ -511,3 +511,106 @@ fn hostile_mailbox_words_while_the_runtime_cycles_do_not_stop_it() {
     assert_eq!(gm.count, 400);
     assert_eq!(gm.setpoint, 0, "no write was made up from damaged words");
 }
+
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct Guarded {
+    #[plc(direction = "input")]
+    sensor: u16,
+    #[plc(direction = "status")]
+    state: u8,
+    #[plc(read_only, initial = 7)]
+    serial: u32,
+    #[plc(direction = "command")]
+    speed: u8,
+    #[plc(direction = "command")]
+    note: plc_core::FixedString<8>,
+    table: [i16; 4],
+}
+
+/// One thing a misbehaving writer does to the mailbox.
+#[derive(Clone, Debug)]
+enum Message {
+    /// A well-formed request with any index, element and value, past every writer check.
+    Post(usize, usize, Value),
+    /// A word anywhere in the mailbox (head, tail, counters, slots) set to anything.
+    Word(u64, u64),
+}
+
+fn any_value() -> impl proptest::strategy::Strategy<Value = Value> {
+    use proptest::prelude::*;
+    prop_oneof![
+        any::<bool>().prop_map(Value::Bool),
+        any::<i64>().prop_map(Value::Int),
+        any::<u64>().prop_map(Value::UInt),
+        any::<f64>().prop_map(Value::Real),
+        "[a-z\u{e9}]{0,12}".prop_map(|s| Value::Text(plc_core::FixedString::from_str_truncate(&s))),
+    ]
+}
+
+fn any_message() -> impl proptest::strategy::Strategy<Value = Message> {
+    use proptest::prelude::*;
+    let mailbox_words = (32 + 64 * 288) / 8;
+    prop_oneof![
+        (0usize..10, 0usize..8, any_value()).prop_map(|(i, e, v)| Message::Post(i, e, v)),
+        (
+            0u64..mailbox_words,
+            prop_oneof![
+                any::<u64>(),
+                Just(0u64),
+                Just(u64::MAX),
+                Just(1u64 << 40),
+                0u64..200
+            ]
+        )
+            .prop_map(|(w, v)| Message::Word(w, v)),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::test_runner::Config::with_cases(64))]
+
+    /// Whatever arrives, the owner neither panics nor loops, a writer returns, nothing that may
+    /// not be written from outside changes, and what is applied is what `set` accepts.
+    #[test]
+    fn the_owner_survives_arbitrary_mailbox_messages(
+        messages in proptest::collection::vec(any_message(), 1..40)
+    ) {
+        let name = unique("prop");
+        let mut owner = SharedGlobalMemory::<Guarded>::create(&name).unwrap();
+        let seg = DynSegment::attach(&name).unwrap();
+        let path = shm(&name);
+        let image = std::mem::size_of::<<Guarded as GlobalMemory>::Image>() as u64;
+        let mailbox = 192 + image.div_ceil(8) * 8;
+        let mut gm = Guarded::default();
+        for m in &messages {
+            match m {
+                Message::Post(i, e, v) => {
+                    let start = Instant::now();
+                    let _ = seg.post_unchecked(*i, *e, *v);
+                    proptest::prop_assert!(start.elapsed() < Duration::from_secs(5));
+                }
+                Message::Word(w, v) => set_word(&path, mailbox + w * 8, *v),
+            }
+            let mut applied = Vec::new();
+            owner.apply_mailbox_with(&mut gm, |r, outcome| {
+                if outcome.is_ok() {
+                    applied.push(*r);
+                }
+            });
+            for r in applied {
+                let var = &Guarded::VARIABLES[r.index];
+                proptest::prop_assert!(var.writable_from_outside(), "{} was written", var.name);
+                proptest::prop_assert!(r.element < var.elements());
+            }
+            proptest::prop_assert_eq!((gm.sensor, gm.state, gm.serial), (0, 0, 7));
+        }
+        // After all that, a correct write still gets through once the ring is usable again, or
+        // is refused with an error: never a hang.
+        let start = Instant::now();
+        let _ = seg.write("speed", Value::UInt(3));
+        proptest::prop_assert!(start.elapsed() < Duration::from_secs(5));
+        drop(seg);
+        drop(owner);
+        proptest::prop_assert!(!path.exists());
+    }
+}
