@@ -531,7 +531,7 @@ pub struct Guarded {
 #[derive(Clone, Debug)]
 enum Message {
     /// A well-formed request with any index, element and value, past every writer check.
-    Post(usize, usize, Value),
+    Post(usize, usize, Box<Value>),
     /// A word anywhere in the mailbox (head, tail, counters, slots) set to anything.
     Word(u64, u64),
 }
@@ -551,7 +551,7 @@ fn any_message() -> impl proptest::strategy::Strategy<Value = Message> {
     use proptest::prelude::*;
     let mailbox_words = (32 + 64 * 288) / 8;
     prop_oneof![
-        (0usize..10, 0usize..8, any_value()).prop_map(|(i, e, v)| Message::Post(i, e, v)),
+        (0usize..10, 0usize..8, any_value()).prop_map(|(i, e, v)| Message::Post(i, e, Box::new(v))),
         (
             0u64..mailbox_words,
             prop_oneof![
@@ -586,7 +586,7 @@ proptest::proptest! {
             match m {
                 Message::Post(i, e, v) => {
                     let start = Instant::now();
-                    let _ = seg.post_unchecked(*i, *e, *v);
+                    let _ = seg.post_unchecked(*i, *e, **v);
                     proptest::prop_assert!(start.elapsed() < Duration::from_secs(5));
                 }
                 Message::Word(w, v) => set_word(&path, mailbox + w * 8, *v),
