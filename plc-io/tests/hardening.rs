@@ -142,23 +142,22 @@ fn an_empty_leftover_segment_does_not_block_a_new_owner() {
 }
 
 #[test]
-fn a_segment_truncated_under_its_owner_does_not_kill_it() {
+fn a_segment_truncated_under_its_owner_neither_kills_it_nor_stops_the_tools() {
     if role().as_deref() == Some("truncated_owner") {
         let name = std::env::var("SEGMENT").unwrap();
         let mut owner = SharedGlobalMemory::<Plain>::create(&name).unwrap();
         let mut gm = Plain::default();
         let start = Instant::now();
-        // Cycle until the damage is seen, and a while longer: every publish and mailbox
-        // access after the truncation would be a SIGBUS without the guard.
-        let mut seen = None;
-        while seen.is_none_or(|t: Instant| t.elapsed() < Duration::from_millis(300)) {
+        // Every publish and mailbox access after the truncation would be a SIGBUS without the
+        // guard; the test's write of `setpoint` ends the loop.
+        while gm.setpoint == 0 {
             gm.count += 1;
             owner.publish(&gm).unwrap();
             owner.apply_mailbox(&mut gm);
-            if seen.is_none() && owner.damaged() {
-                seen = Some(Instant::now());
-            }
-            assert!(start.elapsed() < Duration::from_secs(30), "never damaged");
+            assert!(
+                start.elapsed() < Duration::from_secs(60),
+                "never told to stop"
+            );
             std::thread::sleep(Duration::from_millis(1));
         }
         return; // a clean stop: `owner` drops
@@ -169,17 +168,33 @@ fn a_segment_truncated_under_its_owner_does_not_kill_it() {
     let name = unique("truncated");
     let _c = Cleanup(name.clone());
     let mut child = spawn_role(
-        "a_segment_truncated_under_its_owner_does_not_kill_it",
+        "a_segment_truncated_under_its_owner_neither_kills_it_nor_stops_the_tools",
         "truncated_owner",
         &[("SEGMENT", name.clone())],
     );
-    wait_for(Duration::from_secs(20), || DynSegment::attach(&name).ok());
+    let before = wait_for(Duration::from_secs(20), || DynSegment::attach(&name).ok());
+    let first = before.status().generation;
     std::fs::OpenOptions::new()
         .write(true)
         .open(shm(&name))
         .unwrap()
         .set_len(0)
         .unwrap();
+    // The owner replaces the segment at its next cycle: tools attach to the new one.
+    let after = wait_for(Duration::from_secs(20), || {
+        DynSegment::attach(&name)
+            .ok()
+            .filter(|s| s.status().generation != first)
+    });
+    let count = |s: &DynSegment| match s.read("count") {
+        Ok(Value::UInt(n)) => n,
+        other => panic!("{other:?}"),
+    };
+    let was = count(&after);
+    wait_for(Duration::from_secs(20), || {
+        (count(&after) > was).then_some(())
+    });
+    after.write("setpoint", Value::UInt(1)).unwrap();
     let status = child.wait().unwrap();
     assert!(status.success(), "the owner died: {status:?}");
     // It stopped cleanly: both files are gone, and the name is free at once.

@@ -350,6 +350,43 @@ impl Consumer {
         n
     }
 
+    /// Starts over on a new, empty ring (the segment was replaced); the counts go on.
+    pub(crate) fn restart(&mut self, base: &Base, off: &Offsets) {
+        self.tail = 0;
+        self.stuck_since = None;
+        init(base, off);
+        base.store(off.mb_reclaimed(), self.reclaimed);
+        base.store(off.mb_discarded(), self.discarded);
+    }
+
+    /// Writes the ring's tail and counters again from the owner's memory, and starts the ring
+    /// over, empty, at the owner's position if its words no longer fit together: the head
+    /// within one lap of the tail, and every slot of that lap free or claimed (its sequence the
+    /// position or one more). Anything else is another process's doing, and would make
+    /// producers give up for ever.
+    pub(crate) fn repair(&mut self, base: &Base, off: &Offsets) {
+        let tail = self.tail;
+        base.store(off.mb_tail(), tail);
+        base.store(off.mb_reclaimed(), self.reclaimed);
+        base.store(off.mb_discarded(), self.discarded);
+        let lap = SLOTS as u64;
+        let head = base.load(off.mb_head());
+        let head_fits = head >= tail && head - tail <= lap;
+        let slots_fit = (0..lap).all(|i| {
+            let pos = tail.wrapping_add(i);
+            let seq = base.load(off.slot(pos as usize));
+            seq == pos || seq == pos.wrapping_add(1)
+        });
+        if !(head_fits && slots_fit) {
+            base.store(off.mb_head(), tail);
+            for i in 0..lap {
+                let pos = tail.wrapping_add(i);
+                base.store(off.slot(pos as usize), pos);
+            }
+            self.stuck_since = None;
+        }
+    }
+
     /// Moves past the slot just taken, and tells the producers.
     fn advance(&mut self, base: &Base, off: &Offsets) {
         self.tail = self.tail.wrapping_add(1);

@@ -15,6 +15,7 @@ use std::cell::Cell;
 use std::marker::PhantomData;
 use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
+use std::time::{Duration, Instant};
 use zerocopy::{FromZeros, IntoBytes};
 
 /// A `GlobalMemory` struct in a named shared-memory segment: the two ways in.
@@ -68,17 +69,14 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         let off = Offsets::new(size_of::<T::Image>());
         let (seg, generation) = Segment::create(&name, off.descriptor + json.len())?;
         let base = seg.base();
-        base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
-        base.store(H_LAYOUT_HASH, T::LAYOUT_HASH);
-        base.store(H_IMAGE_SIZE, off.image_size as u64);
-        base.store(H_GENERATION, generation);
+        let header = Header {
+            json,
+            hash: T::LAYOUT_HASH,
+            off,
+        };
+        header.write(&base, generation, RunState::Starting);
         base.store(H_SEQ, 0);
-        base.store(H_DESC_OFFSET, off.descriptor as u64);
-        base.store(H_DESC_LEN, json.len() as u64);
-        base.store(S_PID, std::process::id() as u64);
-        base.store(S_STATE, RunState::Starting as u64);
         base.store(S_HEARTBEAT_NS, now_ns());
-        bytes::store(&base, off.descriptor, &json);
         mailbox::init(&base, &off);
         // Last, so an attaching reader sees either nothing or a complete segment.
         base.store(H_MAGIC, MAGIC);
@@ -93,6 +91,9 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
             },
             consumer: Consumer::default(),
             seq: Cell::new(0),
+            header,
+            run_state: Cell::new(RunState::Starting),
+            checked: Instant::now(),
             _t: PhantomData,
         })
     }
@@ -123,10 +124,76 @@ pub struct ShmOwner<T: GlobalMemory> {
     /// from it, never read back, so whatever another process stores there is overwritten at
     /// the next publish instead of steering it.
     seq: Cell<u64>,
+    /// What the header and descriptor must say, kept to write them again.
+    header: Header,
+    /// The state it reports, kept here for the same reason.
+    run_state: Cell<RunState>,
+    /// When the shared words were last checked and repaired.
+    checked: Instant,
     _t: PhantomData<fn() -> T>,
 }
 
+/// How often the owner writes its header and descriptor again and checks the mailbox ring: a
+/// process that scribbled over them breaks the tools for at most this long.
+const REPAIR_EVERY: Duration = Duration::from_millis(100);
+
+/// The header and descriptor of a segment, in the owner's memory.
+struct Header {
+    json: Vec<u8>,
+    hash: u64,
+    off: Offsets,
+}
+
+impl Header {
+    fn write(&self, base: &Base, generation: u64, state: RunState) {
+        base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
+        base.store(H_LAYOUT_HASH, self.hash);
+        base.store(H_IMAGE_SIZE, self.off.image_size as u64);
+        base.store(H_GENERATION, generation);
+        base.store(H_DESC_OFFSET, self.off.descriptor as u64);
+        base.store(H_DESC_LEN, self.json.len() as u64);
+        base.store(S_PID, std::process::id() as u64);
+        base.store(S_STATE, state as u64);
+        bytes::store(base, self.off.descriptor, &self.json);
+    }
+}
+
 impl<T: GlobalMemory> ShmOwner<T> {
+    /// Undoes what another process did to the segment: a truncated one is replaced by a new
+    /// segment (a new generation; readers attach again), and every [`REPAIR_EVERY`] the header,
+    /// the descriptor and the mailbox's words are written again from the owner's memory (a
+    /// ring whose words no longer fit together starts empty again; requests in it are lost).
+    /// Called at each [`apply_mailbox`](Self::apply_mailbox), so at every cycle.
+    fn repair(&mut self) {
+        if self.view.seg.damaged() {
+            let size = self.header.off.descriptor + self.header.json.len();
+            let Ok(base) = self.view.seg.renew(size) else {
+                return; // tried again at the next cycle
+            };
+            let generation = segment::next_generation(self.view.generation);
+            self.view.base = base;
+            self.view.generation = generation;
+            self.header.write(&base, generation, self.run_state.get());
+            self.seq.set(0);
+            base.store(H_SEQ, 0);
+            base.store(S_HEARTBEAT_NS, now_ns());
+            self.consumer.restart(&base, &self.header.off);
+            base.store(H_MAGIC, MAGIC);
+            self.checked = Instant::now();
+            return;
+        }
+        if self.checked.elapsed() < REPAIR_EVERY {
+            return;
+        }
+        self.checked = Instant::now();
+        let base = self.view.base;
+        base.store(H_MAGIC, MAGIC);
+        self.header
+            .write(&base, self.view.generation, self.run_state.get());
+        base.store(H_SEQ, self.seq.get());
+        self.consumer.repair(&base, &self.header.off);
+    }
+
     /// The segment's name.
     pub fn name(&self) -> &str {
         self.view.name()
@@ -194,6 +261,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         gm: &mut T,
         mut audit: impl FnMut(&Request, &Result<(), Rejection>),
     ) -> usize {
+        self.repair();
         let consumer = &mut self.consumer;
         let base = self.view.base;
         let (mut ok, mut bad) = (0u64, 0u64);
@@ -225,7 +293,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
 
     /// Whether another process truncated the segment while this handle maps it. The handle
     /// keeps working (it reads zeros, and what it publishes reaches nobody) instead of the
-    /// process dying of SIGBUS; tools see a damaged segment until the program restarts.
+    /// process dying of SIGBUS, until the next [`apply_mailbox`](Self::apply_mailbox) replaces
+    /// the segment by a new one (a new generation, which tools attach to again).
     pub fn damaged(&self) -> bool {
         self.view.seg.damaged()
     }
@@ -242,6 +311,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
 
     /// Sets the state the owner reports.
     pub fn set_run_state(&self, state: RunState) {
+        self.run_state.set(state);
         self.view.base.store(S_STATE, state as u64);
     }
 }
@@ -359,7 +429,7 @@ fn writable<T: GlobalMemory>(index: usize) -> Result<(), Rejection> {
 impl<T: GlobalMemory> Drop for ShmOwner<T> {
     fn drop(&mut self) {
         // A fault stays visible to readers still attached: only a running owner stops.
-        if self.status().run_state != RunState::Faulted {
+        if self.run_state.get() != RunState::Faulted {
             self.set_run_state(RunState::Stopped);
         }
     }

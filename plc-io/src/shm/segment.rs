@@ -367,6 +367,15 @@ fn sweep(except: &str) {
     }
 }
 
+/// A generation for a new segment after one of generation `last` (0: none): the creation time
+/// in microseconds, and above `last` whatever the clock says.
+pub fn next_generation(last: u64) -> u64 {
+    let now_us = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_micros() as u64);
+    now_us.max(last.saturating_add(1))
+}
+
 /// A mapped segment.
 pub struct Segment {
     mapping: Option<Mapping>,
@@ -414,10 +423,7 @@ impl Segment {
                 return Err(e);
             }
         };
-        let now_us = std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map_or(0, |d| d.as_micros() as u64);
-        let generation = now_us.max(last.saturating_add(1));
+        let generation = next_generation(last);
         let base = mapping.base();
         Ok((
             Segment {
@@ -474,6 +480,31 @@ impl Segment {
     /// Whether this process owns the segment.
     pub fn is_owner(&self) -> bool {
         self.lock.is_some()
+    }
+
+    /// Replaces the owner's segment file by a new one of `size` bytes (the old one was
+    /// truncated by another process), under the lock it holds, and returns the new mapping.
+    /// Readers still mapping the old file see it gone and attach again.
+    pub fn renew(&mut self, size: usize) -> Result<Base, ShmError> {
+        if self.lock.is_none() {
+            return Err(ShmError::NotOwner(self.name.clone()));
+        }
+        let path = shm_path(&self.name);
+        // Whatever is at the path now (the truncated file, or anything put there since) goes:
+        // nobody else may create the name while we hold its lock.
+        unlink(&path);
+        let file = open_nofollow(&path, true, true)
+            .map_err(|e| open_error(&self.name, &path, "cannot create", e))?;
+        let mapping = file
+            .set_len(size as u64)
+            .and_then(|()| Mapping::new(file, size))
+            .map_err(|e| {
+                unlink(&path);
+                open_error(&self.name, &path, "cannot size and map", e)
+            })?;
+        self.base = mapping.base();
+        self.mapping = Some(mapping);
+        Ok(self.base)
     }
 
     /// Whether another process truncated the segment under this mapping: it now reads zeros,
