@@ -629,3 +629,166 @@ proptest::proptest! {
         proptest::prop_assert!(!path.exists());
     }
 }
+
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Attacked {
+    #[plc(direction = "status")]
+    count: u64,
+    /// Always twice `count`: only the program writes either.
+    #[plc(direction = "status")]
+    doubled: u64,
+    #[plc(direction = "command")]
+    setpoint: u32,
+    /// The last accepted `setpoint`.
+    #[plc(direction = "status")]
+    echo: u32,
+}
+
+/// A small deterministic generator: the attack needs noise, not statistics.
+struct Noise(u64);
+
+impl Noise {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        self.0
+    }
+    fn below(&mut self, n: u64) -> u64 {
+        self.next() % n.max(1)
+    }
+}
+
+/// Times `f`, which must answer within a few seconds whatever state the segment is in.
+fn bounded<R>(what: &str, f: impl FnOnce() -> R) -> R {
+    let start = Instant::now();
+    let r = f();
+    assert!(
+        start.elapsed() < Duration::from_secs(5),
+        "{what} took {:?}",
+        start.elapsed()
+    );
+    r
+}
+
+#[test]
+fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_attack() {
+    match role().as_deref() {
+        Some("attacked_owner") => {
+            let name = std::env::var("SEGMENT").unwrap();
+            let _ = plc_io::Runtime::<Attacked>::builder()
+                .period(Duration::from_millis(2))
+                .segment(name)
+                .handle_signals(false)
+                .build()
+                .run(|ctx| {
+                    // Status variables come from the program alone: had a write from outside
+                    // been applied to one, this panics, the run ends and the test sees the
+                    // owner gone.
+                    assert_eq!(ctx.gm.doubled, ctx.gm.count * 2, "a status was written");
+                    ctx.gm.count += 1;
+                    ctx.gm.doubled = ctx.gm.count * 2;
+                    ctx.gm.echo = ctx.gm.setpoint;
+                });
+            return;
+        }
+        Some("attacker") => {
+            let name = std::env::var("SEGMENT").unwrap();
+            let mut noise = Noise(0x9E37_79B9_7F4A_7C15 ^ u64::from(std::process::id()));
+            let start = Instant::now();
+            while start.elapsed() < Duration::from_secs(3) {
+                // Random bytes over the segment and the lock file, and resizes.
+                for path in [shm(&name), lock(&name)] {
+                    let Ok(f) = std::fs::OpenOptions::new().write(true).open(&path) else {
+                        continue;
+                    };
+                    let len = f.metadata().map(|m| m.len()).unwrap_or(0).max(1);
+                    for _ in 0..8 {
+                        let bytes: Vec<u8> = (0..1 + noise.below(64))
+                            .map(|_| noise.next() as u8)
+                            .collect();
+                        let _ = f.write_all_at(&bytes, noise.below(len));
+                    }
+                    match noise.below(50) {
+                        0 => drop(f.set_len(noise.below(len))),
+                        1 => drop(f.set_len(len + noise.below(1 << 16))),
+                        _ => {}
+                    }
+                }
+                // Flood the mailbox: requests of any kind past the writer's checks, and
+                // valid-looking ones.
+                if let Ok(seg) = DynSegment::attach(&name) {
+                    for _ in 0..16 {
+                        let value = match noise.below(4) {
+                            0 => Value::UInt(noise.next()),
+                            1 => Value::Int(noise.next() as i64),
+                            2 => Value::Real(f64::from_bits(noise.next())),
+                            _ => Value::Bool(noise.next() & 1 == 1),
+                        };
+                        let _ = seg.post_unchecked(
+                            noise.below(6) as usize,
+                            noise.below(3) as usize,
+                            value,
+                        );
+                        let _ = seg.write("setpoint", Value::UInt(noise.below(1000)));
+                    }
+                }
+            }
+            return;
+        }
+        Some(_) => return,
+        None => {}
+    }
+    let test = "a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_attack";
+    let name = unique("attacked");
+    let _c = Cleanup(name.clone());
+    let mut owner = spawn_role(test, "attacked_owner", &[("SEGMENT", name.clone())]);
+    wait_for(Duration::from_secs(20), || DynSegment::attach(&name).ok());
+    let mut attacker = spawn_role(test, "attacker", &[("SEGMENT", name.clone())]);
+    // During the attack every tool call answers (rightly or with an error) in bounded time.
+    let mut calls = 0;
+    while attacker.try_wait().unwrap().is_none() {
+        if let Ok(seg) = bounded("attach", || DynSegment::attach(&name)) {
+            let _ = bounded("get", || seg.read("count"));
+            let _ = bounded("set", || seg.write("setpoint", Value::UInt(1)));
+        }
+        bounded("list", list_segments);
+        calls += 1;
+    }
+    assert!(attacker.wait().unwrap().success());
+    assert!(calls > 0);
+    // Within moments of the end, the tools read the program's own values and writes arrive.
+    let attack_over = Instant::now();
+    let seg = wait_for(Duration::from_secs(3), || {
+        let seg = DynSegment::attach(&name).ok()?;
+        let image = seg.snapshot_bytes().ok()?;
+        let at = |i| seg.value_at(&image, i, 0);
+        let (Some(Value::UInt(count)), Some(Value::UInt(doubled))) = (at(0), at(1)) else {
+            return None;
+        };
+        (count > 0 && doubled == 2 * count).then_some(seg)
+    });
+    seg.write("setpoint", Value::UInt(4242)).unwrap();
+    wait_for(Duration::from_secs(3), || {
+        (seg.read("echo") == Ok(Value::UInt(4242))).then_some(())
+    });
+    let listed = list_segments();
+    let me = listed.iter().find(|s| s.name == name).expect("listed");
+    assert!(
+        me.problem.is_none() && me.state == plc_io::shm::OwnerState::Running,
+        "{me:?}"
+    );
+    let recovered = attack_over.elapsed();
+    // The owner cycled through it all: it is still the one process that owns the segment.
+    assert!(owner.try_wait().unwrap().is_none(), "the owner died");
+    let before = seg.status().cycle_count;
+    wait_for(Duration::from_secs(3), || {
+        (seg.status().cycle_count > before).then_some(())
+    });
+    // Killed, it is replaced at once by a new owner.
+    kill9(&mut owner);
+    let next = SharedGlobalMemory::<Attacked>::create(&name).expect("a new owner starts at once");
+    next.publish(&Attacked::default()).unwrap();
+    assert!(SharedGlobalMemory::<Attacked>::attach(&name).is_ok());
+    eprintln!("recovered {recovered:?} after the attack, {calls} tool rounds during it");
+}
