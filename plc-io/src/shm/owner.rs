@@ -18,6 +18,37 @@ use std::sync::atomic::{Ordering, fence};
 use std::time::{Duration, Instant};
 use zerocopy::{FromZeros, IntoBytes};
 
+/// The calls owners and readers share, on their `view`.
+macro_rules! segment_accessors {
+    () => {
+        /// The segment's name.
+        pub fn name(&self) -> &str {
+            self.view.name()
+        }
+
+        /// The generation: it grows with each new owner of this name (after a clean stop or a
+        /// takeover), so a reader can tell two runs apart.
+        pub fn generation(&self) -> u64 {
+            self.view.generation
+        }
+
+        /// The status block.
+        pub fn status(&self) -> Status {
+            self.view.status()
+        }
+
+        /// The owner's state as tools show it.
+        pub fn owner_state(&self) -> OwnerState {
+            self.view.owner_state()
+        }
+
+        /// The layout descriptor stored in the segment.
+        pub fn descriptor(&self) -> &LayoutDescriptor {
+            &self.view.desc
+        }
+    };
+}
+
 /// A `GlobalMemory` struct in a named shared-memory segment: the two ways in.
 ///
 /// The owner [`create`](Self::create)s it, getting a [`ShmOwner`] that
@@ -194,36 +225,13 @@ impl<T: GlobalMemory> ShmOwner<T> {
         self.consumer.repair(&base, &self.header.off);
     }
 
-    /// The segment's name.
-    pub fn name(&self) -> &str {
-        self.view.name()
-    }
-
     /// Whether this handle owns the segment (always).
     pub fn is_owner(&self) -> bool {
         true
     }
 
-    /// The generation: it grows with each new owner of this name (after a clean stop or a
-    /// takeover), so a reader can tell two runs apart.
-    pub fn generation(&self) -> u64 {
-        self.view.generation
-    }
+    segment_accessors!();
 
-    /// The status block.
-    pub fn status(&self) -> Status {
-        self.view.status()
-    }
-
-    /// The owner's state as tools show it.
-    pub fn owner_state(&self) -> OwnerState {
-        self.view.owner_state()
-    }
-
-    /// The layout descriptor stored in the segment.
-    pub fn descriptor(&self) -> &LayoutDescriptor {
-        &self.view.desc
-    }
     /// Publishes `gm`: the image goes out under the seqlock, through atomics.
     pub fn publish(&self, gm: &T) -> Result<(), ShmError> {
         let image = gm.to_image();
@@ -336,36 +344,13 @@ pub struct ShmReader<T: GlobalMemory> {
 }
 
 impl<T: GlobalMemory> ShmReader<T> {
-    /// The segment's name.
-    pub fn name(&self) -> &str {
-        self.view.name()
-    }
-
     /// Whether this handle owns the segment (never).
     pub fn is_owner(&self) -> bool {
         false
     }
 
-    /// The generation: it grows with each new owner of this name (after a clean stop or a
-    /// takeover), so a reader can tell two runs apart.
-    pub fn generation(&self) -> u64 {
-        self.view.generation
-    }
+    segment_accessors!();
 
-    /// The status block.
-    pub fn status(&self) -> Status {
-        self.view.status()
-    }
-
-    /// The owner's state as tools show it.
-    pub fn owner_state(&self) -> OwnerState {
-        self.view.owner_state()
-    }
-
-    /// The layout descriptor stored in the segment.
-    pub fn descriptor(&self) -> &LayoutDescriptor {
-        &self.view.desc
-    }
     /// A consistent copy of the variables: retries while the owner writes, never torn; an error
     /// if the owner is gone, was replaced, or stays mid-write.
     pub fn snapshot(&self) -> Result<T, ShmError> {

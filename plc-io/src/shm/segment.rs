@@ -367,6 +367,19 @@ fn sweep(except: &str) {
     }
 }
 
+/// Creates the segment file of `name` (nothing may be at its path), `size` bytes, mapped.
+fn create_mapping(name: &str, size: usize) -> Result<Mapping, ShmError> {
+    let path = shm_path(name);
+    let file = open_nofollow(&path, true, true)
+        .map_err(|e| open_error(name, &path, "cannot create", e))?;
+    file.set_len(size as u64)
+        .and_then(|()| Mapping::new(file, size))
+        .map_err(|e| {
+            unlink(&path);
+            open_error(name, &path, "cannot size and map", e)
+        })
+}
+
 /// A generation for a new segment after one of generation `last` (0: none): the creation time
 /// in microseconds, and above `last` whatever the clock says.
 pub fn next_generation(last: u64) -> u64 {
@@ -402,19 +415,7 @@ impl Segment {
                 pid,
             });
         };
-        let path = shm_path(name);
-        let made = remove_leftover(name).and_then(|last| {
-            let file = open_nofollow(&path, true, true)
-                .map_err(|e| open_error(name, &path, "cannot create", e))?;
-            let mapping = file
-                .set_len(size as u64)
-                .and_then(|()| Mapping::new(file, size))
-                .map_err(|e| {
-                    unlink(&path);
-                    open_error(name, &path, "cannot size and map", e)
-                })?;
-            Ok((last, mapping))
-        });
+        let made = remove_leftover(name).and_then(|last| Ok((last, create_mapping(name, size)?)));
         let (last, mapping) = match made {
             Ok(m) => m,
             Err(e) => {
@@ -493,15 +494,7 @@ impl Segment {
         // Whatever is at the path now (the truncated file, or anything put there since) goes:
         // nobody else may create the name while we hold its lock.
         unlink(&path);
-        let file = open_nofollow(&path, true, true)
-            .map_err(|e| open_error(&self.name, &path, "cannot create", e))?;
-        let mapping = file
-            .set_len(size as u64)
-            .and_then(|()| Mapping::new(file, size))
-            .map_err(|e| {
-                unlink(&path);
-                open_error(&self.name, &path, "cannot size and map", e)
-            })?;
+        let mapping = create_mapping(&self.name, size)?;
         self.base = mapping.base();
         self.mapping = Some(mapping);
         Ok(self.base)
