@@ -23,7 +23,9 @@
 //! own memory, header and descriptor numbers are checked (and capped) before a reader uses
 //! them, every loop over shared words is bounded, each mailbox request is checked again
 //! against the program's own declaration, and a segment truncated under a process reads as
-//! zeros instead of killing it with SIGBUS.
+//! zeros instead of killing it with SIGBUS. The owner writes its header, descriptor and mailbox
+//! words again from its own memory every 100 ms, and replaces a truncated segment by a new one
+//! at its next cycle.
 
 mod bytes;
 mod codec;
