@@ -145,3 +145,26 @@ fn a_setpoint_written_by_the_hmi_reader_is_applied_retained_and_restored_after_s
     assert!(status.success(), "exit {status:?}\n{stdout}");
     let _ = std::fs::remove_dir_all(&retain);
 }
+
+#[test]
+fn a_final_save_that_fails_makes_tensile_tester_exit_1_and_say_so() {
+    let id = std::process::id();
+    let segment = format!("tt_lost_{id}");
+    let retain = std::env::temp_dir().join(format!("tensile-lost-{id}"));
+    let mut program = start(&segment, &retain);
+    drop(attach(&segment));
+    // The retain directory disappears under the running program (a failed disk does the same).
+    std::fs::remove_dir_all(&retain).expect("the program created its retain directory");
+    let child = program.0.take().expect("running");
+    // SAFETY: kill(2) on the pid of a child we spawned and have not reaped.
+    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGTERM) }, 0);
+    let out = child.wait_with_output().expect("tensile_tester exits");
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert_eq!(out.status.code(), Some(1), "{stdout}\n{stderr}");
+    assert!(stderr.contains("not saved at stop"), "{stderr}");
+    assert!(!stdout.contains("retained values saved"), "{stdout}");
+    let _ = std::fs::remove_dir_all(&retain);
+}

@@ -247,7 +247,10 @@ fn forge_direction(segment: &str, variable: &str, from: &str, to: &str) {
     let text = String::from_utf8(json).unwrap();
     let var = text.find(&format!("\"name\":\"{variable}\"")).unwrap();
     let old = format!("\"direction\":\"{from}\"");
-    let dir = var + text[var..].find(&old).unwrap();
+    let Some(at_old) = text[var..].find(&old) else {
+        return; // still forged from the last try
+    };
+    let dir = var + at_old;
     let new = format!("\"direction\":\"{to}\"");
     file.write_all_at(new.as_bytes(), at + dir as u64).unwrap();
 }
@@ -257,8 +260,19 @@ fn set_waits_for_the_program_and_reports_the_writes_it_refused() {
     let owner = Owner::start("refused");
     let s = owner.segment.as_str();
     // The tool now believes `speed_actual` (a status) may be written; the program knows better.
-    forge_direction(s, "speed_actual", "status", "output");
-    let o = plc(&["set", s, "speed_setpoint=321", "speed_actual=5"]);
+    // The program writes its descriptor again every 100 ms (undoing such damage): forge it
+    // until `plc set` starts quickly enough to read the forgery. A `plc set` that read the
+    // repaired descriptor refuses up front and writes nothing, so trying again is harmless.
+    let mut o = None;
+    for _ in 0..50 {
+        forge_direction(s, "speed_actual", "status", "output");
+        let out = plc(&["set", s, "speed_setpoint=321", "speed_actual=5"]);
+        if !stderr(&out).contains("it is a status variable") {
+            o = Some(out);
+            break;
+        }
+    }
+    let o = o.expect("`plc set` read the forged descriptor once in 50 tries");
     assert!(!o.status.success(), "{}", stdout(&o));
     assert!(
         stderr(&o).contains("`speed_actual` was refused by the program"),
@@ -304,6 +318,57 @@ fn log_stopped_with_ctrl_c_keeps_its_rows() {
         "{}",
         stderr(&o)
     );
+}
+
+#[test]
+fn a_rate_too_small_for_a_period_is_refused_not_a_panic() {
+    let owner = Owner::start("tinyrate");
+    let file = std::env::temp_dir().join(format!("plc-tinyrate-{}.csv", std::process::id()));
+    for command in ["log", "watch"] {
+        let mut args = vec![command, &owner.segment];
+        if command == "log" {
+            args.extend(["counter", "--csv", file.to_str().unwrap()]);
+        }
+        args.extend(["--rate", "1e-300"]);
+        let o = plc(&args);
+        assert_eq!(o.status.code(), Some(1), "{command}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("--rate must be between"),
+            "{}",
+            stderr(&o)
+        );
+    }
+    let _ = std::fs::remove_file(&file);
+}
+
+#[test]
+fn list_shows_a_damaged_segment_instead_of_hiding_it() {
+    let owner = Owner::start("damagedlist");
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .open(format!("/dev/shm/plc.{}", owner.segment))
+        .unwrap();
+    // A descriptor length no tool reads. The program repairs its header every 100 ms, so the
+    // damage is done again until one `plc list` runs in between.
+    let mut shown = None;
+    for _ in 0..50 {
+        file.write_all_at(&u64::MAX.to_le_bytes(), 56).unwrap();
+        let o = plc(&["list"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let out = stdout(&o);
+        let lines: Vec<&str> = out.lines().collect();
+        let at = lines
+            .iter()
+            .position(|l| l.starts_with(&owner.segment))
+            .unwrap_or_else(|| panic!("not listed:\n{out}"));
+        let entry = lines[at..(at + 2).min(lines.len())].join("\n");
+        if entry.contains("damaged") {
+            shown = Some(entry);
+            break;
+        }
+    }
+    let entry = shown.expect("`plc list` saw the damage once in 50 tries");
+    assert!(entry.contains("descriptor"), "{entry}");
 }
 
 #[test]

@@ -40,8 +40,9 @@ use plc_core::convert::can_widen;
 use plc_core::{FixedString, GlobalMemory, IecType, TypeFamily, Value};
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::fs::{self, File};
-use std::io::Write;
+use std::fs::{self, File, OpenOptions};
+use std::io::{Read, Write};
+use std::os::unix::fs::{DirBuilderExt, MetadataExt, OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -68,6 +69,17 @@ pub enum RetainError {
         /// The OS error.
         error: std::io::Error,
     },
+    /// The file or its directory is a symbolic link, not a regular file or directory, belongs
+    /// to another user or is open to other users: it is not used, so that nobody else can
+    /// plant or change retained values, or make the program write elsewhere.
+    Unsafe {
+        /// The file or directory.
+        path: PathBuf,
+        /// What is wrong with it.
+        problem: String,
+        /// What to do.
+        fix: String,
+    },
 }
 
 impl fmt::Display for RetainError {
@@ -81,6 +93,13 @@ impl fmt::Display for RetainError {
             ),
             RetainError::Io { path, error } => {
                 write!(f, "retain file {}: {error}", path.display())
+            }
+            RetainError::Unsafe { path, problem, fix } => {
+                write!(
+                    f,
+                    "refusing retain path {}: it {problem}; {fix}",
+                    path.display()
+                )
             }
         }
     }
@@ -144,6 +163,32 @@ impl RetainReport {
                 temp.display()
             );
         }
+    }
+}
+
+fn euid() -> u32 {
+    // SAFETY: geteuid has no preconditions and cannot fail.
+    unsafe { libc::geteuid() }
+}
+
+/// Creates `path` for writing, mode 0600, failing if anything (a file, a link) is there: a
+/// temporary file is always new. One left by an earlier process of this pid (a pid is reused)
+/// in the checked directory is ours, and removed once.
+fn create_private(path: &Path) -> std::io::Result<File> {
+    let open = || {
+        OpenOptions::new()
+            .write(true)
+            .create_new(true)
+            .mode(0o600)
+            .custom_flags(libc::O_NOFOLLOW)
+            .open(path)
+    };
+    match open() {
+        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+            fs::remove_file(path)?;
+            open()
+        }
+        r => r,
     }
 }
 
@@ -253,9 +298,10 @@ impl RetainStore {
             error,
         };
         let crc = crc32fast::hash(body);
+        let dir = self.checked_dir(false)?;
         let tmp = self.temp_path(std::process::id());
         {
-            let mut f = File::create(&tmp).map_err(io)?;
+            let mut f = create_private(&tmp).map_err(io)?;
             fault_point(FaultPoint::BeforeWrite);
             f.write_all(format!("{HEADER}{crc:08x}\n").as_bytes())
                 .and_then(|()| f.write_all(body))
@@ -266,7 +312,6 @@ impl RetainStore {
         fault_point(FaultPoint::BeforeRename);
         fs::rename(&tmp, &self.path).map_err(io)?;
         fault_point(FaultPoint::BeforeDirFsync);
-        let dir = self.dir();
         File::open(dir).and_then(|d| d.sync_all()).map_err(io)?;
         fault_point(FaultPoint::AfterDirFsync);
         Ok(())
@@ -278,6 +323,60 @@ impl RetainStore {
             Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
             _ => PathBuf::from("."),
         }
+    }
+
+    /// The directory, checked: a directory (not a link) of this user that nobody else may
+    /// write. Anyone who could write it could swap the file. `create`: created 0700 if it is
+    /// missing (at load, when the program starts; a directory that disappears later is an
+    /// error of the save, not silently made again).
+    fn checked_dir(&self, create: bool) -> Result<PathBuf, RetainError> {
+        let dir = self.dir();
+        if create && !dir.exists() {
+            fs::DirBuilder::new()
+                .recursive(true)
+                .mode(0o700)
+                .create(&dir)
+                .map_err(|error| RetainError::Io {
+                    path: dir.clone(),
+                    error,
+                })?;
+        }
+        let meta = fs::symlink_metadata(&dir).map_err(|error| RetainError::Io {
+            path: dir.clone(),
+            error,
+        })?;
+        let unsafe_dir = |problem: String, fix: String| RetainError::Unsafe {
+            path: dir.clone(),
+            problem,
+            fix,
+        };
+        if !meta.is_dir() {
+            return Err(unsafe_dir(
+                "is not a directory (a symbolic link is not followed)".into(),
+                format!(
+                    "give the real directory instead, or remove the link (`rm {}`)",
+                    dir.display()
+                ),
+            ));
+        }
+        if meta.uid() != euid() {
+            return Err(unsafe_dir(
+                format!(
+                    "belongs to uid {}, not to this program's uid {}",
+                    meta.uid(),
+                    euid()
+                ),
+                "use a directory of the program's own user".into(),
+            ));
+        }
+        let mode = meta.permissions().mode() & 0o7777;
+        if mode & 0o022 != 0 {
+            return Err(unsafe_dir(
+                format!("has mode {mode:04o}: other users may write it"),
+                format!("make it private (`chmod 700 {}`)", dir.display()),
+            ));
+        }
+        Ok(dir)
     }
 
     /// The temporary file a save by process `pid` writes before renaming it over the file.
@@ -314,16 +413,60 @@ impl RetainStore {
     }
 
     fn read_body(&self) -> Result<Option<Body>, RetainError> {
-        let data = match fs::read(&self.path) {
-            Ok(d) => d,
+        self.checked_dir(true)?;
+        let io = |error| RetainError::Io {
+            path: self.path.clone(),
+            error,
+        };
+        let mut file = match OpenOptions::new()
+            .read(true)
+            .custom_flags(libc::O_NOFOLLOW)
+            .open(&self.path)
+        {
+            Ok(f) => f,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-            Err(error) => {
-                return Err(RetainError::Io {
+            Err(e) if e.raw_os_error() == Some(libc::ELOOP) => {
+                return Err(RetainError::Unsafe {
                     path: self.path.clone(),
-                    error,
+                    problem: "is a symbolic link".into(),
+                    fix: format!(
+                        "remove the link (`rm {}`) and give the real file's path",
+                        self.path.display()
+                    ),
                 });
             }
+            Err(error) => return Err(io(error)),
         };
+        let meta = file.metadata().map_err(io)?;
+        let mode = meta.permissions().mode() & 0o7777;
+        let problem = if !meta.is_file() {
+            Some("is not a regular file".to_string())
+        } else if meta.uid() != euid() {
+            Some(format!(
+                "belongs to uid {}, not to this program's uid {}",
+                meta.uid(),
+                euid()
+            ))
+        } else if mode & 0o077 != 0 {
+            Some(format!("has mode {mode:04o}, open to other users"))
+        } else {
+            None
+        };
+        if let Some(problem) = problem {
+            return Err(RetainError::Unsafe {
+                path: self.path.clone(),
+                problem,
+                fix: format!(
+                    "check its content, then make it the program's own and private \
+                     (`chown {} {}; chmod 600 {}`)",
+                    euid(),
+                    self.path.display(),
+                    self.path.display()
+                ),
+            });
+        }
+        let mut data = Vec::new();
+        file.read_to_end(&mut data).map_err(io)?;
         let corrupt = |why: &str| RetainError::Corrupt {
             path: self.path.clone(),
             why: why.to_string(),
@@ -347,7 +490,8 @@ impl RetainStore {
     }
 
     /// Loads saved values into `gm`'s nonvolatile variables (others are untouched). A missing
-    /// file is not an error: every nonvolatile variable is then reported new.
+    /// file is not an error: every nonvolatile variable is then reported new, and a missing
+    /// directory is created (mode 0700).
     pub fn load<T: GlobalMemory>(&self, gm: &mut T) -> Result<RetainReport, RetainError> {
         let body = self.read_body()?.unwrap_or(Body { variables: vec![] });
         let mut report = RetainReport {
@@ -472,8 +616,10 @@ fn fault_point(_: FaultPoint) {}
 /// changed, and a last time when finished.
 pub struct RetainWriter<I: Send + 'static> {
     tx: Option<mpsc::Sender<Option<I>>>,
-    thread: Option<JoinHandle<()>>,
+    /// Returns the error of the last save at stop, if it failed.
+    thread: Option<JoinHandle<Result<(), RetainError>>>,
     failed_saves: Arc<AtomicU64>,
+    path: PathBuf,
 }
 
 impl<I: Copy + Send + 'static> RetainWriter<I> {
@@ -496,11 +642,13 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                 // A failed save (disk full, directory gone) keeps the values pending: they are
                 // tried again at the next interval, never dropped, and the failure is counted.
                 let save = |image: I, pending: &mut Option<I>| {
-                    if let Err(e) = store.save(&T::from_image(&image)) {
+                    let result = store.save(&T::from_image(&image));
+                    if let Err(e) = &result {
                         failed.fetch_add(1, Ordering::Relaxed);
                         log::error!("{e}; the values are kept and saved again later");
                         pending.get_or_insert(image);
                     }
+                    result
                 };
                 loop {
                     let wait = if pending.is_some() {
@@ -511,16 +659,17 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                     match rx.recv_timeout(wait) {
                         Ok(Some(image)) => pending = Some(image),
                         Ok(None) | Err(RecvTimeoutError::Disconnected) => {
-                            if let Some(image) = pending.take() {
-                                save(image, &mut pending);
-                            }
-                            return;
+                            return match pending.take() {
+                                Some(image) => save(image, &mut pending),
+                                None => Ok(()),
+                            };
                         }
                         Err(RecvTimeoutError::Timeout) => {}
                     }
                     if pending.is_some() && due(last_save) {
                         if let Some(image) = pending.take() {
-                            save(image, &mut pending);
+                            // A failure was counted and printed; the values stay pending.
+                            let _ = save(image, &mut pending);
                         }
                         last_save = Some(Instant::now());
                     }
@@ -543,6 +692,7 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
             tx: Some(tx),
             thread,
             failed_saves,
+            path,
         }
     }
 
@@ -559,16 +709,27 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
         }
     }
 
-    /// Saves `last` (or what is pending) and stops the thread.
-    pub fn finish(mut self, last: Option<I>) {
+    /// Saves `last` (or what is pending) and stops the thread. An error if that last save
+    /// failed: the file then holds the values of the last save that succeeded, and the caller
+    /// must say so rather than report the values saved.
+    pub fn finish(mut self, last: Option<I>) -> Result<(), RetainError> {
         if let Some(tx) = self.tx.take() {
             if let Some(image) = last {
                 let _ = tx.send(Some(image));
             }
             let _ = tx.send(None);
         }
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
+        match self.thread.take().map(JoinHandle::join) {
+            Some(Ok(result)) => result,
+            Some(Err(_)) => Err(RetainError::Io {
+                path: self.path.clone(),
+                error: std::io::Error::other("the retain writer thread panicked"),
+            }),
+            // The thread never started: nothing was ever saved.
+            None => Err(RetainError::Io {
+                path: self.path.clone(),
+                error: std::io::Error::other("the retain writer never started"),
+            }),
         }
     }
 }

@@ -6,7 +6,7 @@
 
 use super::hand_seqlock::HandSeqlock;
 use plc_core::GlobalMemory;
-use plc_io::shm::SharedGlobalMemory;
+use plc_io::shm::{SharedGlobalMemory, ShmOwner};
 use std::hint::black_box;
 use zerocopy::IntoBytes;
 
@@ -34,7 +34,7 @@ struct Aligned<I>(I);
 
 /// The framework's cycle on a real shared-memory segment.
 pub struct FrameworkCycle<T: GlobalMemory> {
-    owner: SharedGlobalMemory<T>,
+    owner: ShmOwner<T>,
     gm: T,
     image_in: Box<Aligned<T::Image>>,
     image_out: Box<Aligned<T::Image>>,

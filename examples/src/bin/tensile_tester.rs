@@ -10,7 +10,8 @@
 //! `examples/bus/tensile_tester.toml`), `--interface NAME` (real NIC instead of the simulated
 //! bus), `--period-us N` (cycle period, default 1000), `--cycles N` (stop after N cycles),
 //! `--segment NAME` (shared memory for HMIs, default `tensile_tester`), `--retain DIR`
-//! (directory of the retain file, default a temporary directory).
+//! (directory of the retain file, default `plc-vars/tensile_tester` in the user's state
+//! directory, `/var/lib` for root; created private, and refused if others may write it).
 //!
 //! On the simulated bus (EK1100, EL1004, EL2889, EL2004) a model of the machine runs on a
 //! thread: it reads the drive outputs and sets the limit switches, so the program runs one
@@ -79,6 +80,22 @@ fn parse_args() -> Result<Args, String> {
     Ok(args)
 }
 
+/// The retain directory when none is given: the user's own state directory (never the shared
+/// temporary directory, where another user could create it first).
+fn default_retain_dir() -> PathBuf {
+    // SAFETY: geteuid has no preconditions and cannot fail.
+    let base = if unsafe { libc::geteuid() } == 0 {
+        PathBuf::from("/var/lib")
+    } else if let Some(state) = std::env::var_os("XDG_STATE_HOME").filter(|s| !s.is_empty()) {
+        PathBuf::from(state)
+    } else if let Some(home) = std::env::var_os("HOME").filter(|s| !s.is_empty()) {
+        PathBuf::from(home).join(".local/state")
+    } else {
+        PathBuf::from(".")
+    };
+    base.join("plc-vars/tensile_tester")
+}
+
 fn main() -> ExitCode {
     init_logging();
     match run() {
@@ -119,11 +136,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     };
     let backend = EtherCatBackend::<Gm>::new(config, transport, options)?;
     let links = backend.bindings().count();
-    let retain_dir = args
-        .retain
-        .clone()
-        .unwrap_or_else(|| std::env::temp_dir().join("tensile_tester"));
-    std::fs::create_dir_all(&retain_dir)?;
+    let retain_dir = args.retain.clone().unwrap_or_else(default_retain_dir);
     let retain = retain_dir.join("tensile_tester.retain");
     println!(
         "tensile_tester: {} with {links} links, period {} us; segment `{}` (try `plc watch {}`), \

@@ -1,7 +1,16 @@
 //! `plc list [segment] [--json]`.
 
 use super::{Error, type_text};
-use plc_io::shm::{DynSegment, list_segments};
+use plc_io::shm::{DynSegment, SegmentInfo, list_segments};
+
+/// The state column: the owner's, or `damaged` for a segment that cannot be read.
+fn state(s: &SegmentInfo) -> &'static str {
+    if s.problem.is_some() {
+        "damaged"
+    } else {
+        s.state.name()
+    }
+}
 
 pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
     let Some(segment) = segment else {
@@ -11,8 +20,10 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
                 .iter()
                 .map(|s| {
                     serde_json::json!({
-                        "name": s.name, "pid": s.pid, "state": s.state.name(),
+                        "name": s.name, "pid": s.pid, "state": state(s),
                         "cycles": s.cycle_count, "variables": s.variables,
+                        "retain_failures": s.retain_failures,
+                        "problem": s.problem.as_ref().map(|p| p.to_string()),
                     })
                 })
                 .collect();
@@ -23,14 +34,22 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
             println!("no running plc-vars programs");
         }
         println!(
-            "{:<24} {:>8} {:<8} {:>12} {:>9}",
-            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES"
+            "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14}",
+            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES", "FAILED SAVES"
         );
-        for s in all {
+        for s in &all {
             println!(
-                "{:<24} {:>8} {:<8} {:>12} {:>9}",
-                s.name, s.pid, s.state, s.cycle_count, s.variables
+                "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14}",
+                s.name,
+                s.pid,
+                state(s),
+                s.cycle_count,
+                s.variables,
+                s.retain_failures
             );
+            if let Some(problem) = &s.problem {
+                println!("  {problem}");
+            }
         }
         return Ok(());
     };

@@ -4,7 +4,7 @@
 //! only ask the loop to end, so the rows still buffered are written before it exits. The file is
 //! also flushed every second, so `tail -f` follows it and a `kill -9` loses at most a second.
 
-use super::{Error, resolve, show};
+use super::{Error, period_of, resolve, show};
 use plc_io::StopHandle;
 use plc_io::shm::DynSegment;
 use std::io::Write;
@@ -30,9 +30,7 @@ pub fn run(
     rate: f64,
     seconds: Option<f64>,
 ) -> Result<(), Error> {
-    if !(rate > 0.0 && rate <= 10_000.0) {
-        return Err("--rate must be between 0 and 10000 samples per second".into());
-    }
+    let period = period_of(rate, 10_000.0, "samples")?;
     let stop = StopHandle::default();
     stop.stop_on_signals()
         .map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
@@ -52,7 +50,6 @@ pub fn run(
     writeln!(out, "{}", header.join(","))?;
     out.flush()?;
     let start = Instant::now();
-    let period = Duration::from_secs_f64(1.0 / rate);
     let mut next = start;
     let mut flushed = start;
     let mut rows = 0u64;

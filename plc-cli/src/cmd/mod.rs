@@ -14,6 +14,19 @@ use plc_io::shm::{DynSegment, VarDescriptor};
 /// The error type of the commands: a message for the user.
 pub type Error = Box<dyn std::error::Error>;
 
+/// The period of `--rate` (per second, at most `max`, at least once an hour: the period of a
+/// smaller rate does not fit a `Duration`, and nobody waits longer for one line).
+pub fn period_of(rate: f64, max: f64, what: &str) -> Result<std::time::Duration, Error> {
+    const MIN: f64 = 1.0 / 3600.0;
+    if !(MIN..=max).contains(&rate) {
+        return Err(format!(
+            "--rate must be between 1/3600 (one an hour) and {max} {what} per second, not {rate}"
+        )
+        .into());
+    }
+    Ok(std::time::Duration::from_secs_f64(1.0 / rate))
+}
+
 /// `name` or `name[element]`, resolved against the segment's descriptor.
 pub fn resolve<'a>(
     seg: &'a DynSegment,

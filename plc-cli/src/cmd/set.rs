@@ -21,20 +21,11 @@ pub fn check(seg: &DynSegment, assignment: &str) -> Result<Checked, Error> {
         .split_once('=')
         .ok_or_else(|| format!("`{assignment}`: write `name=value`"))?;
     let (_, var, element) = resolve(seg, spec.trim())?;
-    if !var.writable_from_outside() {
-        let why = if var.access == plc_core::Access::ReadOnly {
-            "it is read-only"
-        } else if var.direction == plc_core::Direction::Input {
-            "it is an input: the hardware writes it every cycle"
-        } else {
-            "it is a status variable: the program reports it"
-        };
-        return Err(format!("`{}` cannot be written: {why}", var.name).into());
-    }
-    let value = Value::parse(text, var.iec_type)
-        .and_then(|v| v.fit(var.iec_type, var.string_capacity()))
-        .map_err(|e| format!("`{}`: {e}", var.name))?;
-    Ok((var.name.clone(), element.unwrap_or(0), value))
+    let element = element.unwrap_or(0);
+    // Parsed as the variable's type; every other check is the library's, as the owner makes it.
+    let value = Value::parse(text, var.iec_type).map_err(|e| format!("`{}`: {e}", var.name))?;
+    let value = seg.check(&var.name, element, value)?;
+    Ok((var.name.clone(), element, value))
 }
 
 /// How long to wait for the program to take the writes: fifty of its cycles, at least a second

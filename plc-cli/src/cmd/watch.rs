@@ -3,7 +3,7 @@
 //! checks), `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
 //! changed in the last second are highlighted.
 
-use super::{Error, set, show, type_text};
+use super::{Error, period_of, set, show, type_text};
 use plc_io::shm::DynSegment;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
 use ratatui::layout::{Constraint, Layout};
@@ -237,13 +237,10 @@ impl Watch {
 }
 
 pub fn run(segment: &str, filter: Option<String>, rate: f64) -> Result<(), Error> {
-    if !(rate > 0.0 && rate <= 1000.0) {
-        return Err("--rate must be between 0 and 1000 refreshes per second".into());
-    }
+    let period = period_of(rate, 1000.0, "refreshes")?;
     let seg = DynSegment::attach(segment)?;
     let mut w = Watch::new(seg, filter);
     w.refresh()?;
-    let period = Duration::from_secs_f64(1.0 / rate);
     let mut terminal = ratatui::init();
     let outcome = (|| -> Result<Option<String>, Error> {
         let mut next = Instant::now();

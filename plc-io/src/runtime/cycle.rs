@@ -5,7 +5,7 @@ use super::{
     Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
 };
 use crate::retain::{RetainStore, RetainWriter};
-use crate::shm::{RunState, SharedGlobalMemory};
+use crate::shm::{RunState, SharedGlobalMemory, ShmOwner};
 use plc_core::GlobalMemory;
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -24,7 +24,7 @@ where
     image: Box<Aligned<T::Image>>,
     retained: RetainedBytes,
     retain: Option<RetainWriter<T::Image>>,
-    shm: Option<SharedGlobalMemory<T>>,
+    shm: Option<ShmOwner<T>>,
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
@@ -111,10 +111,16 @@ where
         ctx.bus_fault = io.bus_fault;
         ctx.bus_state = io.bus_state;
         ctx.gm.unpack_bits();
-        if let Some(shm) = self.shm.as_mut() {
-            shm.apply_mailbox(&mut ctx.gm);
-        }
-        if let Err(panic) = catch_unwind(AssertUnwindSafe(|| tick(ctx))) {
+        // The mailbox is applied under the same protection as the tick: whatever a write
+        // does, a panic still zeroes the outputs and puts the bus in a safe state.
+        let shm = &mut self.shm;
+        let step = catch_unwind(AssertUnwindSafe(|| {
+            if let Some(shm) = shm.as_mut() {
+                shm.apply_mailbox(&mut ctx.gm);
+            }
+            tick(ctx)
+        }));
+        if let Err(panic) = step {
             return Err(self.fault(backend, panic));
         }
         ctx.gm.pack_bits();
@@ -164,11 +170,19 @@ where
         result: Result<(), RuntimeError>,
     ) -> Result<T, RuntimeError> {
         backend.stop();
-        if let Some(writer) = self.retain {
+        let saved = match self.retain {
             // The last completed cycle's image. After a panic `gm` holds a half-done tick and
             // zeroed outputs, which must not become the values the next start restores.
-            writer.finish(Some(self.image.0));
-        }
+            Some(writer) => {
+                let before = writer.failed_saves();
+                let saved = writer.finish(Some(self.image.0));
+                if let Some(shm) = &self.shm {
+                    shm.set_retain_failures(before + u64::from(saved.is_err()));
+                }
+                saved
+            }
+            None => Ok(()),
+        };
         if let Some(shm) = &self.shm {
             shm.set_run_state(if result.is_ok() {
                 RunState::Stopped
@@ -177,7 +191,10 @@ where
             });
         }
         drop(self.shm);
-        result.map(|()| self.ctx.gm)
+        // A panic is the first thing to report; a lost final save comes next.
+        result?;
+        saved.map_err(RuntimeError::RetainNotSaved)?;
+        Ok(self.ctx.gm)
     }
 
     fn publish_image(&self) {
@@ -197,6 +214,9 @@ where
         self.ctx.stats.add(took, self.ctx.cycle);
         if let Some(shm) = &self.shm {
             shm.report(self.ctx.cycle, &self.ctx.stats, io);
+            if let Some(writer) = &self.retain {
+                shm.set_retain_failures(writer.failed_saves());
+            }
         }
     }
 }

@@ -32,6 +32,9 @@ pub enum RuntimeError {
     Shm(ShmError),
     /// The retain file could not be loaded.
     Retain(RetainError),
+    /// The retained values could not be saved when the program stopped: the file holds those
+    /// of the last save that succeeded.
+    RetainNotSaved(RetainError),
     /// Realtime scheduling was asked for but not permitted.
     Realtime(String),
     /// The program panicked in its tick: outputs were zeroed and the I/O put in a safe state.
@@ -49,6 +52,11 @@ impl fmt::Display for RuntimeError {
             RuntimeError::Io(e) => write!(f, "I/O did not start: {e}"),
             RuntimeError::Shm(e) => write!(f, "{e}"),
             RuntimeError::Retain(e) => write!(f, "{e}"),
+            RuntimeError::RetainNotSaved(e) => write!(
+                f,
+                "the retained values were not saved at stop: {e}; the file keeps the values of \
+                 the last save that succeeded"
+            ),
             RuntimeError::Realtime(e) => write!(f, "{e}"),
             RuntimeError::Panicked { cycle, message } => write!(
                 f,

@@ -77,6 +77,23 @@ impl DynSegment {
         self.view.write_element(name, 0, value).map(drop)
     }
 
+    /// Checks a write of one element as [`write_element`](Self::write_element) would (unknown
+    /// variable, read-only, input, status, element, kind, range, string capacity), without
+    /// sending it: tools check a whole batch first and send none of it if one is refused.
+    /// Returns the value as it would be sent (fitted to the variable's type).
+    ///
+    /// ```no_run
+    /// let seg = plc_io::shm::DynSegment::attach("tensile_tester")?;
+    /// let value = seg.check("speed_setpoint", 0, plc_core::Value::Int(2))?;
+    /// assert_eq!(value, plc_core::Value::Real(2.0));
+    /// # Ok::<(), plc_io::shm::ShmError>(())
+    /// ```
+    pub fn check(&self, name: &str, element: usize, value: Value) -> Result<Value, ShmError> {
+        self.view
+            .check_element(name, element, value)
+            .map(|(_, v)| v)
+    }
+
     /// Posts a write of one array element.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
         self.view.write_element(name, element, value).map(drop)

@@ -110,6 +110,28 @@ pub enum ShmError {
     WriteReclaimed(String),
     /// Only the owner may do this.
     NotOwner(String),
+    /// The operating system refused access to the segment's file.
+    PermissionDenied {
+        /// Segment.
+        name: String,
+        /// The file.
+        path: std::path::PathBuf,
+    },
+    /// A file or directory of the segment is a symbolic link, is not a regular file, belongs
+    /// to another user or is open to other users: it is not used.
+    Unsafe {
+        /// Segment.
+        name: String,
+        /// The file or directory.
+        path: std::path::PathBuf,
+        /// What is wrong with it.
+        problem: String,
+        /// What to do.
+        fix: String,
+    },
+    /// The mailbox's shared words are damaged (another process wrote over them): a write could
+    /// not be posted.
+    MailboxDamaged(String),
 }
 
 impl ShmError {
@@ -232,6 +254,27 @@ impl fmt::Display for ShmError {
             ShmError::NotOwner(n) => {
                 write!(f, "only the program that created segment `{n}` may do this")
             }
+            ShmError::PermissionDenied { name, path } => write!(
+                f,
+                "segment `{name}`: permission denied opening {}: run this as the program's user \
+                 (or root)",
+                path.display()
+            ),
+            ShmError::Unsafe {
+                name,
+                path,
+                problem,
+                fix,
+            } => write!(
+                f,
+                "segment `{name}`: refusing {}: it {problem}; {fix}",
+                path.display()
+            ),
+            ShmError::MailboxDamaged(n) => write!(
+                f,
+                "the mailbox of segment `{n}` is damaged (another process wrote over it): the \
+                 write was not posted; restart the program that owns it"
+            ),
         }
     }
 }

@@ -47,6 +47,7 @@ pub const S_BUS_FLAGS: usize = STATUS + 80;
 pub const S_HEARTBEAT_NS: usize = STATUS + 88;
 pub const S_MB_APPLIED: usize = STATUS + 96;
 pub const S_MB_REJECTED: usize = STATUS + 104;
+pub const S_RETAIN_FAILED: usize = STATUS + 112;
 
 pub const IMAGE: usize = 192;
 

@@ -42,6 +42,8 @@ pub enum PostError {
     Full,
     /// The owner skipped this request because it took too long to commit.
     Reclaimed,
+    /// The ring's shared words do not fit together (another process wrote over them).
+    Damaged,
 }
 
 /// A posted request's place in the queue, to ask what became of it
@@ -170,21 +172,38 @@ fn checksum(ticket: u64, index_element: u64, kind: u64, num: u64, text: &[u8]) -
     h >> 8
 }
 
+/// How long a producer tries to claim a slot before it takes the ring's words to be damaged.
+/// Legitimate contention resolves in microseconds; words that another process wrote over
+/// (a slot sequence ahead of the head that never catches up) would make it spin for ever.
+const CLAIM_PATIENCE: Duration = Duration::from_millis(200);
+
 /// Posts a request (any process). Returns its ticket.
 pub fn post(base: &Base, off: &Offsets, request: &Request) -> Result<Ticket, PostError> {
     let head = base.word(off.mb_head());
+    let mut deadline = None;
+    let mut spins = 0u32;
     let pos = loop {
         let pos = head.load(Acquire);
         let seq = base.word(off.slot(pos as usize)).load(Acquire);
+        let next = pos.checked_add(1).ok_or(PostError::Damaged)?;
         if seq == pos {
             if head
-                .compare_exchange_weak(pos, pos + 1, AcqRel, Relaxed)
+                .compare_exchange_weak(pos, next, AcqRel, Relaxed)
                 .is_ok()
             {
                 break pos;
             }
         } else if seq < pos {
             return Err(PostError::Full);
+        }
+        // Another producer moved the head since we read it, or the words are damaged: bounded.
+        spins += 1;
+        if spins.is_multiple_of(64) {
+            let now = Instant::now();
+            if now > *deadline.get_or_insert(now + CLAIM_PATIENCE) {
+                return Err(PostError::Damaged);
+            }
+            std::thread::yield_now();
         } else {
             std::hint::spin_loop();
         }
@@ -203,7 +222,7 @@ pub fn post(base: &Base, off: &Offsets, request: &Request) -> Result<Ticket, Pos
     #[cfg(feature = "fault-injection")]
     hooks::before_commit();
     base.word(slot)
-        .compare_exchange(pos, pos + 1, Release, Relaxed)
+        .compare_exchange(pos, pos.wrapping_add(1), Release, Relaxed)
         .map(|_| Ticket(pos))
         .map_err(|_| PostError::Reclaimed)
 }
@@ -225,7 +244,7 @@ fn outcome_word(ticket: u64, outcome: Outcome) -> u64 {
 pub fn outcome(base: &Base, off: &Offsets, ticket: Ticket) -> Outcome {
     let pos = ticket.0;
     let slot = off.slot(pos as usize);
-    if base.word(slot).load(Acquire) <= pos + 1 {
+    if base.word(slot).load(Acquire) <= pos.saturating_add(1) {
         return Outcome::Pending;
     }
     let w = base.word(slot + 8).load(Relaxed);
@@ -240,9 +259,18 @@ pub fn outcome(base: &Base, off: &Offsets, ticket: Ticket) -> Outcome {
 }
 
 /// The owner's side: takes committed requests in ticket order.
+///
+/// Its position and counters live in its own memory: the shared words are written from them
+/// for tools and never read back, so another process cannot steer the owner through them.
 #[derive(Debug, Default)]
 pub struct Consumer {
+    /// The next ticket to take.
+    tail: u64,
     stuck_since: Option<(u64, Instant)>,
+    /// Requests applied.
+    pub(crate) applied: u64,
+    /// Requests refused.
+    pub(crate) rejected: u64,
     /// Requests skipped because their producer never committed them.
     pub reclaimed: u64,
     /// Requests dropped because their checksum did not match.
@@ -250,8 +278,9 @@ pub struct Consumer {
 }
 
 impl Consumer {
-    /// Takes every committed request, in order, calling `apply` for each intact one; `apply`
-    /// says whether it was applied. Returns how many were handed to `apply`.
+    /// Takes every committed request, in order (at most one ring's worth per call), calling
+    /// `apply` for each intact one; `apply` says whether it was applied. Returns how many were
+    /// handed to `apply`.
     pub fn drain(
         &mut self,
         base: &Base,
@@ -259,12 +288,12 @@ impl Consumer {
         mut apply: impl FnMut(Request) -> bool,
     ) -> usize {
         let mut n = 0;
-        loop {
-            let pos = base.load(off.mb_tail());
+        for _ in 0..SLOTS {
+            let pos = self.tail;
             let slot = off.slot(pos as usize);
             let seq_word = base.word(slot);
             let seq = seq_word.load(Acquire);
-            if seq == pos + 1 {
+            if seq == pos.wrapping_add(1) {
                 let r = |o: usize| base.word(slot + o).load(Relaxed);
                 let (index_element, kind_sum, num) = (r(8), r(16), r(24));
                 let mut text = [0u8; TEXT];
@@ -283,17 +312,16 @@ impl Consumer {
                         Outcome::Rejected
                     }
                 } else {
-                    base.word(off.mb_discarded()).fetch_add(1, Relaxed);
-                    self.discarded += 1;
+                    self.discarded = self.discarded.wrapping_add(1);
+                    base.store(off.mb_discarded(), self.discarded);
                     Outcome::Discarded
                 };
                 // Before the slot is released, so the next producer's payload overwrites the
                 // outcome and never the other way round.
                 base.word(slot + 8)
                     .store(outcome_word(pos, outcome), Relaxed);
-                seq_word.store(pos + SLOTS as u64, Release);
-                base.store(off.mb_tail(), pos + 1);
-                self.stuck_since = None;
+                seq_word.store(pos.wrapping_add(SLOTS as u64), Release);
+                self.advance(base, off);
             } else if seq == pos && base.load(off.mb_head()) > pos {
                 // Claimed, not committed: a slow or dead producer.
                 let since = match self.stuck_since {
@@ -307,12 +335,12 @@ impl Consumer {
                     break;
                 }
                 if seq_word
-                    .compare_exchange(pos, pos + SLOTS as u64, AcqRel, Relaxed)
+                    .compare_exchange(pos, pos.wrapping_add(SLOTS as u64), AcqRel, Relaxed)
                     .is_ok()
                 {
-                    base.store(off.mb_tail(), pos + 1);
-                    base.word(off.mb_reclaimed()).fetch_add(1, Relaxed);
-                    self.reclaimed += 1;
+                    self.reclaimed = self.reclaimed.wrapping_add(1);
+                    base.store(off.mb_reclaimed(), self.reclaimed);
+                    self.advance(base, off);
                 }
                 self.stuck_since = None;
             } else {
@@ -320,6 +348,50 @@ impl Consumer {
             }
         }
         n
+    }
+
+    /// Starts over on a new, empty ring (the segment was replaced); the counts go on.
+    pub(crate) fn restart(&mut self, base: &Base, off: &Offsets) {
+        self.tail = 0;
+        self.stuck_since = None;
+        init(base, off);
+        base.store(off.mb_reclaimed(), self.reclaimed);
+        base.store(off.mb_discarded(), self.discarded);
+    }
+
+    /// Writes the ring's tail and counters again from the owner's memory, and starts the ring
+    /// over, empty, at the owner's position if its words no longer fit together: the head
+    /// within one lap of the tail, and every slot of that lap free or claimed (its sequence the
+    /// position or one more). Anything else is another process's doing, and would make
+    /// producers give up for ever.
+    pub(crate) fn repair(&mut self, base: &Base, off: &Offsets) {
+        let tail = self.tail;
+        base.store(off.mb_tail(), tail);
+        base.store(off.mb_reclaimed(), self.reclaimed);
+        base.store(off.mb_discarded(), self.discarded);
+        let lap = SLOTS as u64;
+        let head = base.load(off.mb_head());
+        let head_fits = head >= tail && head - tail <= lap;
+        let slots_fit = (0..lap).all(|i| {
+            let pos = tail.wrapping_add(i);
+            let seq = base.load(off.slot(pos as usize));
+            seq == pos || seq == pos.wrapping_add(1)
+        });
+        if !(head_fits && slots_fit) {
+            base.store(off.mb_head(), tail);
+            for i in 0..lap {
+                let pos = tail.wrapping_add(i);
+                base.store(off.slot(pos as usize), pos);
+            }
+            self.stuck_since = None;
+        }
+    }
+
+    /// Moves past the slot just taken, and tells the producers.
+    fn advance(&mut self, base: &Base, off: &Offsets) {
+        self.tail = self.tail.wrapping_add(1);
+        base.store(off.mb_tail(), self.tail);
+        self.stuck_since = None;
     }
 }
 

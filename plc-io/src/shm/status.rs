@@ -99,6 +99,9 @@ pub struct Status {
     pub writes_pending: u64,
     /// Generation: increases with every new owner of the name (a restart or a takeover).
     pub generation: u64,
+    /// Saves of retained values that failed so far (each is tried again; one that fails at
+    /// stop makes the program exit with an error).
+    pub retain_failures: u64,
 }
 
 /// The heartbeat clock, CLOCK_MONOTONIC_COARSE: one clock for every process on the machine
@@ -152,6 +155,7 @@ impl Status {
             writes_discarded: base.load(off.mb_discarded()),
             writes_pending: super::mailbox::pending(base, off),
             generation: base.load(H_GENERATION),
+            retain_failures: base.load(S_RETAIN_FAILED),
         }
     }
 

@@ -15,6 +15,12 @@ use std::time::{Duration, Instant};
 
 /// How long a reader waits for a consistent image before it reports the owner stuck.
 pub const SNAPSHOT_PATIENCE: Duration = Duration::from_millis(500);
+/// The largest descriptor a reader reads. A program with thousands of variables has a
+/// descriptor of a few megabytes; a larger length is taken to be damage, not read, so another
+/// process cannot make a tool allocate what it likes.
+pub const MAX_DESCRIPTOR: usize = 64 << 20;
+/// The largest image a reader copies, for the same reason (process images are kilobytes).
+pub const MAX_IMAGE: usize = 256 << 20;
 /// How often a reader re-checks that the owner is alive.
 const LIVENESS_EVERY: Duration = Duration::from_millis(20);
 
@@ -77,7 +83,25 @@ impl View {
                 why: format!("its header gives an image size of {header_image_size} bytes"),
             })?;
         let image_size = off.image_size;
+        if image_size > MAX_IMAGE {
+            return Err(ShmError::Corrupt {
+                name,
+                why: format!(
+                    "its header gives an image of {image_size} bytes, more than the {MAX_IMAGE} \
+                     a tool reads"
+                ),
+            });
+        }
         let (d_off, d_len) = (base.load(H_DESC_OFFSET), base.load(H_DESC_LEN));
+        if d_len > MAX_DESCRIPTOR as u64 {
+            return Err(ShmError::Corrupt {
+                name,
+                why: format!(
+                    "its header gives a descriptor of {d_len} bytes, more than the \
+                     {MAX_DESCRIPTOR} a tool reads"
+                ),
+            });
+        }
         let d_end = d_off.saturating_add(d_len);
         let needed = usize::try_from(d_end)
             .unwrap_or(usize::MAX)
@@ -221,13 +245,14 @@ impl View {
         Ok(codec::decode(&image, var, element).unwrap_or(Value::Bool(false)))
     }
 
-    /// Checks a write as the owner would and posts it to the mailbox.
-    pub fn write_element(
+    /// Checks a write as the owner would, without posting it: the variable's index and the
+    /// value as it will be sent (fitted to the variable's type).
+    pub fn check_element(
         &self,
         name: &str,
         element: usize,
         value: Value,
-    ) -> Result<Ticket, ShmError> {
+    ) -> Result<(usize, Value), ShmError> {
         let index = self.var_index(name)?;
         let var = &self.desc.variables[index];
         if !var.writable_from_outside() {
@@ -250,6 +275,17 @@ impl View {
                 variable: var.name.clone(),
                 error,
             })?;
+        Ok((index, value))
+    }
+
+    /// Checks a write as the owner would and posts it to the mailbox.
+    pub fn write_element(
+        &self,
+        name: &str,
+        element: usize,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
+        let (index, value) = self.check_element(name, element, value)?;
         self.post(index, element, value)
     }
 
@@ -264,6 +300,7 @@ impl View {
         mailbox::post(&self.base, &self.off, &request).map_err(|e| match e {
             PostError::Full => ShmError::MailboxFull(self.name().to_string()),
             PostError::Reclaimed => ShmError::WriteReclaimed(self.name().to_string()),
+            PostError::Damaged => ShmError::MailboxDamaged(self.name().to_string()),
         })
     }
 
