@@ -37,18 +37,22 @@
 //! ```
 
 use plc_core::convert::can_widen;
-use plc_core::{FixedString, GlobalMemory, IecType, TypeFamily, Value};
+use plc_core::{GlobalMemory, IecType, Value};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::fs::{self, File, OpenOptions};
 use std::io::{Read, Write};
 use std::os::unix::fs::{DirBuilderExt, MetadataExt, OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
-use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::{self, RecvTimeoutError};
-use std::thread::JoinHandle;
-use std::time::{Duration, Instant};
+
+mod files;
+mod values;
+mod writer;
+
+pub use writer::RetainWriter;
+
+use files::{FaultPoint, create_private, euid, fault_point, process_alive};
+use values::{from_json, to_json, widen};
 
 const HEADER: &str = "plc-vars retain v1 crc32=";
 
@@ -165,89 +169,6 @@ impl RetainReport {
         }
     }
 }
-
-fn euid() -> u32 {
-    // SAFETY: geteuid has no preconditions and cannot fail.
-    unsafe { libc::geteuid() }
-}
-
-/// Creates `path` for writing, mode 0600, failing if anything (a file, a link) is there: a
-/// temporary file is always new. One left by an earlier process of this pid (a pid is reused)
-/// in the checked directory is ours, and removed once.
-fn create_private(path: &Path) -> std::io::Result<File> {
-    let open = || {
-        OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .mode(0o600)
-            .custom_flags(libc::O_NOFOLLOW)
-            .open(path)
-    };
-    match open() {
-        Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-            fs::remove_file(path)?;
-            open()
-        }
-        r => r,
-    }
-}
-
-/// Whether process `pid` exists (a signal 0 reaches it, or exists but is not ours to signal).
-fn process_alive(pid: u32) -> bool {
-    let Ok(pid) = i32::try_from(pid) else {
-        return false;
-    };
-    // SAFETY: signal 0 only checks that the process exists; nothing is delivered.
-    let reached = unsafe { libc::kill(pid, 0) } == 0;
-    reached || std::io::Error::last_os_error().raw_os_error() == Some(libc::EPERM)
-}
-
-fn to_json(v: &Value) -> serde_json::Value {
-    match *v {
-        Value::Bool(b) => b.into(),
-        Value::Int(i) => i.into(),
-        Value::UInt(u) => u.into(),
-        Value::Real(r) if r.is_finite() => r.into(),
-        Value::Real(r) => r.to_string().into(),
-        Value::Text(t) => t.as_str().into(),
-    }
-}
-
-/// A saved value, read as the type it was saved as: a STRING whose text is `inf` stays text, a
-/// REAL saved as `"NaN"` (JSON has no NaN) is a number.
-fn from_json(v: &serde_json::Value, saved_as: IecType) -> Option<Value> {
-    use serde_json::Value as J;
-    Some(match (saved_as.family(), v) {
-        (TypeFamily::Bool, J::Bool(b)) => Value::Bool(*b),
-        (TypeFamily::SignedInt, J::Number(n)) => Value::Int(n.as_i64()?),
-        (TypeFamily::UnsignedInt | TypeFamily::BitString, J::Number(n)) => Value::UInt(n.as_u64()?),
-        (TypeFamily::Real, J::Number(n)) => Value::Real(n.as_f64()?),
-        (TypeFamily::Real, J::String(s)) => Value::Real(s.parse::<f64>().ok()?),
-        (TypeFamily::String, J::String(s)) => {
-            let mut t = FixedString::<255>::new();
-            t.try_set(s).ok()?;
-            Value::Text(t)
-        }
-        _ => return None,
-    })
-}
-
-/// Converts a saved value of type `from` for a variable now of type `to`, by IEC 61131-3's
-/// widening (integer to wider integer, to real, REAL to LREAL). Other changes return `None`.
-fn widen(value: Value, from: IecType, to: IecType) -> Option<Value> {
-    if from == to {
-        return Some(value);
-    }
-    if !can_widen(from, to) {
-        return None;
-    }
-    Some(match (value, to.is_real()) {
-        (Value::Int(i), true) => Value::Real(i as f64),
-        (Value::UInt(u), true) => Value::Real(u as f64),
-        (v, _) => v,
-    })
-}
-
 /// The retain file of a program.
 #[derive(Clone, Debug)]
 pub struct RetainStore {
@@ -578,169 +499,5 @@ impl RetainStore {
             }
         }
         Ok(report)
-    }
-}
-
-/// The steps of a save, where the `fault-injection` test hook can stop the process.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(not(feature = "fault-injection"), allow(dead_code))]
-enum FaultPoint {
-    /// The temporary file is created, nothing written yet.
-    BeforeWrite = 1,
-    /// Written, not yet fsynced.
-    BeforeFsync = 2,
-    /// Fsynced, not yet renamed over the file.
-    BeforeRename = 3,
-    /// Renamed, the directory not yet fsynced.
-    BeforeDirFsync = 4,
-    /// Done.
-    AfterDirFsync = 5,
-}
-
-/// Test hook (feature `fault-injection`, which only this crate's tests enable): when the
-/// environment variable `PLC_RETAIN_FAULT` holds a step's number, the process aborts there, as
-/// a crash would stop it. Without the feature it is nothing: a production program never aborts
-/// because of its environment.
-#[cfg(feature = "fault-injection")]
-fn fault_point(step: FaultPoint) {
-    if std::env::var("PLC_RETAIN_FAULT").is_ok_and(|s| s == (step as u8).to_string()) {
-        std::process::abort();
-    }
-}
-
-#[cfg(not(feature = "fault-injection"))]
-#[inline(always)]
-fn fault_point(_: FaultPoint) {}
-
-/// Saves retained values on a background thread: at most once per interval, only when they
-/// changed, and a last time when finished.
-pub struct RetainWriter<I: Send + 'static> {
-    tx: Option<mpsc::Sender<Option<I>>>,
-    /// Returns the error of the last save at stop, if it failed.
-    thread: Option<JoinHandle<Result<(), RetainError>>>,
-    failed_saves: Arc<AtomicU64>,
-    path: PathBuf,
-}
-
-impl<I: Copy + Send + 'static> RetainWriter<I> {
-    /// Starts the writer for a program of type `T` (whose image type is `I`).
-    pub fn spawn<T>(store: RetainStore, interval: Duration) -> RetainWriter<T::Image>
-    where
-        T: GlobalMemory<Image = I>,
-    {
-        let (tx, rx) = mpsc::channel::<Option<I>>();
-        let failed_saves = Arc::new(AtomicU64::new(0));
-        let failed = failed_saves.clone();
-        let path = store.path().to_owned();
-        let thread = std::thread::Builder::new()
-            .name("plc-retain".into())
-            .spawn(move || {
-                let mut pending: Option<I> = None;
-                // None: nothing saved yet, so the first change is saved at once.
-                let mut last_save: Option<Instant> = None;
-                let due = |last: Option<Instant>| last.is_none_or(|t| t.elapsed() >= interval);
-                // A failed save (disk full, directory gone) keeps the values pending: they are
-                // tried again at the next interval, never dropped, and the failure is counted.
-                let save = |image: I, pending: &mut Option<I>| {
-                    let result = store.save(&T::from_image(&image));
-                    if let Err(e) = &result {
-                        failed.fetch_add(1, Ordering::Relaxed);
-                        log::error!("{e}; the values are kept and saved again later");
-                        pending.get_or_insert(image);
-                    }
-                    result
-                };
-                loop {
-                    let wait = if pending.is_some() {
-                        last_save.map_or(Duration::ZERO, |t| interval.saturating_sub(t.elapsed()))
-                    } else {
-                        Duration::from_secs(3600)
-                    };
-                    match rx.recv_timeout(wait) {
-                        Ok(Some(image)) => pending = Some(image),
-                        Ok(None) | Err(RecvTimeoutError::Disconnected) => {
-                            return match pending.take() {
-                                Some(image) => save(image, &mut pending),
-                                None => Ok(()),
-                            };
-                        }
-                        Err(RecvTimeoutError::Timeout) => {}
-                    }
-                    if pending.is_some() && due(last_save) {
-                        if let Some(image) = pending.take() {
-                            // A failure was counted and printed; the values stay pending.
-                            let _ = save(image, &mut pending);
-                        }
-                        last_save = Some(Instant::now());
-                    }
-                }
-            });
-        let thread = match thread {
-            Ok(t) => Some(t),
-            Err(e) => {
-                // Without the thread nothing would ever be saved: say so once, loudly.
-                log::error!(
-                    "retain file {}: retained values will not be saved: cannot start the retain \
-                     writer: {e}",
-                    path.display()
-                );
-                failed_saves.fetch_add(1, Ordering::Relaxed);
-                None
-            }
-        };
-        RetainWriter {
-            tx: Some(tx),
-            thread,
-            failed_saves,
-            path,
-        }
-    }
-
-    /// How many saves failed so far (each failure was printed, and its values kept to be
-    /// saved again).
-    pub fn failed_saves(&self) -> u64 {
-        self.failed_saves.load(Ordering::Relaxed)
-    }
-
-    /// Hands over a copy of the image whose nonvolatile values changed (never blocks).
-    pub fn offer(&self, image: I) {
-        if let Some(tx) = &self.tx {
-            let _ = tx.send(Some(image));
-        }
-    }
-
-    /// Saves `last` (or what is pending) and stops the thread. An error if that last save
-    /// failed: the file then holds the values of the last save that succeeded, and the caller
-    /// must say so rather than report the values saved.
-    pub fn finish(mut self, last: Option<I>) -> Result<(), RetainError> {
-        if let Some(tx) = self.tx.take() {
-            if let Some(image) = last {
-                let _ = tx.send(Some(image));
-            }
-            let _ = tx.send(None);
-        }
-        match self.thread.take().map(JoinHandle::join) {
-            Some(Ok(result)) => result,
-            Some(Err(_)) => Err(RetainError::Io {
-                path: self.path.clone(),
-                error: std::io::Error::other("the retain writer thread panicked"),
-            }),
-            // The thread never started: nothing was ever saved.
-            None => Err(RetainError::Io {
-                path: self.path.clone(),
-                error: std::io::Error::other("the retain writer never started"),
-            }),
-        }
-    }
-}
-
-impl<I: Send + 'static> Drop for RetainWriter<I> {
-    fn drop(&mut self) {
-        if let Some(tx) = self.tx.take() {
-            let _ = tx.send(None);
-        }
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
     }
 }
