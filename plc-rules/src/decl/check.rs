@@ -8,7 +8,7 @@ use crate::address::{Area, IecAddress, Size};
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS};
 use crate::link::Link;
 use crate::{IecType, TypeFamily, names};
-use std::collections::HashMap;
+use super::keys::{FnvMap, NoCase};
 use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
@@ -156,9 +156,10 @@ pub(crate) fn type_rules(k: &KnownType) -> Vec<IssueKind> {
 }
 
 fn duplicate_names<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
-    let mut first: HashMap<String, usize> = HashMap::new();
+    let mut first: FnvMap<NoCase, usize> = FnvMap::default();
+    first.reserve(decl.vars.len());
     for (i, v) in decl.vars.iter().enumerate().filter(|(_, v)| v.name_known) {
-        match first.get(&v.name.value.to_ascii_lowercase()) {
+        match first.get(&NoCase(&v.name.value)) {
             Some(&f) => {
                 let f = &decl.vars[f];
                 issues.push(Issue {
@@ -171,7 +172,7 @@ fn duplicate_names<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
                 });
             }
             None => {
-                first.insert(v.name.value.to_ascii_lowercase(), i);
+                first.insert(NoCase(&v.name.value), i);
             }
         }
     }
@@ -183,13 +184,16 @@ fn type_text(k: &KnownType) -> String {
 }
 
 fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Vec<Issue<L>>) {
-    let by_field: HashMap<&str, usize> = decl
+    if decl.vars.iter().all(|v| v.source.is_none() || v.bit.is_none()) {
+        return;
+    }
+    let by_field: FnvMap<&str, usize> = decl
         .vars
         .iter()
         .enumerate()
         .map(|(i, v)| (v.field.as_str(), i))
         .collect();
-    let mut taken: HashMap<(usize, i64), usize> = HashMap::new();
+    let mut taken: FnvMap<(usize, i64), usize> = FnvMap::default();
     for (i, v) in decl.vars.iter().enumerate() {
         let (Some(source), Some(bit)) = (&v.source, &v.bit) else {
             continue;
@@ -279,7 +283,7 @@ fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Ve
 fn addresses<L: Clone>(decl: &Decl<L>, vars: &[Resolved], issues: &mut Vec<Issue<L>>) {
     // The earlier addresses on each byte: an address covers at most 8 bytes, so finding what
     // it overlaps is a few lookups, not a pass over every located variable.
-    let mut on_byte: HashMap<(Area, usize), Vec<usize>> = HashMap::new();
+    let mut on_byte: FnvMap<(Area, usize), Vec<usize>> = FnvMap::default();
     for (i, (v, r)) in decl.vars.iter().zip(vars).enumerate() {
         let (Some(a), Some(at)) = (r.address, &v.at) else {
             continue;
@@ -492,10 +496,10 @@ pub fn initial_misfit(
 
 fn shared_links<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
     // Links compare case-insensitively, as the bus description's names do.
-    let mut first: HashMap<String, &str> = HashMap::new();
+    let mut first: FnvMap<NoCase, &str> = FnvMap::default();
     for v in &decl.vars {
         let Some(link) = &v.link else { continue };
-        match first.get(&link.value.to_ascii_lowercase()) {
+        match first.get(&NoCase(&link.value)) {
             Some(f) => issues.push(Issue::new(
                 IssueKind::SharedLink {
                     link: link.value.clone(),
@@ -504,7 +508,7 @@ fn shared_links<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
                 link.at.clone(),
             )),
             None => {
-                first.insert(link.value.to_ascii_lowercase(), &v.name.value);
+                first.insert(NoCase(&link.value), &v.name.value);
             }
         }
     }

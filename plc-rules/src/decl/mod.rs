@@ -31,6 +31,7 @@
 
 mod check;
 mod issue;
+mod keys;
 
 pub use check::{Checked, Resolved, check, initial_misfit};
 pub use issue::{Expected, Issue, IssueKind, KIND_NAMES, Wording};
