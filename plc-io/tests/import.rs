@@ -269,22 +269,28 @@ fn each_error_class_starts_with_the_variable_and_field() {
 #[test]
 fn a_struct_name_that_is_no_identifier_is_refused() {
     for bad in ["1Gm", "my struct", "", "Gm-2"] {
-        let e = match generate(
-            &vars(r#""a": { "type": "u8" }"#),
-            &Options {
-                struct_name: bad.into(),
-                ..Options::default()
-            },
-        ) {
-            Err(ImportErrors(e)) => e,
-            Ok(_) => panic!("{bad:?} was accepted"),
-        };
-        assert_eq!(e.len(), 1, "{e:?}");
-        assert!(
-            e[0].starts_with(&format!("struct name {bad:?} is not a Rust identifier")),
-            "{e:?}"
-        );
+        assert_struct_name_refused(bad, "is not a Rust identifier");
     }
+}
+
+/// Importing a list as struct `name` fails with one error that starts `struct name "<name>"
+/// <says>`.
+fn assert_struct_name_refused(name: &str, says: &str) {
+    let e = match generate(
+        &vars(r#""a": { "type": "string" }"#),
+        &Options {
+            struct_name: name.into(),
+            ..Options::default()
+        },
+    ) {
+        Err(ImportErrors(e)) => e,
+        Ok(_) => panic!("{name:?} was accepted"),
+    };
+    assert_eq!(e.len(), 1, "{e:?}");
+    assert!(
+        e[0].starts_with(&format!("struct name {name:?} {says}")),
+        "{e:?}"
+    );
 }
 
 /// The derive's rule (plc-derive `check.rs`): a bit-mapped bool takes its source's direction,
@@ -438,21 +444,7 @@ fn a_struct_name_the_module_cannot_use_is_refused() {
         "FixedString",
         "GlobalMemory",
     ] {
-        let e = match generate(
-            &vars(r#""a": { "type": "string" }"#),
-            &Options {
-                struct_name: bad.into(),
-                ..Options::default()
-            },
-        ) {
-            Err(ImportErrors(e)) => e,
-            Ok(_) => panic!("{bad:?} was accepted"),
-        };
-        assert_eq!(e.len(), 1, "{e:?}");
-        assert!(
-            e[0].starts_with(&format!("struct name {bad:?} is")),
-            "{e:?}"
-        );
+        assert_struct_name_refused(bad, "is a Rust keyword or a name the generated module uses");
     }
 }
 

@@ -3,12 +3,12 @@
 //! in linear time.
 
 use super::issue::{Expected, Issue, IssueKind};
+use super::keys::{FnvMap, NoCase};
 use super::{Decl, DeclType, Direction, InitialValue, KnownType, Var};
 use crate::address::{Area, IecAddress, Size};
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS};
 use crate::link::Link;
 use crate::{IecType, TypeFamily, names};
-use super::keys::{FnvMap, NoCase};
 use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
@@ -184,7 +184,11 @@ fn type_text(k: &KnownType) -> String {
 }
 
 fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Vec<Issue<L>>) {
-    if decl.vars.iter().all(|v| v.source.is_none() || v.bit.is_none()) {
+    if decl
+        .vars
+        .iter()
+        .all(|v| v.source.is_none() || v.bit.is_none())
+    {
         return;
     }
     let by_field: FnvMap<&str, usize> = decl
