@@ -155,7 +155,11 @@ impl Dictionary {
 /// The EL3004's objects that ethercrab reads to reach OP (EMULATOR-NOTES §8, from ethercrab's
 /// capture \[R1\]): no RxPDOs (1C12 empty), four TxPDOs 1A00/1A02/1A04/1A06 of ten entries
 /// each (status bits and a 16-bit value per channel), plus the identity object 0x1018 and the
-/// device name 0x1008 (the name its EEPROM gives, `sii-EL3004.txt`).
+/// device name 0x1008 (the name its EEPROM gives, `sii-EL3004.txt`); and the settings it is
+/// configured through, per channel `0x80n0` (n = 0..3, as its data sheet lists them):
+/// `:02` presentation (u8: 0 signed, 1 unsigned, 2 absolute with MSB as sign), `:06` enable
+/// filter (bool as u8) and `:15` filter settings (u16: 0 = 50 Hz FIR), all writable, all 0
+/// after power-on.
 pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
     let mut d = Dictionary::default();
     d.text(0x1008, "EL3004");
@@ -178,6 +182,13 @@ pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
             base | 0x1110,
         ];
         d.record(pdo, &map, 4, false);
+    }
+    for ch in 0..4u16 {
+        let settings = 0x8000 + 0x10 * ch;
+        d.set(settings, 0, 0x15, 1, false);
+        d.set(settings, 0x02, 0, 1, true);
+        d.set(settings, 0x06, 0, 1, true);
+        d.set(settings, 0x15, 0, 2, true);
     }
     d
 }

@@ -8,7 +8,7 @@ use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
 use plc_io::ethercat::{
     BusConfig, BusState, EtherCatBackend, EtherCatError, InputsOnFault, Options, PdoDirection,
-    devices,
+    StartupSdo, devices,
 };
 use sim_bench::{description, sim, transport};
 use std::time::{Duration, Instant};
@@ -628,4 +628,86 @@ fn el3004_analog_values_reach_int_and_real_variables_through_its_coe_configured_
         (-1234, -1234.0, true, 0x7FFF)
     );
     backend.stop();
+}
+
+/// An EL3004 configured by start-up SDOs (filter on and its setting for channel 1, unsigned
+/// presentation for channel 2): written in PRE-OP by real ethercrab and read back over CoE,
+/// in the device's own object dictionary afterwards.
+#[test]
+fn start_up_sdos_configure_the_el3004_before_op() {
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004()]);
+    let sdo = |index, subindex, value, bits| StartupSdo {
+        index,
+        subindex,
+        value,
+        bits,
+    };
+    let mut ai = devices::el3004("ai");
+    ai.startup = vec![
+        sdo(0x8000, 0x06, 1, 8),
+        sdo(0x8000, 0x15, 2, 16),
+        sdo(0x8010, 0x02, 1, 8),
+    ];
+    let config = BusConfig {
+        devices: vec![devices::ek1100("coupler"), ai],
+    };
+    config.validate().unwrap();
+    assert_eq!(bus.device(1).sdo(0x8000, 0x06), Some(0), "off at power-on");
+    let mut backend = started::<Analog>(&bus, config);
+    let d = bus.device(1);
+    assert_eq!(
+        (
+            d.sdo(0x8000, 0x06),
+            d.sdo(0x8000, 0x15),
+            d.sdo(0x8010, 0x02)
+        ),
+        (Some(1), Some(2), Some(1))
+    );
+    assert_eq!(d.sdo(0x8020, 0x06), Some(0), "other channels untouched");
+    let mut gm = Analog::default();
+    assert!(
+        backend.exchange(&mut gm).inputs_valid,
+        "and the bus is in OP"
+    );
+    backend.stop();
+}
+
+/// A start-up SDO the device refuses stops the bring-up before OP, with an error that names the
+/// device, its position, the object and the device's abort code; a value too wide for its
+/// object is refused by the description's checks before the bus is touched.
+#[test]
+fn a_refused_start_up_sdo_names_device_object_and_abort_code() {
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004()]);
+    let mut ai = devices::el3004("ai");
+    ai.startup = vec![StartupSdo {
+        index: 0x8000,
+        subindex: 0x30,
+        value: 1,
+        bits: 8,
+    }];
+    let config = BusConfig {
+        devices: vec![devices::ek1100("coupler"), ai.clone()],
+    };
+    let mut backend = EtherCatBackend::<Analog>::new(config, transport(&bus), options()).unwrap();
+    let err = backend.start().unwrap_err().to_string();
+    for needle in [
+        "start-up SDO 0x8000:30",
+        "device `ai` (position 1)",
+        "0x06090011",
+    ] {
+        assert!(err.contains(needle), "{needle} missing in {err}");
+    }
+    assert_ne!(bus.al_state(1), 8, "not switched to OP");
+
+    ai.startup[0].value = 300;
+    let e = BusConfig {
+        devices: vec![devices::ek1100("coupler"), ai],
+    }
+    .validate()
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("start-up SDO 0x8000:30: 300 does not fit 8 bits"),
+        "{e}"
+    );
 }

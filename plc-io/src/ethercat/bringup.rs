@@ -1,4 +1,5 @@
-//! Bringing the bus up: scan, identity check against the description, PRE-OP -> SAFE-OP,
+//! Bringing the bus up: scan, identity check against the description, start-up SDOs in
+//! PRE-OP, PRE-OP -> SAFE-OP,
 //! process data sizes checked, one exchange, OP, and the SyncManager and FMMU settings read
 //! back for recovery.
 
@@ -27,6 +28,10 @@ pub(super) fn bring_up(
     let problems = identity_problems(devices, &found);
     if !problems.is_empty() {
         return Err(EtherCatError::Identity(problems));
+    }
+    // In PRE-OP, where the mailbox is up and the process data not yet configured.
+    for (pos, (sd, device)) in group.iter(md).zip(devices).enumerate() {
+        super::startup::write(&sd, pos, device)?;
     }
     let group = block_on(group.into_safe_op(md)).map_err(bus("going to SAFE-OP"))?;
     let reported: Vec<(usize, usize)> = group

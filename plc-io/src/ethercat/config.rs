@@ -2,4 +2,6 @@
 //! derive can check links against it while compiling; re-exported here where it has always
 //! been.
 
-pub use plc_rules::bus::{BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry};
+pub use plc_rules::bus::{
+    BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
+};

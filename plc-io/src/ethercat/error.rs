@@ -29,6 +29,17 @@ pub enum EtherCatError {
     },
     /// `start` was called on a running backend, or `exchange` before `start`.
     State(&'static str),
+    /// A start-up SDO was refused, or read back with another value.
+    Startup {
+        /// The device's name in the bus description.
+        device: String,
+        /// Its ring position.
+        position: usize,
+        /// The object and value.
+        sdo: super::config::StartupSdo,
+        /// What went wrong (ethercrab's abort code and text, or the value read back).
+        problem: String,
+    },
 }
 
 impl fmt::Display for EtherCatError {
@@ -48,6 +59,18 @@ impl fmt::Display for EtherCatError {
             }
             EtherCatError::Layout(e) => e.fmt(f),
             EtherCatError::Transport(e) => f.write_str(e),
+            EtherCatError::Startup {
+                device,
+                position,
+                sdo,
+                problem,
+            } => write!(
+                f,
+                "start-up SDO {sdo} = {} ({} bits) of device `{device}` (position {position}): \
+                 {problem}; fix the object or the value in the bus description (nothing was \
+                 switched to OP)",
+                sdo.value, sdo.bits
+            ),
             EtherCatError::Bus { during, error } => {
                 write!(f, "EtherCAT error while {during}: {error}")?;
                 match error {

@@ -52,12 +52,15 @@ mod options;
 mod process_data;
 mod recovery;
 pub mod resolve;
+mod startup;
 mod status;
 mod transport;
 
 pub use crate::runtime::BusState;
 pub use backend::EtherCatBackend;
-pub use config::{BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry};
+pub use config::{
+    BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
+};
 pub use error::EtherCatError;
 pub use layout::{BusLayout, LayoutError};
 pub use options::{DriverFn, DriverGuard, InputsOnFault, Options, Transport};

@@ -49,8 +49,11 @@ pub const MAX_PDI: usize = 1024;
 ///         { name = "closed", direction = "input", bits = 1, type = "BOOL" },
 ///         { name = "spare", direction = "input", bits = 3, type = "BYTE" },
 ///     ]
+///     # CoE objects written in PRE-OP at every bring-up, each read back.
+///     startup = [{ index = 0x8000, subindex = 0x06, value = 1, bits = 8 }]
 /// "#).unwrap();
 /// assert_eq!(bus.devices[1].entries[1].bits, 3);
+/// assert_eq!(bus.devices[1].startup[0].to_string(), "0x8000:06");
 /// ```
 ///
 /// JSON has no hexadecimal numbers, so identity values may also be strings such as
@@ -94,6 +97,47 @@ pub struct DeviceConfig {
     /// mixed as they come (each direction is laid out on its own). Empty for a coupler.
     #[serde(default)]
     pub entries: Vec<PdoEntry>,
+    /// CoE objects written in PRE-OP when the bus comes up, in order, each read back
+    /// (a filter, a presentation, a range): `startup = [{ index = 0x8000, subindex = 0x06,
+    /// value = 1, bits = 8 }]`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub startup: Vec<StartupSdo>,
+}
+
+/// One start-up SDO: a CoE object entry and the value written to it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StartupSdo {
+    /// Object index (`0x8000`).
+    #[serde(with = "hex_u32")]
+    pub index: u32,
+    /// Sub-index (`0x15`).
+    #[serde(with = "hex_u32")]
+    pub subindex: u32,
+    /// The value; a negative one is written as its two's complement in `bits`.
+    pub value: i64,
+    /// The entry's width: 8, 16 or 32 bits.
+    pub bits: u32,
+}
+
+impl StartupSdo {
+    /// The value as the `bits`-wide unsigned number sent, if it fits (as signed or unsigned).
+    pub fn raw(&self) -> Option<u32> {
+        let bits = self.bits;
+        if !matches!(bits, 8 | 16 | 32) {
+            return None;
+        }
+        let (lo, hi) = (-(1i64 << (bits - 1)), (1i64 << bits) - 1);
+        (lo..=hi)
+            .contains(&self.value)
+            .then(|| (self.value as u64 & ((1u64 << bits) - 1)) as u32)
+    }
+}
+
+impl fmt::Display for StartupSdo {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:#06x}:{:02x}", self.index, self.subindex)
+    }
 }
 
 impl DeviceConfig {

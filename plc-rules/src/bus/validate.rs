@@ -44,6 +44,21 @@ impl BusConfig {
                     d.name
                 ));
             }
+            for s in &d.startup {
+                if s.index == 0 || s.index > 0xFFFF || s.subindex > 0xFF {
+                    problems.push(format!(
+                        "device {pos} (`{}`), start-up SDO {s}: an object is an index of 16 bits \
+                         (not 0) and a sub-index of 8",
+                        d.name
+                    ));
+                } else if s.raw().is_none() {
+                    problems.push(format!(
+                        "device {pos} (`{}`), start-up SDO {s}: {} does not fit {} bits (write \
+                         `bits = 8`, `16` or `32`, the object's width, and a value it holds)",
+                        d.name, s.value, s.bits
+                    ));
+                }
+            }
             for (i, e) in d.entries.iter().enumerate() {
                 check_entry(
                     pos,
