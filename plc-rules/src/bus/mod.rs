@@ -49,7 +49,6 @@ pub const MAX_PDI: usize = 1024;
 ///         { name = "closed", direction = "input", bits = 1, type = "BOOL" },
 ///         { name = "spare", direction = "input", bits = 3, type = "BYTE" },
 ///     ]
-///     # CoE objects written in PRE-OP at every bring-up, each read back.
 ///     startup = [{ index = 0x8000, subindex = 0x06, value = 1, bits = 8 }]
 /// "#).unwrap();
 /// assert_eq!(bus.devices[1].entries[1].bits, 3);
