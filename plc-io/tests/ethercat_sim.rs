@@ -669,6 +669,38 @@ fn start_up_sdos_configure_the_el3004_before_op() {
         backend.exchange(&mut gm).inputs_valid,
         "and the bus is in OP"
     );
+
+    // The EL3004 loses power, and with it its settings: the recovery writes them again in
+    // PRE-OP before the device goes on to OP.
+    bus.set_responding(1, false);
+    bus.power_cycle(1);
+    assert!(backend.exchange(&mut gm).bus_fault);
+    bus.set_responding(1, true);
+    assert_eq!(
+        bus.device(1).sdo(0x8000, 0x06),
+        Some(0),
+        "reset by the power cycle"
+    );
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while !backend.exchange(&mut gm).inputs_valid {
+        assert!(
+            Instant::now() < deadline,
+            "not back in OP: {:?}",
+            backend.problems()
+        );
+        std::thread::sleep(Duration::from_millis(2));
+    }
+    let d = bus.device(1);
+    assert_eq!(
+        (
+            d.sdo(0x8000, 0x06),
+            d.sdo(0x8000, 0x15),
+            d.sdo(0x8010, 0x02)
+        ),
+        (Some(1), Some(2), Some(1)),
+        "written again after the power cycle"
+    );
+    assert_eq!(bus.al_state(1), ethercat_sim::al::OP);
     backend.stop();
 }
 

@@ -224,12 +224,31 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
                  to the first SubDevice, and its power"
                     .into(),
             ]);
-        } else if in_op_stage && running.recovery.due(Instant::now()) {
+        } else if in_op_stage
+            && running.recovery.due(Instant::now())
+            && let Some(Stage::Op(g)) = &running.group
+        {
+            let devices = &self.config.devices;
+            // A restarted device lost its start-up SDOs with its power: written again in
+            // PRE-OP, through ethercrab's CoE on the group's handle of that device.
+            let pre_op = async |pos: u16| -> Result<(), String> {
+                let pos = usize::from(pos);
+                match devices.get(pos) {
+                    Some(d) if !d.startup.is_empty() => {
+                        let sd = g.subdevice(md, pos).map_err(|e| e.to_string())?;
+                        super::startup::write(&sd, pos, d)
+                            .await
+                            .map_err(|e| e.to_string())
+                    }
+                    _ => Ok(()),
+                }
+            };
             let problems = recover(
                 md,
                 &running.configured,
                 &self.layout.names,
                 self.options.timeouts.eeprom,
+                &pre_op,
             );
             self.set_problems(problems);
         }

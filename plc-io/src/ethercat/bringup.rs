@@ -31,7 +31,7 @@ pub(super) fn bring_up(
     }
     // In PRE-OP, where the mailbox is up and the process data not yet configured.
     for (pos, (sd, device)) in group.iter(md).zip(devices).enumerate() {
-        super::startup::write(&sd, pos, device)?;
+        block_on(super::startup::write(&sd, pos, device))?;
     }
     let group = block_on(group.into_safe_op(md)).map_err(bus("going to SAFE-OP"))?;
     let reported: Vec<(usize, usize)> = group

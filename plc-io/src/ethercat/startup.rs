@@ -5,13 +5,12 @@
 
 use super::config::DeviceConfig;
 use super::error::EtherCatError;
-use async_io::block_on;
 use ethercrab::SubDeviceRef;
 use ethercrab::error::Error as CrabError;
 use std::ops::Deref;
 
 /// Writes and checks every start-up SDO of the device at `position`.
-pub(super) fn write<S: Deref<Target = ethercrab::SubDevice>>(
+pub(super) async fn write<S: Deref<Target = ethercrab::SubDevice>>(
     sd: &SubDeviceRef<'_, S>,
     position: usize,
     device: &DeviceConfig,
@@ -31,7 +30,8 @@ pub(super) fn write<S: Deref<Target = ethercrab::SubDevice>>(
         ) else {
             return Err(fail("the object or value does not fit its width".into()));
         };
-        let read_back = block_on(write_one(sd, index, sub, raw, sdo.bits))
+        let read_back = write_one(sd, index, sub, raw, sdo.bits)
+            .await
             .map_err(|e| fail(format!("refused: {e}")))?;
         if read_back != raw {
             return Err(fail(format!(

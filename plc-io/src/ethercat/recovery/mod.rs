@@ -41,16 +41,20 @@ impl RecoveryTimer {
 
 /// One recovery attempt on every SubDevice in `configured` (ring order); the problems that
 /// remain, as [`describe`] words them. `names` are the description's device names by position.
+///
+/// `pre_op` writes a device's start-up SDOs (by ring position) when a restarted one reaches
+/// PRE-OP again, before it goes on to SAFE-OP.
 pub(super) fn recover(
     md: &MainDevice<'static>,
     configured: &[Configured],
     names: &[String],
     eeprom_timeout: Duration,
+    pre_op: &impl AsyncFn(u16) -> Result<(), String>,
 ) -> Vec<String> {
     let outcomes: Vec<_> = configured
         .iter()
         .map(|dev| {
-            let outcome = block_on(registers::attempt(md, dev, eeprom_timeout));
+            let outcome = block_on(registers::attempt(md, dev, eeprom_timeout, pre_op));
             (dev.position, dev.model.as_str(), outcome)
         })
         .collect();

@@ -16,8 +16,10 @@
 //!
 //! Each attempt sends a few single datagrams per device and never waits for a slow
 //! transition: a device with a microcontroller that takes a while to change state is picked
-//! up again by the next attempt. Not repeated: SDO writes a program made in PRE-OP at
-//! start-up, and distributed-clock settings (the backend runs without DC). A device that
+//! up again by the next attempt. The bus description's start-up SDOs are written again in
+//! PRE-OP, before SAFE-OP, by the caller's `pre_op` (through ethercrab's CoE, whose mailbox
+//! SyncManagers were just restored). Not repeated: distributed-clock settings (the backend runs
+//! without DC). A device that
 //! cannot be brought back (BOOT, a refused request) stays reported, with its AL status code.
 
 use ethercrab::error::{Error as CrabError, TimeoutError};
@@ -126,6 +128,7 @@ pub(in crate::ethercat) async fn attempt(
     md: &MainDevice<'_>,
     dev: &Configured,
     eeprom_timeout: Duration,
+    pre_op: &impl AsyncFn(u16) -> Result<(), String>,
 ) -> Outcome {
     let mut status = match al_status(md, dev.address).await {
         Ok(s) => s,
@@ -182,7 +185,12 @@ pub(in crate::ethercat) async fn attempt(
                 done.push("restarted in INIT: wrote its SyncManagers and FMMUs again".into());
                 2
             }
-            (2, None) => 4,
+            (2, None) => {
+                if let Err(e) = pre_op(dev.position).await {
+                    return Outcome::NotOp(format!("in PRE-OP: {e}"));
+                }
+                4
+            }
             (4, None) => 8,
             _ => {
                 return Outcome::NotOp(format!(
