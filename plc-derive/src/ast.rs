@@ -214,8 +214,11 @@ fn parse_field<'a>(
         SynType::Known(k) => DeclType::Known(k.clone()),
         _ => DeclType::Unknown,
     };
-    let mut model = decl::Var::new(&name, &name, Located::new(ty, Loc::Span(field.ty.span())));
-    model.name.at = Loc::Span(ident.span());
+    let mut model = decl::Var::new(
+        Located::new(name.clone(), Loc::Span(ident.span())),
+        &name,
+        Located::new(ty, Loc::Span(field.ty.span())),
+    );
     model.description = doc_description(&field.attrs);
     let mut var = Var {
         ident,

@@ -8,7 +8,6 @@
 use crate::ast::{At, Container};
 use crate::ctxt::Ctxt;
 use plc_rules::bus::{BusConfig, BusLayout, LinkedVar, resolve_links};
-use plc_rules::decl::DeclType;
 use plc_rules::link::Link;
 use proc_macro2::TokenStream;
 use quote::quote;
@@ -71,10 +70,7 @@ fn check_links(c: &Container, config: &BusConfig, bus: &At<String>, cx: &mut Ctx
             let link = m.link.as_ref()?;
             // A malformed link has its own error already.
             Link::parse(&link.value).ok()?;
-            let known = match &m.ty.value {
-                DeclType::Known(k) => Some(k),
-                DeclType::Unknown => None,
-            };
+            let known = m.ty.value.known();
             Some(LinkedVar {
                 name: &m.name.value,
                 link: &link.value,

@@ -3,7 +3,7 @@
 //! prettyplease formats it (short lines written directly, long ones by prettyplease).
 
 use super::validate::ListAt;
-use plc_rules::decl::{DeclType, KnownType, Var};
+use plc_rules::decl::Var;
 
 /// Rust's keywords: a variable of one of these names becomes a raw identifier (`r#type`).
 const KEYWORDS: &[&str] = &[
@@ -66,31 +66,14 @@ fn comment_line(text: &str) -> String {
 
 /// The origin goes into comments: one line, whatever the file name holds.
 fn one_line(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_control() || breaks_comment(c) {
-                ' '
-            } else {
-                c
-            }
-        })
-        .collect()
-}
-
-/// The type of a checked variable (every generated variable has one: a variable without is an
-/// error before emission).
-fn known(v: &Var<ListAt>) -> Option<&KnownType> {
-    match &v.ty.value {
-        DeclType::Known(k) => Some(k),
-        DeclType::Unknown => None,
-    }
+    comment_line(text).replace(['\r', '\n'], " ")
 }
 
 /// The `use` line, the struct's doc and attributes and its opening line, formatted.
 fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
     let strings = vars
         .iter()
-        .any(|v| known(v).is_some_and(|k| k.capacity.is_some()));
+        .any(|v| v.ty.value.known().is_some_and(|k| k.capacity.is_some()));
     let mut out = format!(
         "use plc_core::{};\n\
          /// The variables of {}.\n\
@@ -115,7 +98,8 @@ fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
 /// One field: doc comment, `#[plc(...)]`, declaration; formatted as prettyplease formats it
 /// when each line is short (longer lines are left to prettyplease, see [`emit`]).
 fn field(v: &Var<ListAt>, origin: &str) -> Result<String, String> {
-    let k = known(v).ok_or_else(|| {
+    // Every generated variable has a type: one without is an error before emission.
+    let k = v.ty.value.known().ok_or_else(|| {
         format!(
             "variable {:?} has no type but reached the code generator; please report this",
             v.name.value
@@ -244,7 +228,7 @@ pub fn emit(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> Result<Str
 mod tests {
     use super::*;
     use plc_core::{Direction, IecType};
-    use plc_rules::decl::{Initial, InitialValue, Located};
+    use plc_rules::decl::{Initial, InitialValue, KnownType, Located};
     use proptest::prelude::*;
 
     /// The whole module through syn and prettyplease, as the importer made it before: what
@@ -319,7 +303,11 @@ mod tests {
                         capacity: (iec == IecType::String).then_some(255),
                         dims,
                     };
-                    let mut v = Var::new(&name, &name, Located::new(known.into(), at()));
+                    let mut v = Var::new(
+                        Located::new(name.clone(), at()),
+                        &name,
+                        Located::new(known.into(), at()),
+                    );
                     let located = |s: String| Some(Located::new(s, at()));
                     v.iec_type = flags[0].then(|| Located::new(IecType::Lword, at()));
                     v.link = flags[1]

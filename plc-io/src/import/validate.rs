@@ -295,8 +295,11 @@ fn read_var(
         var,
         field: Some(Cow::Borrowed("type")),
     };
-    let mut model = decl::Var::new(name, name, Located::new(DeclType::Unknown, type_at.clone()));
-    model.name.at = whole();
+    let mut model = decl::Var::new(
+        Located::new(name.to_string(), whole()),
+        name,
+        Located::new(DeclType::Unknown, type_at.clone()),
+    );
     let Some(obj) = v.as_object() else {
         problems.push(Problem {
             at: whole(),

@@ -178,11 +178,6 @@ fn duplicate_names<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
     }
 }
 
-/// A type as messages write it: `u16`, `[u8; 4]`.
-fn type_text(k: &KnownType) -> String {
-    k.rust_type()
-}
-
 fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Vec<Issue<L>>) {
     if decl
         .vars
@@ -210,7 +205,7 @@ fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Ve
                     var: v.field.clone(),
                     bit: bit.value,
                     source: source.value.clone(),
-                    ty: type_text(k),
+                    ty: k.rust_type(),
                 },
                 v.ty.at.clone(),
             ));
@@ -244,7 +239,7 @@ fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Ve
                 issues.push(Issue::new(
                     IssueKind::SourceNotInteger {
                         source: source.value.clone(),
-                        ty: type_text(k),
+                        ty: k.rust_type(),
                     },
                     source.at.clone(),
                 ));
@@ -256,7 +251,7 @@ fn bit_mappings<L: Clone>(decl: &Decl<L>, vars: &mut [Resolved], issues: &mut Ve
                     IssueKind::BitOutOfRange {
                         bit: bit.value,
                         source: source.value.clone(),
-                        ty: type_text(k),
+                        ty: k.rust_type(),
                         width: k.iec.bits(),
                     },
                     bit.at.clone(),
@@ -475,15 +470,13 @@ pub fn initial_misfit(
         }
         InitialValue::BigInt(_) if k.iec.is_integer() => out_of_range(int_range()),
         InitialValue::Int(_) if family == TypeFamily::Real => None,
-        InitialValue::Float(v) | InitialValue::BigInt(v) if family == TypeFamily::Real => (k.iec
-            == IecType::Real
-            && v.abs() > f32::MAX as f64)
-            .then(|| IssueKind::InitialOutOfRange {
-                text: text.to_string(),
-                iec,
-                ty: k.element_name(),
-                range: format!("up to {:e} either side of 0", f32::MAX),
-            }),
+        InitialValue::Float(v) | InitialValue::BigInt(v) if family == TypeFamily::Real => {
+            if k.iec == IecType::Real && v.abs() > f32::MAX as f64 {
+                out_of_range(format!("up to {:e} either side of 0", f32::MAX))
+            } else {
+                None
+            }
+        }
         InitialValue::Text(s) if family == TypeFamily::String => {
             let capacity = k.capacity.unwrap_or(u64::MAX);
             (s.len() as u64 > capacity).then_some(IssueKind::InitialTooLong {

@@ -13,8 +13,8 @@
 //!
 //! // Locations here are plain strings; the derive uses spans, the importer JSON paths.
 //! let known = |iec, at| Located::new(KnownType::scalar(iec).into(), at);
-//! let inputs = Var::new("inputs", "inputs", known(IecType::Uint, "inputs"));
-//! let mut flag = Var::new("flag", "flag", known(IecType::Bool, "flag"));
+//! let inputs = Var::new(Located::new("inputs".into(), "inputs"), "inputs", known(IecType::Uint, "inputs"));
+//! let mut flag = Var::new(Located::new("flag".into(), "flag"), "flag", known(IecType::Bool, "flag"));
 //! flag.source = Some(Located::new("inputs".to_string(), "flag.source"));
 //! flag.bit = Some(Located::new(16, "flag.bit"));
 //! let checked = decl::check(&Decl { vars: vec![inputs, flag], unaligned: false });
@@ -199,11 +199,12 @@ pub struct Var<L> {
     pub quantity: Option<Located<String, L>>,
 }
 
-impl<L: Clone> Var<L> {
-    /// A variable with only a name and a type; the name's location serves the type too.
-    pub fn new(name: &str, field: &str, ty: Located<DeclType, L>) -> Var<L> {
+impl<L> Var<L> {
+    /// A variable with only a name (and where it is written), the name `source` refers to it
+    /// by, and a type; no attributes.
+    pub fn new(name: Located<String, L>, field: &str, ty: Located<DeclType, L>) -> Var<L> {
         Var {
-            name: Located::new(String::from(name), ty.at.clone()),
+            name,
             name_known: true,
             field: String::from(field),
             ty,
