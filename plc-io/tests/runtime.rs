@@ -231,6 +231,13 @@ fn tools_see_the_running_program_and_their_writes_arrive() {
     let status = seg.status();
     assert_eq!(status.stats.period, Duration::from_millis(2));
     assert!(status.stats.max >= status.stats.min && status.writes_applied == 1);
+    // Each cycle is stamped with the wall clock, for clients on other machines.
+    let wall_now = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .unwrap()
+        .as_nanos() as u64;
+    let age = wall_now.saturating_sub(status.cycle_utc_ns);
+    assert!(age < 2_000_000_000, "cycle stamped {age} ns ago");
     stop.stop();
     let gm = t.join().unwrap();
     assert_eq!(gm.setpoint, 1234);

@@ -4,7 +4,8 @@
 //! 0     header   magic, format version, layout hash, image size, generation, seqlock
 //!                sequence, descriptor offset and length            (8 x u64)
 //! 64    status   owner pid, state, period, cycle count, cycle times, overruns, bus state
-//!                and flags, heartbeat, mailbox counters            (16 x u64)
+//!                and flags, heartbeat, mailbox counters, retain failures, the cycle's
+//!                wall-clock time                                   (16 x u64)
 //! 192   image    T::Image, padded to 8 bytes
 //! ...   mailbox  head, tail, reclaimed, discarded (4 x u64), then SLOTS slots
 //! ...   descriptor, JSON
@@ -48,6 +49,7 @@ pub const S_HEARTBEAT_NS: usize = STATUS + 88;
 pub const S_MB_APPLIED: usize = STATUS + 96;
 pub const S_MB_REJECTED: usize = STATUS + 104;
 pub const S_RETAIN_FAILED: usize = STATUS + 112;
+pub const S_CYCLE_UTC_NS: usize = STATUS + 120;
 
 pub const IMAGE: usize = 192;
 

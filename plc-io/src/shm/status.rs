@@ -102,6 +102,10 @@ pub struct Status {
     /// Saves of retained values that failed so far (each is tried again; one that fails at
     /// stop makes the program exit with an error).
     pub retain_failures: u64,
+    /// When the owner published the values of the last cycle, in nanoseconds since the Unix
+    /// epoch (UTC, CLOCK_REALTIME; 0 before the first cycle): what a client shows as the
+    /// values' source time (OPC UA's SourceTimestamp).
+    pub cycle_utc_ns: u64,
 }
 
 /// The heartbeat clock, CLOCK_MONOTONIC_COARSE: one clock for every process on the machine
@@ -112,12 +116,24 @@ pub struct Status {
 /// stall threshold.
 #[inline]
 pub(crate) fn now_ns() -> u64 {
+    clock_ns(libc::CLOCK_MONOTONIC_COARSE)
+}
+
+/// The wall clock, CLOCK_REALTIME, in nanoseconds since the Unix epoch: the time a cycle's
+/// values were produced, as other machines' clocks read it.
+#[inline]
+pub(crate) fn utc_ns() -> u64 {
+    clock_ns(libc::CLOCK_REALTIME)
+}
+
+#[inline]
+fn clock_ns(clock: libc::clockid_t) -> u64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
         tv_nsec: 0,
     };
     // SAFETY: clock_gettime writes one timespec into the valid one we pass.
-    if unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC_COARSE, &mut ts) } != 0 {
+    if unsafe { libc::clock_gettime(clock, &mut ts) } != 0 {
         return 0;
     }
     (ts.tv_sec as u64)
@@ -156,6 +172,7 @@ impl Status {
             writes_pending: super::mailbox::pending(base, off),
             generation: base.load(H_GENERATION),
             retain_failures: base.load(S_RETAIN_FAILED),
+            cycle_utc_ns: base.load(S_CYCLE_UTC_NS),
         }
     }
 
@@ -194,4 +211,5 @@ pub(crate) fn write_report(base: &Base, cycle_count: u64, stats: &CycleStats, io
     let flags = (io.bus_fault as u64 * BUS_FAULT) | (io.inputs_valid as u64 * INPUTS_VALID);
     base.store(S_BUS_FLAGS, flags);
     base.store(S_HEARTBEAT_NS, now_ns());
+    base.store(S_CYCLE_UTC_NS, utc_ns());
 }
