@@ -39,7 +39,9 @@ pub struct BitMapping {
 pub struct VarInfo {
     /// Symbol name: `#[plc(name = "...")]` or the field name.
     pub name: &'static str,
-    /// IEC type (for arrays: of one element).
+    /// IEC type (for arrays: of one element). For a structured variable (one with
+    /// [`members`](Self::members)) it is `BYTE`, the unit its image is made of: see
+    /// [`type_name`](Self::type_name) for its type.
     pub iec_type: IecType,
     /// The field's Rust type as written, e.g. `"[[f32; 4]; 3]"`.
     pub rust_type: &'static str,
@@ -69,9 +71,37 @@ pub struct VarInfo {
     pub ux: bool,
     /// `quantity = "force"`: the physical quantity a display uses to pick units.
     pub quantity: Option<&'static str>,
+    members: &'static [VarInfo],
+    struct_name: Option<&'static str>,
 }
 
 impl VarInfo {
+    /// A structured variable's members (one element's, for an array of structures), with
+    /// offsets from the structure's start; empty for a basic variable.
+    pub const fn members(&self) -> &'static [VarInfo] {
+        self.members
+    }
+
+    /// The name of its type: the structure's (`"Axis"`, `"TON"`) for a structured variable,
+    /// else the IEC type's (`"UINT"`).
+    pub const fn type_name(&self) -> &'static str {
+        match self.struct_name {
+            Some(name) => name,
+            None => self.iec_type.name(),
+        }
+    }
+
+    /// Whether it is a structure or an array of structures.
+    pub const fn is_structured(&self) -> bool {
+        self.struct_name.is_some()
+    }
+
+    /// Basic values it holds (see [`PlcType::LEAVES`](crate::PlcType::LEAVES)): its elements
+    /// for a basic variable, times its members' basic values for a structured one.
+    pub fn leaves(&self) -> usize {
+        plc_rules::path::leaves(self)
+    }
+
     /// Number of elements: the product of the dimensions, 1 for a scalar.
     pub const fn elements(&self) -> usize {
         plc_rules::access::elements(self.dims)
@@ -112,14 +142,67 @@ impl VarInfo {
             direction: p.direction,
             ux: p.ux,
             quantity: p.quantity,
+            members: p.members,
+            struct_name: p.type_name,
         }
     }
+}
+
+impl plc_rules::path::Node for VarInfo {
+    fn name(&self) -> &str {
+        self.name
+    }
+    fn dims(&self) -> &[usize] {
+        self.dims
+    }
+    fn offset(&self) -> usize {
+        self.offset
+    }
+    fn size(&self) -> usize {
+        self.size
+    }
+    fn members(&self) -> &[VarInfo] {
+        self.members
+    }
+    fn access(&self) -> Access {
+        self.access
+    }
+    fn direction(&self) -> Direction {
+        self.direction
+    }
+}
+
+/// One basic value of a program's variables, found by its path with
+/// [`GlobalMemory::find`]: a scalar, one element of an array, or one such inside a structure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Location {
+    /// Index of the top-level variable in [`GlobalMemory::VARIABLES`].
+    pub index: usize,
+    /// The value's number among that variable's basic values (its element for a basic array;
+    /// see [`PlcType::LEAVES`](crate::PlcType::LEAVES)), as `get` and `set` take it.
+    pub leaf: usize,
+    /// The basic variable or member that holds the value.
+    pub var: &'static VarInfo,
+    /// The element within `var` (0 for a scalar).
+    pub element: usize,
+    /// Byte offset of the value in the image.
+    pub offset: usize,
+    /// Whether tools may write it: the variable and every member on the way are writable
+    /// (inside a structure, IN parameters are).
+    pub writable: bool,
 }
 
 /// The layout hash of a variable list (see [`plc_rules::layout`]); the derive sets
 /// [`GlobalMemory::LAYOUT_HASH`] to this, computed at compile time.
 pub const fn layout_hash(vars: &[VarInfo]) -> u64 {
-    let mut h = plc_rules::layout::LayoutHasher::new();
+    hash_vars(plc_rules::layout::LayoutHasher::new(), vars).finish()
+}
+
+/// Each variable; a structured one's type name and then its members, recursively.
+const fn hash_vars(
+    mut h: plc_rules::layout::LayoutHasher,
+    vars: &[VarInfo],
+) -> plc_rules::layout::LayoutHasher {
     let mut i = 0;
     while i < vars.len() {
         let v = &vars[i];
@@ -128,9 +211,13 @@ pub const fn layout_hash(vars: &[VarInfo]) -> u64 {
             None => None,
         };
         h = h.var(v.name, v.iec_type.name(), v.offset, v.size, v.dims, bit);
+        if let Some(name) = v.struct_name {
+            h = hash_vars(h.bytes(b"struct\0").bytes(name.as_bytes()).bytes(&[0]), v.members)
+                .bytes(b"end\0");
+        }
         i += 1;
     }
-    h.finish()
+    h
 }
 
 /// Why [`GlobalMemory::set`] refused a value. Nothing was changed.
@@ -246,8 +333,42 @@ pub trait GlobalMemory: Sized {
             .position(|v| v.name.eq_ignore_ascii_case(name))
     }
 
-    /// The value of element `element` (row-major; 0 for a scalar) of variable `index`, or `None`
-    /// if either index is out of range.
+    /// The basic value a path names (`speed`, `grid[1,2]`, the flat `grid[5]`,
+    /// `axes[1].pos`; names case-insensitive, indexes 0-based), or `None`. See
+    /// [`locate`](Self::locate) for why a path names nothing.
+    fn find(path: &str) -> Option<Location> {
+        Self::locate(path).ok()
+    }
+
+    /// [`find`](Self::find), or what is wrong with the path.
+    fn locate(path: &str) -> Result<Location, plc_rules::path::LocateError<'_>> {
+        let f = plc_rules::path::locate(Self::VARIABLES, path)?;
+        Ok(Location {
+            index: f.index,
+            leaf: f.leaf,
+            var: f.node,
+            element: f.element,
+            offset: f.offset,
+            writable: f.writable,
+        })
+    }
+
+    /// The value at a [`Location`] of this program's variables.
+    ///
+    /// # Panics
+    /// If the location is not one of this type's (found by another type's `find`).
+    fn get_at(&self, at: &Location) -> Value {
+        self.get(at.index, at.leaf)
+    }
+
+    /// Sets the value at a [`Location`], with the checks of [`set`](Self::set).
+    fn set_at(&mut self, at: &Location, value: Value) -> Result<(), SetError> {
+        self.set(at.index, at.leaf, value)
+    }
+
+    /// The value of element `element` (row-major; 0 for a scalar; for a structured variable
+    /// the basic value numbered `element`, see [`Location::leaf`]) of variable `index`, or
+    /// `None` if either index is out of range.
     fn try_get(&self, index: usize, element: usize) -> Option<Value>;
 
     /// The value of element `element` of variable `index`.

@@ -48,7 +48,7 @@ pub mod __private;
 
 pub use fixed_string::{FixedString, Truncated};
 pub use global_memory::{
-    Access, BitMapping, Direction, GlobalMemory, SetError, VarInfo, layout_hash,
+    Access, BitMapping, Direction, GlobalMemory, Location, SetError, VarInfo, layout_hash,
 };
 pub use plc_rules::{
     AddressError, AddressErrorKind, Area, IecAddress, IecType, Size, TypeFamily, UnknownType,
@@ -75,3 +75,8 @@ pub use value::{Value, ValueError};
 /// `#[derive(GlobalMemory)]`: see [`GlobalMemory`] and the crate documentation.
 #[cfg(feature = "derive")]
 pub use plc_derive::GlobalMemory;
+
+/// `#[derive(PlcStruct)]`: a structure type for the fields of a `GlobalMemory` or of another
+/// structure; see the crate documentation.
+#[cfg(feature = "derive")]
+pub use plc_derive::PlcStruct;

@@ -37,12 +37,13 @@ impl core::fmt::Display for ElementError {
 #[cfg(feature = "std")]
 impl std::error::Error for ElementError {}
 
-mod sealed {
+pub(crate) mod sealed {
+    /// Only plc-core's types and the derive's structures are `PlcType`s.
     pub trait Sealed {}
 }
 
 /// A supported variable type: `bool`, `u8`..`u64`, `i8`..`i64`, `f32`, `f64`, `FixedString<N>`,
-/// or an array of these (the derive limits arrays to 3 dimensions and 65,535 items, the variable-editor rules).
+/// a structure (`#[derive(PlcStruct)]`), or an array of these (the derive limits arrays to 3 dimensions and 65,535 items, the variable-editor rules).
 ///
 /// ```
 /// use plc_core::{PlcType, IecType};
@@ -54,7 +55,7 @@ mod sealed {
     message = "`{Self}` is not a supported PLC variable type",
     label = "not a PLC variable type",
     note = "use bool, u8, u16, u32, u64, i8, i16, i32, i64, f32, f64, plc_core::FixedString<N>, \
-            or an array of these with up to 3 dimensions"
+            a #[derive(PlcStruct)] structure, or an array of these with up to 3 dimensions"
 )]
 pub trait PlcType: Copy + sealed::Sealed + 'static {
     /// IEC type of one element, as the Rust type maps it (a `u16` is `UINT`).
@@ -67,13 +68,26 @@ pub trait PlcType: Copy + sealed::Sealed + 'static {
     const ELEMENTS: usize;
     /// String capacity of one element in bytes, 0 for other types.
     const STRING_CAPACITY: usize;
+    /// Basic values in one value of this type (its *leaves*, which `get_element` and
+    /// `set_element` number): 1 for a scalar or string, one per element of an array of basic
+    /// values; for a structure its members' leaves in declaration order, for an array of
+    /// structures its elements' in row-major order.
+    const LEAVES: usize = Self::ELEMENTS;
+    /// A structure's members (`#[derive(PlcStruct)]`), offsets from the structure's start;
+    /// for an array of structures, one element's; empty for basic types.
+    const MEMBERS: &'static [crate::VarInfo] = &[];
+    /// A structure's type name (`"Axis"`, `"TON"`); `None` for basic types.
+    const TYPE_NAME: Option<&'static str> = None;
+    /// Structure levels: 0 for a basic type, 1 plus its deepest member's for a structure.
+    const DEPTH: usize = 0;
     /// How the value is stored in the image: alignment 1, little endian, no padding.
     type Repr: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy;
     /// The stored form.
     fn to_repr(&self) -> Self::Repr;
     /// The value back from its stored form (a bool is `true` for any byte but 0).
     fn from_repr(repr: &Self::Repr) -> Self;
-    /// Element `element` (row-major) as a [`Value`], `None` if out of range.
+    /// Leaf `element` (for basic types the row-major element) as a [`Value`], `None` if out
+    /// of range.
     fn get_element(&self, element: usize) -> Option<Value>;
     /// Sets element `element` from a [`Value`], checked against `ty` (the declared IEC type,
     /// which may be a bit string of the same width). Nothing changes on error.
@@ -87,6 +101,21 @@ pub trait PlcType: Copy + sealed::Sealed + 'static {
     // The derive's bit mapping and located access go through these total methods (no-ops or
     // errors for types they do not apply to), so a wrong type behind an alias is reported by
     // exactly one spanned `const` assertion instead of a cascade of unmet trait bounds.
+
+    /// A structure's bit-mapped bools from their source words, recursively; nothing for basic
+    /// types.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __unpack_bits(&mut self) {}
+    /// A structure's bit-mapped bools into their source words, recursively.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __pack_bits(&mut self) {}
+    /// Sets a structure's members to their declared initial values, recursively (a value
+    /// starts zeroed); nothing for basic types.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __init(&mut self) {}
 
     /// Bit `n` of an integer; `false` for other types.
     #[doc(hidden)]
@@ -374,6 +403,10 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
     };
     const ELEMENTS: usize = N * T::ELEMENTS;
     const STRING_CAPACITY: usize = T::STRING_CAPACITY;
+    const LEAVES: usize = N * T::LEAVES;
+    const MEMBERS: &'static [crate::VarInfo] = T::MEMBERS;
+    const TYPE_NAME: Option<&'static str> = T::TYPE_NAME;
+    const DEPTH: usize = T::DEPTH;
     type Repr = [T::Repr; N];
     #[inline(always)]
     fn to_repr(&self) -> Self::Repr {
@@ -384,7 +417,7 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
         core::array::from_fn(|i| T::from_repr(&repr[i]))
     }
     fn get_element(&self, element: usize) -> Option<Value> {
-        let inner = T::ELEMENTS;
+        let inner = T::LEAVES;
         self.get(element / inner)?.get_element(element % inner)
     }
     fn set_element(
@@ -393,8 +426,8 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        let inner = T::ELEMENTS;
-        let len = Self::ELEMENTS;
+        let inner = T::LEAVES;
+        let len = Self::LEAVES;
         let Some(item) = self.get_mut(element / inner) else {
             return Err(ElementError::OutOfRange { len });
         };
@@ -403,6 +436,25 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
                 ElementError::OutOfRange { .. } => ElementError::OutOfRange { len },
                 other => other,
             })
+    }
+    #[inline(always)]
+    fn __unpack_bits(&mut self) {
+        // Optimised away for arrays of basic values, whose elements do nothing.
+        if T::DEPTH > 0 {
+            self.iter_mut().for_each(T::__unpack_bits);
+        }
+    }
+    #[inline(always)]
+    fn __pack_bits(&mut self) {
+        if T::DEPTH > 0 {
+            self.iter_mut().for_each(T::__pack_bits);
+        }
+    }
+    #[inline(always)]
+    fn __init(&mut self) {
+        if T::DEPTH > 0 {
+            self.iter_mut().for_each(T::__init);
+        }
     }
 }
 

@@ -7,6 +7,7 @@ pub use zerocopy;
 
 pub use crate::global_memory::layout_hash;
 pub use crate::image_bytes::{image_size, offsets, repr_at, repr_at_mut};
+pub use crate::plc_type::sealed::Sealed;
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;
 
@@ -32,6 +33,23 @@ pub struct VarInfoParts {
     pub direction: Direction,
     pub ux: bool,
     pub quantity: Option<&'static str>,
+    /// A structured variable's members (empty for a basic one).
+    pub members: &'static [crate::VarInfo],
+    /// A structured variable's type name.
+    pub type_name: Option<&'static str>,
+}
+
+/// The deepest of a structure's members' depths, in a `const`.
+pub const fn max_depth(depths: &[usize]) -> usize {
+    let mut max = 0;
+    let mut i = 0;
+    while i < depths.len() {
+        if depths[i] > max {
+            max = depths[i];
+        }
+        i += 1;
+    }
+    max
 }
 
 /// Builds a [`VarInfo`](crate::VarInfo) in a `const`.
@@ -105,6 +123,9 @@ pub struct TypeFacts {
     elements: usize,
     string_capacity: usize,
     repr_size: usize,
+    /// A structure or an array of structures: none of the basic types' predicates hold.
+    structured: bool,
+    depth: usize,
 }
 
 /// The facts of field type `T`.
@@ -115,6 +136,8 @@ pub const fn facts<T: PlcType>() -> TypeFacts {
         elements: T::ELEMENTS,
         string_capacity: T::STRING_CAPACITY,
         repr_size: core::mem::size_of::<T::Repr>(),
+        structured: T::TYPE_NAME.is_some(),
+        depth: T::DEPTH,
     }
 }
 
@@ -126,12 +149,12 @@ impl TypeFacts {
 
     /// Whether the type is an integer scalar (a bit source).
     pub const fn is_integer(self) -> bool {
-        self.iec_type.is_integer() && self.rank == 0
+        !self.structured && self.iec_type.is_integer() && self.rank == 0
     }
 
     /// Whether the type is a scalar `bool`.
     pub const fn is_bool(self) -> bool {
-        matches!(self.iec_type, IecType::Bool) && self.rank == 0
+        !self.structured && matches!(self.iec_type, IecType::Bool) && self.rank == 0
     }
 
     /// Whether the type has at most 3 dimensions and 65,535 items, and a string capacity of
@@ -144,6 +167,16 @@ impl TypeFacts {
             && string_ok
     }
 
+    /// Whether the type is a structure or an array of structures.
+    pub const fn is_structured(self) -> bool {
+        self.structured
+    }
+
+    /// Whether the type nests structures at most `levels` deep.
+    pub const fn depth_at_most(self, levels: usize) -> bool {
+        self.depth <= levels
+    }
+
     /// Whether an array type has at least one item (`[u8; 0]` has none, and no place in the
     /// image to give a variable); scalars always do.
     pub const fn has_items(self) -> bool {
@@ -152,7 +185,7 @@ impl TypeFacts {
 
     /// Whether the type can be one I/O channel: a scalar, not an array or a string (the variable-editor rules).
     pub const fn is_channel(self) -> bool {
-        self.rank == 0 && !matches!(self.iec_type, IecType::String)
+        !self.structured && self.rank == 0 && !matches!(self.iec_type, IecType::String)
     }
 
     /// Whether the type fits a located address of `bits` bits (1 = X, a bool). Only channels
@@ -163,26 +196,29 @@ impl TypeFacts {
 
     /// Whether one element is a number: an integer, a bit string or a real.
     pub const fn element_is_number(self) -> bool {
-        self.iec_type.is_integer() || self.iec_type.is_real()
+        !self.structured && self.iec_type.is_integer() || self.iec_type.is_real()
     }
 
     /// Whether one element is a real (f32 or f64).
     pub const fn element_is_real(self) -> bool {
-        self.iec_type.is_real()
+        !self.structured && self.iec_type.is_real()
     }
 
     /// Whether one element is a string.
     pub const fn element_is_string(self) -> bool {
-        matches!(self.iec_type, IecType::String)
+        !self.structured && matches!(self.iec_type, IecType::String)
     }
 
     /// Whether `initial = true/false` fits.
     pub const fn initial_bool_fits(self) -> bool {
-        matches!(self.iec_type, IecType::Bool)
+        !self.structured && matches!(self.iec_type, IecType::Bool)
     }
 
     /// Whether an integer `initial` fits (integers by range; reals take bare integers).
     pub const fn initial_int_fits(self, v: i128) -> bool {
+        if self.structured {
+            return false;
+        }
         match self.iec_type.int_range() {
             Some((lo, hi)) => v >= lo && v <= hi,
             None => self.iec_type.is_real(),
@@ -192,6 +228,9 @@ impl TypeFacts {
     /// Whether a real `initial` fits: finite (an overflowing literal is infinity, which no
     /// `initial` means), and within f32's range for REAL.
     pub const fn initial_real_fits(self, v: f64) -> bool {
+        if self.structured {
+            return false;
+        }
         match self.iec_type {
             IecType::Real => v.is_finite() && v <= f32::MAX as f64 && v >= -(f32::MAX as f64),
             IecType::Lreal => v.is_finite(),
@@ -201,12 +240,12 @@ impl TypeFacts {
 
     /// Whether a string `initial` of `len` bytes fits.
     pub const fn initial_str_fits(self, len: usize) -> bool {
-        matches!(self.iec_type, IecType::String) && len <= self.string_capacity
+        !self.structured && matches!(self.iec_type, IecType::String) && len <= self.string_capacity
     }
 
     /// The width of a scalar in bits (0 for strings and arrays).
     pub const fn scalar_bits(self) -> u32 {
-        if self.rank == 0 {
+        if self.rank == 0 && !self.structured {
             self.iec_type.bits()
         } else {
             0
@@ -215,7 +254,7 @@ impl TypeFacts {
 
     /// Whether a declared `iec_type` fits the type's storage (same width and kind).
     pub const fn storage_matches(self, declared: IecType) -> bool {
-        declared.same_storage(self.iec_type)
+        !self.structured && declared.same_storage(self.iec_type)
     }
 }
 

@@ -10,7 +10,13 @@ fn the_rust_form_of_each_row_gives_its_issue_kinds() {
         let input: syn::DeriveInput =
             syn::parse_str(row.rust).unwrap_or_else(|e| panic!("{}: {e}", row.rule));
         let mut cx = crate::ctxt::Ctxt::default();
-        let Some(c) = crate::ast::parse(&input, &mut cx) else {
+        // A row declaring a structure type says so with its derive attribute.
+        let kind = if row.rust.contains("derive(PlcStruct)") {
+            crate::ast::Kind::PlcStruct
+        } else {
+            crate::ast::Kind::GlobalMemory
+        };
+        let Some(c) = crate::ast::parse(&input, kind, &mut cx) else {
             panic!("{}: no struct", row.rule)
         };
         // The conversion's own issues (an unknown direction), then the checker's, warnings

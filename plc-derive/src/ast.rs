@@ -1,4 +1,5 @@
-//! The model of a `#[derive(GlobalMemory)]` struct: each field's attributes parsed into the
+//! The model of a `#[derive(GlobalMemory)]` or `#[derive(PlcStruct)]` struct: each field's
+//! attributes parsed into the
 //! declaration model (`plc_rules::decl`), each keeping the span of what the user wrote so the
 //! checker's issues point at it, beside what only the Rust code has (serde_derive's `ast`).
 
@@ -42,8 +43,37 @@ impl Loc {
 /// A value and the span of the tokens it came from.
 pub type At<T> = Located<T, Loc>;
 
+/// Which derive: a program's variables, or a structure type for their fields.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    GlobalMemory,
+    PlcStruct,
+}
+
+impl Kind {
+    /// The derive's name, as messages give it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::GlobalMemory => "GlobalMemory",
+            Kind::PlcStruct => "PlcStruct",
+        }
+    }
+
+    /// What one field is, as messages call it.
+    fn field(self) -> &'static str {
+        match self {
+            Kind::GlobalMemory => "variable",
+            Kind::PlcStruct => "member",
+        }
+    }
+}
+
 pub struct Container<'a> {
+    pub kind: Kind,
     pub ident: &'a Ident,
+    /// The structure's type name (`#[plc(name = "...")]` or the struct's name), as tools show
+    /// it.
+    pub type_name: String,
     /// Path to `plc_core` (`crate = "..."` or `::plc_core`).
     pub krate: TokenStream,
     pub little_endian: bool,
@@ -75,6 +105,8 @@ pub struct Var<'a> {
     pub effective_direction: Direction,
     /// Filled in by `check`: the valid I/O address of `at`.
     pub address: Option<IecAddress>,
+    /// Where `nonvolatile` (or `retain`) was written.
+    pub nonvolatile_at: Option<Span>,
 }
 
 impl Var<'_> {
@@ -95,22 +127,25 @@ fn field_name(ident: &Ident) -> String {
 
 /// Parses the struct; every problem goes to `cx`. Returns `None` only when there is no struct
 /// with named fields to model at all.
-pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>> {
+pub fn parse<'a>(input: &'a DeriveInput, kind: Kind, cx: &mut Ctxt) -> Option<Container<'a>> {
+    let (derive, field) = (kind.name(), kind.field());
     let fields = match &input.data {
         Data::Struct(s) => match &s.fields {
             Fields::Named(named) => Some(&named.named),
             Fields::Unnamed(f) => {
                 cx.error(
                     f.span(),
-                    "`GlobalMemory` needs named fields: each variable is known by its name \
-                     (write `struct Gm { speed: i32 }`)",
+                    format!(
+                        "`{derive}` needs named fields: each {field} is known by its name \
+                         (write `struct Gm {{ speed: i32 }}`)"
+                    ),
                 );
                 None
             }
             Fields::Unit => {
                 cx.error(
                     input.ident.span(),
-                    "`GlobalMemory` needs a struct with named fields, one per variable",
+                    format!("`{derive}` needs a struct with named fields, one per {field}"),
                 );
                 None
             }
@@ -118,16 +153,20 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
         Data::Enum(e) => {
             cx.error(
                 e.enum_token.span,
-                "`GlobalMemory` cannot be derived for an enum: declare the variables as the \
-                 named fields of a struct",
+                format!(
+                    "`{derive}` cannot be derived for an enum: declare the {field}s as the \
+                     named fields of a struct"
+                ),
             );
             None
         }
         Data::Union(u) => {
             cx.error(
                 u.union_token.span,
-                "`GlobalMemory` cannot be derived for a union: declare the variables as the \
-                 named fields of a struct",
+                format!(
+                    "`{derive}` cannot be derived for a union: declare the {field}s as the \
+                     named fields of a struct"
+                ),
             );
             None
         }
@@ -135,8 +174,10 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
     if !input.generics.params.is_empty() {
         cx.error(
             input.generics.span(),
-            "`GlobalMemory` cannot be derived for a generic struct: the shared-memory layout \
-             must be fixed; remove the type, lifetime and const parameters",
+            format!(
+                "`{derive}` cannot be derived for a generic struct: the shared-memory layout \
+                 must be fixed; remove the type, lifetime and const parameters"
+            ),
         );
     }
     let container = match ContainerAttr::from_derive_input(input) {
@@ -151,7 +192,14 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
     let mut little_endian = false;
     let mut unaligned = false;
     let mut bus = None;
+    let mut type_name = input.ident.to_string();
+    let mut standard_names = false;
     if let Some(c) = container {
+        c.only_on(kind, cx);
+        if let Some(name) = &c.name {
+            type_name = name.to_string();
+        }
+        standard_names = c.iec_standard.is_present();
         bus = c
             .bus
             .as_ref()
@@ -180,7 +228,17 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
         .iter()
         .filter_map(|f| f.ident.as_ref().map(|ident| parse_field(f, ident, cx)))
         .unzip();
+    let mut decl_vars: Vec<decl::Var<Loc>> = decl_vars;
+    if standard_names {
+        // plc-core's standard function blocks carry IEC's member names (`IN`, `S`, `LD`),
+        // which the naming rules keep from users.
+        for v in &mut decl_vars {
+            v.name_known = false;
+        }
+    }
     Some(Container {
+        kind,
+        type_name,
         ident: &input.ident,
         krate,
         little_endian,
@@ -188,6 +246,7 @@ pub fn parse<'a>(input: &'a DeriveInput, cx: &mut Ctxt) -> Option<Container<'a>>
         decl: Decl {
             vars: decl_vars,
             unaligned,
+            structure: kind == Kind::PlcStruct,
         },
         bus,
     })
@@ -228,6 +287,7 @@ fn parse_field<'a>(
         mapped_to: None,
         effective_direction: Direction::Internal,
         address: None,
+        nonvolatile_at: None,
     };
     match attr {
         Some(a) => fill_from_attr(&mut var, &mut model, a, &field.attrs, cx),
@@ -303,6 +363,7 @@ fn fill_from_attr(
         );
     }
     model.nonvolatile = a.nonvolatile.is_present() || a.retain.is_present();
+    var.nonvolatile_at = a.nonvolatile.span().or(a.retain.span());
     if let Some(d) = a.description {
         model.description = d.trim().to_string();
     }

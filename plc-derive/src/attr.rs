@@ -19,6 +19,48 @@ pub struct ContainerAttr {
     pub unaligned: Switch,
     /// `bus = "bus/machine.toml"`: check every link against this bus description.
     pub bus: Option<SpannedValue<String>>,
+    /// `name = "Axis"` on a PlcStruct: its type name as tools show it (default: the struct's).
+    pub name: Option<SpannedValue<String>>,
+    /// plc-core's standard function blocks: members with IEC's own names (`IN`, `S`, `LD`),
+    /// which users may not declare. Not for users.
+    #[darling(rename = "__iec_standard")]
+    pub iec_standard: Switch,
+}
+
+impl ContainerAttr {
+    /// Reports the keys given on the wrong derive.
+    pub fn only_on(&self, kind: crate::ast::Kind, cx: &mut crate::ctxt::Ctxt) {
+        use crate::ast::Kind;
+        let program_only = [
+            ("byte_order", self.byte_order.as_ref().map(|v| v.span())),
+            ("unaligned", self.unaligned.span()),
+            ("bus", self.bus.as_ref().map(|v| v.span())),
+        ];
+        match kind {
+            Kind::PlcStruct => {
+                for (key, span) in program_only {
+                    if let Some(span) = span {
+                        cx.error(
+                            span,
+                            format!(
+                                "`{key}` belongs on the `GlobalMemory` struct: a structure's \
+                                 members have no physical I/O"
+                            ),
+                        );
+                    }
+                }
+            }
+            Kind::GlobalMemory => {
+                if let Some(name) = &self.name {
+                    cx.error(
+                        name.span(),
+                        "`name` names a `PlcStruct` type: a `GlobalMemory` struct's name is its \
+                         segment's, given when the program starts",
+                    );
+                }
+            }
+        }
+    }
 }
 
 /// `#[plc(...)]` on a field.

@@ -13,7 +13,7 @@ pub fn field_keys() -> impl Iterator<Item = &'static str> {
 }
 
 /// Container keys.
-pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned", "bus"];
+pub const CONTAINER_KEYS: &[&str] = &["crate", "byte_order", "unaligned", "bus", "name"];
 
 /// What a key's value looks like, for "wrong kind of value" messages.
 pub fn expects(key: &str) -> Option<&'static str> {

@@ -39,6 +39,8 @@ impl GlobalMemory for OneInput {
         direction: Direction::Input,
         ux: false,
         quantity: None,
+        members: &[],
+        type_name: None,
     })];
     const LAYOUT_HASH: u64 = 0;
     fn unpack_bits(&mut self) {}

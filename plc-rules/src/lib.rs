@@ -9,6 +9,7 @@
 //! - [`address`]: IEC 61131-3 direct addresses such as `%IX100.4`.
 //! - [`capacity`]: the limits on strings and arrays.
 //! - [`layout`]: the layout hash that lets a reader detect a changed declaration.
+//! - [`path`]: paths such as `axes[1].pos` that name one value inside the variables.
 //!
 //! ```
 //! use plc_rules::{IecType, widening::can_widen};
@@ -30,6 +31,7 @@ mod iec_type;
 pub mod layout;
 pub mod link;
 pub mod names;
+pub mod path;
 pub mod widening;
 
 pub use access::{Access, Direction};

@@ -3,7 +3,7 @@
 //! message computed here (a const panic cannot format values).
 
 use super::private;
-use crate::ast::{Container, Loc, Var};
+use crate::ast::{Container, Kind, Loc, Var};
 use crate::types::SynType;
 use plc_rules::address::Size;
 use plc_rules::decl;
@@ -29,7 +29,7 @@ fn assert_over(written: &TokenStream, cond: TokenStream, message: String) -> Tok
 
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
-    let mut out = TokenStream::new();
+    let mut out = image_size(c);
     for (v, m) in c.fields() {
         let ty = v.ty;
         let name = v.field_name();
@@ -50,6 +50,7 @@ pub fn expand(c: &Container) -> TokenStream {
                      least one item"
                 ),
             ));
+            structure_checks(c, v, m, &mut out);
             unknown_type_checks(c, v, m, &mut out);
         }
         // The bit must be within the source's width; only the compiler knows an alias's width.
@@ -81,6 +82,77 @@ pub fn expand(c: &Container) -> TokenStream {
         }
     }
     out
+}
+
+/// The whole image below 2^32 bytes: a structure's, and a program's.
+fn image_size(c: &Container) -> TokenStream {
+    let p = private(c);
+    let what = match c.kind {
+        Kind::GlobalMemory => "the variables",
+        Kind::PlcStruct => "the members",
+    };
+    assert(
+        c.ident.span(),
+        quote!((#p::image_size(&__PLC_SIZES) as u64) < #p::plc_rules::capacity::MAX_IMAGE_BYTES),
+        format!(
+            "the image of `{}` is 4 GiB or more: {what} must take less than 2^32 bytes (fewer \
+             or smaller array elements)",
+            c.ident
+        ),
+    )
+}
+
+/// The rules for a field whose type is a structure (only the compiler knows): nesting depth,
+/// and no physical I/O, `initial` or `nonvolatile` on the structure as a whole.
+fn structure_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenStream) {
+    let p = private(c);
+    let ty = v.ty;
+    let name = v.field_name();
+    let facts = quote_spanned!(v.ty_span()=> #p::facts::<#ty>());
+    let max = plc_rules::capacity::MAX_STRUCT_DEPTH;
+    // A member of a structure is one level further down than a program's field.
+    let levels = match c.kind {
+        Kind::GlobalMemory => max,
+        Kind::PlcStruct => max - 1,
+    };
+    out.extend(assert(
+        v.ty_span(),
+        quote!(#facts.depth_at_most(#levels)),
+        format!(
+            "the type of `{name}` nests structures too deep: at most {max} levels of structures \
+             in one another"
+        ),
+    ));
+    if let Some(link) = &m.link {
+        out.extend(assert(
+            link.at.span(),
+            quote!(!#facts.is_structured()),
+            format!(
+                "`{name}` is a structure: a link connects one basic variable to one entry; \
+                 link a top-level variable of a basic type"
+            ),
+        ));
+    }
+    if let Some(init) = &v.initial {
+        out.extend(assert_over(
+            &init.tokens,
+            quote!(!#facts.is_structured()),
+            format!(
+                "`{name}` is a structure: give `initial` on its members, in the structure's \
+                 declaration"
+            ),
+        ));
+    }
+    if let Some(span) = v.nonvolatile_at {
+        out.extend(assert(
+            span,
+            quote!(!#facts.is_structured()),
+            format!(
+                "`{name}` is a structure: it cannot be `nonvolatile` as a whole; mark the members \
+                 to keep `nonvolatile` in the structure's declaration"
+            ),
+        ));
+    }
 }
 
 fn unknown_type_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenStream) {
@@ -133,8 +205,14 @@ fn unknown_type_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut Tok
         ));
     }
     if let Some(init) = &v.initial {
+        // A structure's one error is the structure check's, not the kind of its value.
+        let structured = quote_spanned!(v.ty_span()=> #p::facts::<#ty>().is_structured());
         for (cond, message) in init.alias_checks(&c.krate, ty, v.ty_span(), &name) {
-            out.extend(assert_over(&init.tokens, cond, message));
+            out.extend(assert_over(
+                &init.tokens,
+                quote!(#structured || (#cond)),
+                message,
+            ));
         }
     }
 }

@@ -43,3 +43,39 @@ pub fn expand(c: &Container) -> TokenStream {
         }
     }
 }
+
+/// The same for a structure: a `PlcType` with no members, so fields of its type add no errors.
+pub fn expand_struct(c: &Container) -> TokenStream {
+    let krate = &c.krate;
+    let p = super::private(c);
+    let ident = c.ident;
+    let unreachable = quote!(::core::unreachable!("the declaration has compile errors"));
+    quote! {
+        impl #p::Sealed for #ident {}
+
+        #[automatically_derived]
+        impl #p::PlcType for #ident {
+            const IEC_TYPE: #krate::IecType = #krate::IecType::Byte;
+            const RANK: usize = 0;
+            const DIMS: &'static [usize] = &[];
+            const ELEMENTS: usize = 1;
+            const STRING_CAPACITY: usize = 0;
+            const TYPE_NAME: ::core::option::Option<&'static str> = ::core::option::Option::None;
+            type Repr = [u8; 0];
+            fn to_repr(&self) -> [u8; 0] { [] }
+            fn from_repr(_: &[u8; 0]) -> Self { #unreachable }
+            fn get_element(&self, _: usize) -> ::core::option::Option<#krate::Value> {
+                ::core::option::Option::None
+            }
+            fn set_element(&mut self, _: usize, _: #krate::Value, _: #krate::IecType)
+                -> ::core::result::Result<(), #p::ElementError> {
+                ::core::result::Result::Err(#p::ElementError::OutOfRange { len: 0 })
+            }
+        }
+
+        #[automatically_derived]
+        impl ::core::default::Default for #ident {
+            fn default() -> Self { #unreachable }
+        }
+    }
+}

@@ -49,10 +49,11 @@ fn direction(c: &Container, d: Direction) -> TokenStream {
     quote!(#krate::Direction::#variant)
 }
 
-pub fn expand(c: &Container) -> TokenStream {
+/// One `VarInfo` per field, in declaration order.
+pub fn infos(c: &Container) -> Vec<TokenStream> {
     let p = private(c);
     let krate = &c.krate;
-    let infos = c.fields().enumerate().map(|(i, (v, m))| {
+    c.fields().enumerate().map(|(i, (v, m))| {
         let ty = v.ty;
         let (offset, size) = (offset(i), size(i));
         let name = &m.name.value;
@@ -98,9 +99,17 @@ pub fn expand(c: &Container) -> TokenStream {
                 direction: #dir,
                 ux: #ux,
                 quantity: #quantity,
+                members: <#ty as #p::PlcType>::MEMBERS,
+                type_name: <#ty as #p::PlcType>::TYPE_NAME,
             })
         }
-    });
+    }).collect()
+}
+
+pub fn expand(c: &Container) -> TokenStream {
+    let p = private(c);
+    let krate = &c.krate;
+    let infos = infos(c);
     quote! {
         const VARIABLES: &'static [#krate::VarInfo] = &[#(#infos,)*];
         const LAYOUT_HASH: u64 = #p::layout_hash(Self::VARIABLES);

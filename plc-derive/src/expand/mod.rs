@@ -10,8 +10,9 @@ mod fallback;
 mod image;
 mod located;
 mod metadata;
+mod structure;
 
-use crate::ast::{self, Container, Var};
+use crate::ast::{self, Container, Kind, Var};
 use crate::check;
 use crate::ctxt::Ctxt;
 use proc_macro2::TokenStream;
@@ -22,9 +23,9 @@ use syn::DeriveInput;
 /// outside the block, and is unusual enough not to shadow a type the fields name.
 pub const IMAGE: &str = "__PlcVarsImage";
 
-pub fn derive(input: &DeriveInput) -> TokenStream {
+pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
     let mut cx = Ctxt::default();
-    let Some(mut c) = ast::parse(input, &mut cx) else {
+    let Some(mut c) = ast::parse(input, kind, &mut cx) else {
         return cx.into_tokens();
     };
     check::check(&mut c, &mut cx);
@@ -33,15 +34,26 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     // Type-dependent checks run whatever else failed, so all mistakes show at once.
     let asserts = asserts::expand(&c);
     if cx.has_errors() {
-        let fallback = if input.generics.params.is_empty() {
-            fallback::expand(&c)
-        } else {
-            TokenStream::new()
+        let fallback = match (input.generics.params.is_empty(), kind) {
+            (false, _) => TokenStream::new(),
+            (true, Kind::GlobalMemory) => fallback::expand(&c),
+            (true, Kind::PlcStruct) => fallback::expand_struct(&c),
         };
         let errors = cx.into_tokens();
         return quote! {
             #errors
             const _: () = { #tracked #asserts #fallback };
+        };
+    }
+    let image_struct = image::image_struct(&c);
+    if kind == Kind::PlcStruct {
+        let structure = structure::expand(&c);
+        return quote! {
+            const _: () = {
+                #image_struct
+                #asserts
+                #structure
+            };
         };
     }
     let body = [
@@ -56,7 +68,6 @@ pub fn derive(input: &DeriveInput) -> TokenStream {
     let image_ident = image_ident();
     let bounds = alias_bounds(&c);
     let default = default::expand(&c, &bounds);
-    let image_struct = image::image_struct(&c);
     quote! {
         const _: () = {
             #tracked

@@ -135,6 +135,8 @@ mod tests {
             direction: dir,
             ux: false,
             quantity: None,
+            members: &[],
+            type_name: None,
         })
     }
 
@@ -370,6 +372,8 @@ mod tests {
             direction: v.direction,
             ux: v.ux,
             quantity: v.quantity,
+            members: v.members(),
+            type_name: None,
         }
     }
 

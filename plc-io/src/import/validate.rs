@@ -376,6 +376,7 @@ pub fn check(parsed: &Parsed, lines: &dyn Fn(usize) -> Option<u64>) -> Checked {
         .map(|(i, (name, v))| read_var(i, name, v, &mut errors, &wording))
         .collect();
     let decl = Decl {
+        structure: false,
         vars,
         unaligned: false,
     };

@@ -51,7 +51,12 @@ pub fn check<L: Clone>(decl: &Decl<L>) -> Checked<L> {
         .map(|v| Resolved {
             mapped: None,
             direction: Direction::Internal,
-            address: own_rules(v, &mut issues),
+            address: if decl.structure {
+                structure_rules(v, &mut issues);
+                None
+            } else {
+                own_rules(v, &mut issues)
+            },
         })
         .collect();
     duplicate_names(decl, &mut issues);
@@ -61,6 +66,27 @@ pub fn check<L: Clone>(decl: &Decl<L>) -> Checked<L> {
     initial_and_iec_type(decl, &mut issues);
     shared_links(decl, &mut issues);
     Checked { issues, vars }
+}
+
+/// The rules of one member of a structure: those of a variable, but physical I/O is declared
+/// at the top level (a structure's members have no place on a bus or in the I/O areas), and
+/// only IN and OUT parameters have a direction.
+fn structure_rules<L: Clone>(v: &Var<L>, issues: &mut Vec<Issue<L>>) {
+    let mut plain = v.clone();
+    for (key, at) in [("link", plain.link.take()), ("at", plain.at.take())] {
+        if let Some(at) = at {
+            issues.push(Issue::new(IssueKind::IoInStructure { key }, at.at));
+        }
+    }
+    if let Some(d) = &v.direction
+        && matches!(d.value, Direction::Command | Direction::Status)
+    {
+        issues.push(Issue::new(
+            IssueKind::DirectionInStructure { given: d.value },
+            d.at.clone(),
+        ));
+    }
+    own_rules(&plain, issues);
 }
 
 /// The rules of one variable on its own; returns its address if valid.

@@ -155,6 +155,16 @@ pub enum IssueKind {
         /// The source's direction.
         source_direction: Direction,
     },
+    /// `link` or `at` on a member of a structure.
+    IoInStructure {
+        /// `link` or `at`.
+        key: &'static str,
+    },
+    /// A direction other than input (IN) or output (OUT) on a member of a structure.
+    DirectionInStructure {
+        /// The direction given.
+        given: Direction,
+    },
     /// `source` without `bit`.
     SourceWithoutBit,
     /// `bit` without `source`.
@@ -270,6 +280,8 @@ pub const KIND_NAMES: &[&str] = &[
     "UnknownDirection",
     "DirectionContradictsAddress",
     "DirectionContradictsSource",
+    "IoInStructure",
+    "DirectionInStructure",
     "SourceWithoutBit",
     "BitWithoutSource",
     "BadBit",
@@ -306,6 +318,8 @@ impl IssueKind {
             IssueKind::UnknownDirection { .. } => "UnknownDirection",
             IssueKind::DirectionContradictsAddress { .. } => "DirectionContradictsAddress",
             IssueKind::DirectionContradictsSource { .. } => "DirectionContradictsSource",
+            IssueKind::IoInStructure { .. } => "IoInStructure",
+            IssueKind::DirectionInStructure { .. } => "DirectionInStructure",
             IssueKind::SourceWithoutBit => "SourceWithoutBit",
             IssueKind::BitWithoutSource => "BitWithoutSource",
             IssueKind::BadBit { .. } => "BadBit",
@@ -452,6 +466,15 @@ impl<L> Issue<L> {
                  takes its source's direction; remove `direction`",
                 given.name(),
                 q(source)
+            ),
+            IssueKind::IoInStructure { key } => format!(
+                "`{key}` cannot be given inside a structure: physical I/O is declared at the top \
+                 level, with a basic type; link a top-level variable and copy it into the member"
+            ),
+            IssueKind::DirectionInStructure { given } => format!(
+                "`{given}` is no direction inside a structure: a member is an IN parameter \
+                 (`direction = \"input\"`), an OUT parameter (`\"output\"`) or, without a \
+                 direction, internal"
             ),
             IssueKind::SourceWithoutBit => "needs `bit`, the bit of the source word (0 = least \
                                             significant) that this bool maps to"

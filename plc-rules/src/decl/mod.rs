@@ -17,7 +17,7 @@
 //! let mut flag = Var::new(Located::new("flag".into(), "flag"), "flag", known(IecType::Bool, "flag"));
 //! flag.source = Some(Located::new("inputs".to_string(), "flag.source"));
 //! flag.bit = Some(Located::new(16, "flag.bit"));
-//! let checked = decl::check(&Decl { vars: vec![inputs, flag], unaligned: false });
+//! let checked = decl::check(&Decl { vars: vec![inputs, flag], unaligned: false, structure: false });
 //!
 //! struct Plain;
 //! impl Wording<&'static str> for Plain {
@@ -251,6 +251,10 @@ pub struct Decl<L> {
     pub vars: Vec<Var<L>>,
     /// `#[plc(unaligned)]`: located W/D/L variables may start at any byte.
     pub unaligned: bool,
+    /// The members of a structure type (`#[derive(PlcStruct)]`, a type of the JSON list's
+    /// `types`) rather than a program's variables: no physical I/O (`link`, `at`), and
+    /// `direction` marks IN and OUT parameters only.
+    pub structure: bool,
 }
 
 #[cfg(test)]

@@ -1,0 +1,274 @@
+//! Finding the one basic value a path names, in any description of the variables: the
+//! derive's static `VarInfo` tables and a segment's descriptor both implement [`Node`], so a
+//! program and a tool without its Rust types resolve every path the same way.
+//!
+//! A variable's basic values are numbered by its *leaves*: row-major over its array elements,
+//! and inside a structure its members' leaves in declaration order. A scalar has one leaf, an
+//! array of basic values one per element, `[Axis; 4]` four times an `Axis`'s leaves.
+
+use super::{PathError, segments};
+use crate::access::{Access, Direction};
+use core::fmt;
+
+/// One variable or member, as the path navigation needs to see it.
+pub trait Node: Sized {
+    /// Its symbol name.
+    fn name(&self) -> &str;
+    /// Array dimensions, outermost first; empty for a scalar.
+    fn dims(&self) -> &[usize];
+    /// Byte offset: in the image for a top-level variable, from the structure's start for a
+    /// member.
+    fn offset(&self) -> usize;
+    /// Bytes of all its elements.
+    fn size(&self) -> usize;
+    /// A structure's members (empty for a basic type).
+    fn members(&self) -> &[Self];
+    /// Read-write or read-only.
+    fn access(&self) -> Access;
+    /// Its direction.
+    fn direction(&self) -> Direction;
+}
+
+/// Basic values in `node`: its elements times the leaves of one element.
+pub fn leaves<N: Node>(node: &N) -> usize {
+    crate::access::elements(node.dims()).saturating_mul(element_leaves(node))
+}
+
+/// Basic values in one element of `node`: 1 for a basic type, else the sum of its members'.
+pub fn element_leaves<N: Node>(node: &N) -> usize {
+    if node.members().is_empty() {
+        1
+    } else {
+        node.members()
+            .iter()
+            .fold(0usize, |n, m| n.saturating_add(leaves(m)))
+    }
+}
+
+/// Whether tools may write a member of a structure: it is read-write. IN parameters
+/// (`direction = "input"` inside a structure) are written by the caller of a function block,
+/// so tools may set them as well; a physical input at the top level they may not.
+pub const fn member_writable(access: Access) -> bool {
+    matches!(access, Access::ReadWrite)
+}
+
+/// The basic value a path names.
+#[derive(Debug, PartialEq)]
+pub struct Found<'n, N> {
+    /// Index of the top-level variable.
+    pub index: usize,
+    /// The value's leaf number within that variable.
+    pub leaf: usize,
+    /// The basic variable or member holding the value.
+    pub node: &'n N,
+    /// Element within `node` (0 for a scalar).
+    pub element: usize,
+    /// Byte offset of the value in the image.
+    pub offset: usize,
+    /// Whether tools may write it: the top-level variable and every member on the way are.
+    pub writable: bool,
+}
+
+impl<N> Clone for Found<'_, N> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<N> Copy for Found<'_, N> {}
+
+/// Why a path names no basic value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LocateError<'p> {
+    /// The text is not a path.
+    Syntax(PathError),
+    /// No variable or member of this name at this level; `within` is the path before it ("" at
+    /// the top level).
+    NoSuchName {
+        /// The name that was not found.
+        name: &'p str,
+        /// The path of the structure searched.
+        within: &'p str,
+    },
+    /// The index does not fit the array named by `at`.
+    Index {
+        /// The path up to and including the array's name.
+        at: &'p str,
+        /// What is wrong with the index.
+        error: PathError,
+    },
+    /// The path ends at an array: name one element (`grid[1,2]`).
+    WholeArray {
+        /// The path of the array.
+        at: &'p str,
+    },
+    /// The path ends at a structure: name one of its members.
+    WholeStructure {
+        /// The path of the structure.
+        at: &'p str,
+    },
+    /// A `.` after a basic value.
+    NotAStructure {
+        /// The path of the basic value.
+        at: &'p str,
+    },
+}
+
+impl fmt::Display for LocateError<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LocateError::Syntax(e) => write!(f, "not a path: {e}"),
+            LocateError::NoSuchName { name, within: "" } => write!(f, "no variable `{name}`"),
+            LocateError::NoSuchName { name, within } => {
+                write!(f, "`{within}` has no member `{name}`")
+            }
+            LocateError::Index { at, error } => write!(f, "`{at}`: {error}"),
+            LocateError::WholeArray { at } => write!(
+                f,
+                "`{at}` is an array: name one element, such as `{at}[0]`"
+            ),
+            LocateError::WholeStructure { at } => write!(
+                f,
+                "`{at}` is a structure: name one of its members, such as `{at}.<member>`"
+            ),
+            LocateError::NotAStructure { at } => {
+                write!(f, "`{at}` is not a structure: it has no members")
+            }
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for LocateError<'_> {}
+
+/// The basic value `path` names among `vars` (case-insensitive names, 0-based indexes).
+///
+/// ```
+/// # use plc_rules::path::{Node, locate};
+/// # use plc_rules::{Access, Direction};
+/// # struct V { name: &'static str, dims: Vec<usize>, offset: usize, size: usize, members: Vec<V> }
+/// # impl Node for V {
+/// #     fn name(&self) -> &str { self.name }
+/// #     fn dims(&self) -> &[usize] { &self.dims }
+/// #     fn offset(&self) -> usize { self.offset }
+/// #     fn size(&self) -> usize { self.size }
+/// #     fn members(&self) -> &[V] { &self.members }
+/// #     fn access(&self) -> Access { Access::ReadWrite }
+/// #     fn direction(&self) -> Direction { Direction::Internal }
+/// # }
+/// # let m = |name, offset, size| V { name, dims: vec![], offset, size, members: vec![] };
+/// // axes: [Axis; 2] at offset 8, an Axis being { pos: f64, enable: bool } (9 bytes)
+/// let vars = [m("count", 0, 8), V { name: "axes", dims: vec![2], offset: 8, size: 18,
+///     members: vec![m("pos", 0, 8), m("enable", 8, 1)] }];
+/// let found = locate(&vars, "AXES[1].enable").unwrap();
+/// assert_eq!((found.index, found.leaf, found.offset), (1, 3, 8 + 9 + 8));
+/// ```
+pub fn locate<'n, 'p, N: Node>(
+    vars: &'n [N],
+    path: &'p str,
+) -> Result<Found<'n, N>, LocateError<'p>> {
+    let text = path.trim();
+    let mut level: &'n [N] = vars;
+    let mut found: Option<Found<'n, N>> = None;
+    // Where the current segment ends in `text`, for naming the path walked so far.
+    let mut consumed = 0usize;
+    for segment in segments(text) {
+        let segment = segment.map_err(LocateError::Syntax)?;
+        let within = &text[..consumed.saturating_sub(1)];
+        if let Some(f) = &found {
+            if f.node.members().is_empty() {
+                return Err(LocateError::NotAStructure { at: within });
+            }
+            if !f.node.dims().is_empty() && f.element_pending() {
+                return Err(LocateError::WholeArray { at: within });
+            }
+        }
+        let Some(pos) = level
+            .iter()
+            .position(|n| n.name().eq_ignore_ascii_case(segment.name))
+        else {
+            return Err(LocateError::NoSuchName {
+                name: segment.name,
+                within,
+            });
+        };
+        let node = &level[pos];
+        let mut step = match found {
+            None => Found {
+                index: pos,
+                leaf: 0,
+                node,
+                element: 0,
+                offset: node.offset(),
+                writable: crate::access::writable_from_outside(node.access(), node.direction()),
+            },
+            Some(parent) => {
+                let before = level[..pos]
+                    .iter()
+                    .fold(0usize, |n, m| n.saturating_add(leaves(m)));
+                Found {
+                    leaf: parent.leaf.saturating_add(before),
+                    node,
+                    element: 0,
+                    offset: parent.offset.saturating_add(node.offset()),
+                    writable: parent.writable && member_writable(node.access()),
+                    ..parent
+                }
+            }
+        };
+        // The end of this segment in `text`: its name, then its index in brackets.
+        consumed = segment_end(text, consumed, segment.name.len());
+        match segment.index {
+            Some(index) => {
+                let at = &text[..consumed];
+                let element = index
+                    .flat(node.dims())
+                    .map_err(|error| LocateError::Index { at, error })?;
+                let elements = crate::access::elements(node.dims()).max(1);
+                step.element = element;
+                step.leaf = step
+                    .leaf
+                    .saturating_add(element.saturating_mul(element_leaves(node)));
+                step.offset = step
+                    .offset
+                    .saturating_add(element.saturating_mul(node.size() / elements));
+            }
+            None if !node.dims().is_empty() => step.element = usize::MAX,
+            None => {}
+        }
+        consumed += 1; // the `.` after it
+        level = node.members();
+        found = Some(step);
+    }
+    let at = &text[..consumed.saturating_sub(1).min(text.len())];
+    let Some(f) = found else {
+        return Err(LocateError::Syntax(PathError::MissingName));
+    };
+    if f.element_pending() {
+        return Err(LocateError::WholeArray { at });
+    }
+    if !f.node.members().is_empty() {
+        return Err(LocateError::WholeStructure { at });
+    }
+    Ok(f)
+}
+
+impl<N> Found<'_, N> {
+    /// An array was named without its index (kept as `usize::MAX` until the end, so the error
+    /// can say which array).
+    fn element_pending(&self) -> bool {
+        self.element == usize::MAX
+    }
+}
+
+/// Where a segment that starts at `start` with a name of `name_len` bytes ends: after its
+/// bracketed index, if one follows.
+fn segment_end(text: &str, start: usize, name_len: usize) -> usize {
+    let after_name = start + name_len;
+    if text.as_bytes().get(after_name) == Some(&b'[') {
+        text[after_name..]
+            .find(']')
+            .map_or(text.len(), |i| after_name + i + 1)
+    } else {
+        after_name
+    }
+}
