@@ -212,8 +212,11 @@ const fn hash_vars(
         };
         h = h.var(v.name, v.iec_type.name(), v.offset, v.size, v.dims, bit);
         if let Some(name) = v.struct_name {
-            h = hash_vars(h.bytes(b"struct\0").bytes(name.as_bytes()).bytes(&[0]), v.members)
-                .bytes(b"end\0");
+            h = hash_vars(
+                h.bytes(b"struct\0").bytes(name.as_bytes()).bytes(&[0]),
+                v.members,
+            )
+            .bytes(b"end\0");
         }
         i += 1;
     }

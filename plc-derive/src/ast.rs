@@ -59,6 +59,14 @@ impl Kind {
         }
     }
 
+    /// A struct with named fields of this kind, for messages.
+    fn example(self) -> &'static str {
+        match self {
+            Kind::GlobalMemory => "struct Gm { speed: i32 }",
+            Kind::PlcStruct => "struct Axis { pos: f64 }",
+        }
+    }
+
     /// What one field is, as messages call it.
     fn field(self) -> &'static str {
         match self {
@@ -137,7 +145,8 @@ pub fn parse<'a>(input: &'a DeriveInput, kind: Kind, cx: &mut Ctxt) -> Option<Co
                     f.span(),
                     format!(
                         "`{derive}` needs named fields: each {field} is known by its name \
-                         (write `struct Gm {{ speed: i32 }}`)"
+                         (write `{}`)",
+                        kind.example()
                     ),
                 );
                 None

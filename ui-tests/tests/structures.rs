@@ -141,10 +141,7 @@ fn paths_find_every_basic_value() {
     assert_eq!(at.offset, 4 + 25 + 25 + 16 + 2);
     let deep = Gm::find("STATION.Axes[1].TARGET").unwrap();
     assert_eq!(gm.get_at(&deep), Value::Real(-3.0));
-    assert_eq!(
-        gm.get_at(&Gm::find("grid[1,2]").unwrap()),
-        Value::UInt(42)
-    );
+    assert_eq!(gm.get_at(&Gm::find("grid[1,2]").unwrap()), Value::UInt(42));
     assert_eq!(gm.get_at(&Gm::find("grid[5]").unwrap()), Value::UInt(42));
     assert_eq!(gm.get_at(&Gm::find("speed").unwrap()), Value::Int(5));
     // Bits mapped inside a structure follow their source.

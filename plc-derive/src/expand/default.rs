@@ -4,8 +4,8 @@
 
 use super::{image_ident, private};
 use crate::ast::Container;
-use crate::types::SynType;
 use crate::expand::metadata::iec_type;
+use crate::types::SynType;
 use proc_macro2::TokenStream;
 use quote::quote;
 
@@ -44,10 +44,14 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let image = image_ident();
     // Structures among the fields (only the compiler knows which) set their members' initials
     // first; for basic types the call is empty.
-    let nested = c.vars.iter().filter(|v| v.syn_type == SynType::Unknown).map(|v| {
-        let (field, ty) = (v.ident, v.ty);
-        quote!(<#ty as #p::PlcType>::__init(&mut gm.#field);)
-    });
+    let nested = c
+        .vars
+        .iter()
+        .filter(|v| v.syn_type == SynType::Unknown)
+        .map(|v| {
+            let (field, ty) = (v.ident, v.ty);
+            quote!(<#ty as #p::PlcType>::__init(&mut gm.#field);)
+        });
     let initials = initials(
         c,
         quote!(<Self as #krate::GlobalMemory>::unpack_bits(&mut gm);),

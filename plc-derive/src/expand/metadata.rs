@@ -53,57 +53,60 @@ fn direction(c: &Container, d: Direction) -> TokenStream {
 pub fn infos(c: &Container) -> Vec<TokenStream> {
     let p = private(c);
     let krate = &c.krate;
-    c.fields().enumerate().map(|(i, (v, m))| {
-        let ty = v.ty;
-        let (offset, size) = (offset(i), size(i));
-        let name = &m.name.value;
-        let iec = iec_type(c, v, m);
-        let rust_type = type_text(ty);
-        let bit = match v.mapped_to {
-            Some((s, b)) => quote!(::core::option::Option::Some(#p::bit_mapping(#s, #b))),
-            None => quote!(::core::option::Option::None),
-        };
-        let link = opt_str(m.link.as_ref().map(|l| l.value.as_str()));
-        let address = opt_str(
-            m.at.as_ref()
-                .filter(|_| v.address.is_some())
-                .map(|a| a.value.as_str()),
-        );
-        let description = &m.description;
-        let initial_json = v.initial.as_ref().map(|i| i.json());
-        let initial = opt_str(initial_json.as_deref());
-        let nonvolatile = m.nonvolatile;
-        let access = if m.read_only {
-            quote!(#krate::Access::ReadOnly)
-        } else {
-            quote!(#krate::Access::ReadWrite)
-        };
-        let dir = direction(c, v.effective_direction);
-        let ux = m.ux;
-        let quantity = opt_str(m.quantity.as_ref().map(|q| q.value.as_str()));
-        quote! {
-            #p::var_info(#p::VarInfoParts {
-                name: #name,
-                iec_type: #iec,
-                rust_type: #rust_type,
-                offset: #offset,
-                size: #size,
-                dims: <#ty as #p::PlcType>::DIMS,
-                bit: #bit,
-                link: #link,
-                address: #address,
-                description: #description,
-                initial: #initial,
-                nonvolatile: #nonvolatile,
-                access: #access,
-                direction: #dir,
-                ux: #ux,
-                quantity: #quantity,
-                members: <#ty as #p::PlcType>::MEMBERS,
-                type_name: <#ty as #p::PlcType>::TYPE_NAME,
-            })
-        }
-    }).collect()
+    c.fields()
+        .enumerate()
+        .map(|(i, (v, m))| {
+            let ty = v.ty;
+            let (offset, size) = (offset(i), size(i));
+            let name = &m.name.value;
+            let iec = iec_type(c, v, m);
+            let rust_type = type_text(ty);
+            let bit = match v.mapped_to {
+                Some((s, b)) => quote!(::core::option::Option::Some(#p::bit_mapping(#s, #b))),
+                None => quote!(::core::option::Option::None),
+            };
+            let link = opt_str(m.link.as_ref().map(|l| l.value.as_str()));
+            let address = opt_str(
+                m.at.as_ref()
+                    .filter(|_| v.address.is_some())
+                    .map(|a| a.value.as_str()),
+            );
+            let description = &m.description;
+            let initial_json = v.initial.as_ref().map(|i| i.json());
+            let initial = opt_str(initial_json.as_deref());
+            let nonvolatile = m.nonvolatile;
+            let access = if m.read_only {
+                quote!(#krate::Access::ReadOnly)
+            } else {
+                quote!(#krate::Access::ReadWrite)
+            };
+            let dir = direction(c, v.effective_direction);
+            let ux = m.ux;
+            let quantity = opt_str(m.quantity.as_ref().map(|q| q.value.as_str()));
+            quote! {
+                #p::var_info(#p::VarInfoParts {
+                    name: #name,
+                    iec_type: #iec,
+                    rust_type: #rust_type,
+                    offset: #offset,
+                    size: #size,
+                    dims: <#ty as #p::PlcType>::DIMS,
+                    bit: #bit,
+                    link: #link,
+                    address: #address,
+                    description: #description,
+                    initial: #initial,
+                    nonvolatile: #nonvolatile,
+                    access: #access,
+                    direction: #dir,
+                    ux: #ux,
+                    quantity: #quantity,
+                    members: <#ty as #p::PlcType>::MEMBERS,
+                    type_name: <#ty as #p::PlcType>::TYPE_NAME,
+                })
+            }
+        })
+        .collect()
 }
 
 pub fn expand(c: &Container) -> TokenStream {

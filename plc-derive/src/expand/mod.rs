@@ -47,7 +47,7 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
     }
     let image_struct = image::image_struct(&c);
     if kind == Kind::PlcStruct {
-        let structure = structure::expand(&c);
+        let structure = structure::expand(&c, &alias_bounds(&c));
         return quote! {
             const _: () = {
                 #image_struct

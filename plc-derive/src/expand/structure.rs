@@ -10,7 +10,9 @@ use crate::expand::metadata;
 use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
-pub fn expand(c: &Container) -> TokenStream {
+/// `bounds`: `where` clauses assuming the member types only the compiler knows are PLC types
+/// (their one error comes from their assertion).
+pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
     let ident = c.ident;
@@ -36,10 +38,10 @@ pub fn expand(c: &Container) -> TokenStream {
         quote!(<Self as #p::PlcType>::__pack_bits(gm);),
     );
     quote! {
-        impl #p::Sealed for #ident {}
+        impl #p::Sealed for #ident #bounds {}
 
         #[automatically_derived]
-        impl #p::PlcType for #ident {
+        impl #p::PlcType for #ident #bounds {
             const IEC_TYPE: #krate::IecType = #krate::IecType::Byte;
             const RANK: usize = 0;
             const DIMS: &'static [usize] = &[];
@@ -110,7 +112,7 @@ pub fn expand(c: &Container) -> TokenStream {
         }
 
         #[automatically_derived]
-        impl ::core::default::Default for #ident {
+        impl ::core::default::Default for #ident #bounds {
             fn default() -> Self {
                 let zeroed = <#image as #p::zerocopy::FromZeros>::new_zeroed();
                 let mut s = <Self as #p::PlcType>::from_repr(&zeroed);

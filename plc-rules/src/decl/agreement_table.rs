@@ -364,6 +364,24 @@ const ROWS: &[Row] = &[
         kinds: &[],
     },
     Row {
+        rule: "a link and an address inside a structure (the list's types section is not read yet)",
+        rust: "#[derive(PlcStruct)] struct Axis { #[plc(link = \"ethercat.io.x\")] a: u16, #[plc(at = \"%IW4\")] b: i16 }",
+        json: None,
+        kinds: &["IoInStructure", "IoInStructure"],
+    },
+    Row {
+        rule: "IN and OUT parameters and an internal member of a structure (the list's types section is not read yet)",
+        rust: "#[derive(PlcStruct)] struct Axis { #[plc(direction = \"input\")] a: bool, #[plc(direction = \"output\")] b: bool, c: u8 }",
+        json: None,
+        kinds: &[],
+    },
+    Row {
+        rule: "a command and a status inside a structure (the list's types section is not read yet)",
+        rust: "#[derive(PlcStruct)] struct Axis { #[plc(direction = \"command\")] a: bool, #[plc(direction = \"status\")] b: bool }",
+        json: None,
+        kinds: &["DirectionInStructure", "DirectionInStructure"],
+    },
+    Row {
         rule: "every mistake of a declaration at once",
         rust: "struct Gm { #[plc(initial = 300)] a: u8, ton: bool, #[plc(link = \"ethercat.io\")] c: u8, #[plc(at = \"%IW3\")] d: i16 }",
         json: Some(r#""a": {"type": "u8", "initial": 300}, "ton": {"type": "bool"}, "c": {"type": "u8", "link": "ethercat.io"}, "d": {"type": "i16", "at": "%IW3"}"#),

@@ -122,10 +122,9 @@ impl fmt::Display for LocateError<'_> {
                 write!(f, "`{within}` has no member `{name}`")
             }
             LocateError::Index { at, error } => write!(f, "`{at}`: {error}"),
-            LocateError::WholeArray { at } => write!(
-                f,
-                "`{at}` is an array: name one element, such as `{at}[0]`"
-            ),
+            LocateError::WholeArray { at } => {
+                write!(f, "`{at}` is an array: name one element, such as `{at}[0]`")
+            }
             LocateError::WholeStructure { at } => write!(
                 f,
                 "`{at}` is a structure: name one of its members, such as `{at}.<member>`"
