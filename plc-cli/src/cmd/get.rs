@@ -1,17 +1,40 @@
 //! `plc get <segment> <name>...`: one consistent snapshot, every name from it.
 
-use super::{Error, resolve, show};
+use super::{Error, is_path, leaves_of, resolve, show};
 use plc_io::shm::DynSegment;
+
+/// One name of the command line: a variable or array element as before, or the values a
+/// path reaches inside structures.
+enum Wanted {
+    Flat(usize, Option<usize>),
+    Paths(Vec<plc_io::shm::PathLocation>),
+}
 
 pub fn run(segment: &str, names: &[String]) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
-    let resolved: Vec<_> = names
+    let wanted: Vec<Wanted> = names
         .iter()
-        .map(|n| resolve(&seg, n))
+        .map(|n| {
+            if is_path(&seg, n) {
+                leaves_of(&seg, n).map(Wanted::Paths)
+            } else {
+                resolve(&seg, n).map(|(i, _, e)| Wanted::Flat(i, e))
+            }
+        })
         .collect::<Result<_, _>>()?;
     let image = seg.snapshot_bytes()?;
-    for (spec, (i, _, element)) in names.iter().zip(resolved) {
-        println!("{spec} = {}", show(&seg, &image, i, element));
+    for (spec, w) in names.iter().zip(wanted) {
+        match w {
+            Wanted::Flat(i, element) => println!("{spec} = {}", show(&seg, &image, i, element)),
+            Wanted::Paths(paths) => {
+                for at in paths {
+                    let value = seg
+                        .value_at_location(&image, &at)
+                        .map_or("?".to_string(), |v| v.to_string());
+                    println!("{} = {value}", at.path);
+                }
+            }
+        }
     }
     Ok(())
 }

@@ -27,6 +27,101 @@ pub fn period_of(rate: f64, max: f64, what: &str) -> Result<std::time::Duration,
     Ok(std::time::Duration::from_secs_f64(1.0 / rate))
 }
 
+/// Whether `spec` names a value inside a structure or by coordinates (`axes[1].pos`,
+/// `grid[1,2]`), or a structured variable: such names go through the paths of the
+/// segment's descriptor.
+pub fn is_path(seg: &DynSegment, spec: &str) -> bool {
+    let head = spec.split(['[', '.']).next().unwrap_or(spec);
+    spec.contains(['.', ','])
+        || seg
+            .descriptor()
+            .index_of(head.trim())
+            .is_some_and(|i| !seg.descriptor().variables[i].members.is_empty())
+}
+
+/// Every basic value inside a structured variable or one of its elements, as `(path,
+/// location)`: what `plc get lift` prints.
+pub fn leaves_of(seg: &DynSegment, spec: &str) -> Result<Vec<plc_io::shm::PathLocation>, Error> {
+    let mut paths = Vec::new();
+    let spec = spec.trim();
+    match seg.locate(spec) {
+        Ok(at) => return Ok(vec![at]),
+        Err(e) => {
+            // Only a structure or a whole array is expanded; any other error is the answer.
+            let text = e.to_string();
+            if !text.contains("is a structure") && !text.contains("is an array") {
+                return Err(e.into());
+            }
+        }
+    }
+    expand_prefix(seg, spec, &mut paths)?;
+    paths.iter().map(|p| Ok(seg.locate(p)?)).collect()
+}
+
+/// The paths of every basic value under `prefix`, element by element, member by member.
+fn expand_prefix(seg: &DynSegment, prefix: &str, out: &mut Vec<String>) -> Result<(), Error> {
+    // Bounded: a tool prints at most this many values for one name.
+    const MAX: usize = 100_000;
+    let mut todo = vec![prefix.to_string()];
+    while let Some(p) = todo.pop() {
+        match seg.locate(&p) {
+            Ok(_) => out.push(p),
+            Err(e) => {
+                let text = e.to_string();
+                let node = node_at(seg, &p).ok_or(e)?;
+                let mut next: Vec<String> = if text.contains("is an array") {
+                    coordinates(&node.dims)
+                        .into_iter()
+                        .map(|c| format!("{p}[{c}]"))
+                        .collect()
+                } else {
+                    node.members
+                        .iter()
+                        .map(|m| format!("{p}.{}", m.name))
+                        .collect()
+                };
+                next.reverse();
+                todo.extend(next);
+            }
+        }
+        if out.len() + todo.len() > MAX {
+            return Err(format!("`{prefix}` holds more than {MAX} values: name fewer").into());
+        }
+    }
+    Ok(())
+}
+
+/// The variable or member a path prefix ends at (before any index on its last name).
+fn node_at<'a>(seg: &'a DynSegment, path: &str) -> Option<&'a VarDescriptor> {
+    let mut level = &seg.descriptor().variables;
+    let mut node = None;
+    for segment in plc_rules::path::segments(path) {
+        let s = segment.ok()?;
+        let n = level.iter().find(|v| v.name.eq_ignore_ascii_case(s.name))?;
+        level = &n.members;
+        node = Some(n);
+    }
+    node
+}
+
+/// Every coordinate of an array, row-major, as `1,2`.
+fn coordinates(dims: &[usize]) -> Vec<String> {
+    let total = plc_rules::access::elements(dims);
+    (0..total)
+        .map(|mut flat| {
+            let mut c = vec![0; dims.len()];
+            for (slot, d) in c.iter_mut().zip(dims).rev() {
+                *slot = flat % d;
+                flat /= d;
+            }
+            c.iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(",")
+        })
+        .collect()
+}
+
 /// `name` or `name[element]`, resolved against the segment's descriptor.
 pub fn resolve<'a>(
     seg: &'a DynSegment,

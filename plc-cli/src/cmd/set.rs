@@ -6,26 +6,63 @@
 //! The room check and the posts are not one atomic step: if another tool fills the mailbox in
 //! between, the writes posted before that are named, and so are those that were not.
 
-use super::{Error, resolve};
+use super::{Error, is_path, resolve};
 use plc_core::Value;
 use plc_io::shm::mailbox::{Outcome, Ticket};
 use plc_io::shm::{DynSegment, OwnerState};
 use std::time::{Duration, Instant};
 
-/// A checked assignment: variable name, element, value.
-pub type Checked = (String, usize, Value);
+/// A checked assignment: what the user named, the variable's index, the element (a leaf
+/// inside a structure) and the value.
+#[derive(Clone, Debug)]
+pub struct Target {
+    pub label: String,
+    pub element: usize,
+    pub value: Value,
+    /// Where, for a value named by its path.
+    pub at: Option<plc_io::shm::PathLocation>,
+}
+
+impl Target {
+    /// Posts the write; its ticket.
+    pub fn post(&self, seg: &DynSegment) -> Result<Ticket, plc_io::shm::ShmError> {
+        match &self.at {
+            Some(at) => seg.post_location(at, self.value),
+            None => seg.post_element(&self.label, self.element, self.value),
+        }
+    }
+}
+
+type Checked = Target;
 
 /// Parses and checks `name=value` against the segment, as the owner would.
 pub fn check(seg: &DynSegment, assignment: &str) -> Result<Checked, Error> {
     let (spec, text) = assignment
         .split_once('=')
         .ok_or_else(|| format!("`{assignment}`: write `name=value`"))?;
+    if is_path(seg, spec) {
+        let at = seg.locate(spec)?;
+        let value =
+            Value::parse(text, at.var.iec_type).map_err(|e| format!("`{}`: {e}", at.path))?;
+        let value = seg.check_location(&at, value)?;
+        return Ok(Target {
+            label: at.path.clone(),
+            element: at.leaf,
+            value,
+            at: Some(at),
+        });
+    }
     let (_, var, element) = resolve(seg, spec.trim())?;
     let element = element.unwrap_or(0);
     // Parsed as the variable's type; every other check is the library's, as the owner makes it.
     let value = Value::parse(text, var.iec_type).map_err(|e| format!("`{}`: {e}", var.name))?;
     let value = seg.check(&var.name, element, value)?;
-    Ok((var.name.clone(), element, value))
+    Ok(Target {
+        label: var.name.clone(),
+        element,
+        value,
+        at: None,
+    })
 }
 
 /// How long to wait for the program to take the writes: fifty of its cycles, at least a second
@@ -53,10 +90,10 @@ pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
     }
     let mut posted: Vec<(&Checked, Ticket)> = Vec::new();
     for (i, c) in checked.iter().enumerate() {
-        match seg.post_element(&c.0, c.1, c.2) {
+        match c.post(&seg) {
             Ok(ticket) => posted.push((c, ticket)),
             Err(e) => {
-                let quote = |c: &Checked| format!("`{}`", c.0);
+                let quote = |c: &Checked| format!("`{}`", c.label);
                 let done: Vec<String> = posted.iter().map(|p| quote(p.0)).collect();
                 let left: Vec<String> = checked[i..].iter().map(quote).collect();
                 return Err(format!(
@@ -83,7 +120,16 @@ pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
         std::thread::sleep(Duration::from_millis(2));
     };
     let mut problems = Vec::new();
-    for (&((name, _, value), _), outcome) in posted.iter().zip(outcomes) {
+    for (
+        &(
+            Target {
+                label: name, value, ..
+            },
+            _,
+        ),
+        outcome,
+    ) in posted.iter().zip(outcomes)
+    {
         match outcome {
             Outcome::Applied => println!("{name} <- {value}"),
             // Taken, but so many writes followed that its slot was reused before we looked.

@@ -201,9 +201,11 @@ impl Watch {
                     self.mode = Mode::Browse;
                     if let Some(i) = self.selected() {
                         let name = self.seg.descriptor().variables[i].name.clone();
-                        let result = set::check(&self.seg, &format!("{name}={input}")).and_then(
-                            |(n, e, v)| Ok(self.seg.write_element(&n, e, v).map(|()| v)?),
-                        );
+                        let result =
+                            set::check(&self.seg, &format!("{name}={input}")).and_then(|t| {
+                                t.post(&self.seg)?;
+                                Ok(t.value)
+                            });
                         self.message = match result {
                             Ok(v) => format!("wrote {name} = {v}"),
                             Err(e) => format!("not written: {e}"),

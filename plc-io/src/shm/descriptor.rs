@@ -49,6 +49,13 @@ pub struct VarDescriptor {
     /// The physical quantity a display uses to pick units (`"force"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quantity: Option<String>,
+    /// A structured variable's type name (`"Axis"`, `"TON"`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub type_name: Option<String>,
+    /// A structured variable's members (one element's, for an array of structures), offsets
+    /// from the structure's start.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub members: Vec<VarDescriptor>,
 }
 
 /// A bit-mapped bool's source.
@@ -82,6 +89,37 @@ impl VarDescriptor {
     pub fn writable_from_outside(&self) -> bool {
         plc_rules::access::writable_from_outside(self.access, self.direction)
     }
+
+    /// The type as tools show it: the structure's name, else the IEC type's.
+    pub fn type_name(&self) -> &str {
+        self.type_name
+            .as_deref()
+            .unwrap_or_else(|| self.iec_type.name())
+    }
+}
+
+impl plc_rules::path::Node for VarDescriptor {
+    fn name(&self) -> &str {
+        &self.name
+    }
+    fn dims(&self) -> &[usize] {
+        &self.dims
+    }
+    fn offset(&self) -> usize {
+        self.offset
+    }
+    fn size(&self) -> usize {
+        self.size
+    }
+    fn members(&self) -> &[VarDescriptor] {
+        &self.members
+    }
+    fn access(&self) -> Access {
+        self.access
+    }
+    fn direction(&self) -> Direction {
+        self.direction
+    }
 }
 
 impl From<&VarInfo> for VarDescriptor {
@@ -106,6 +144,8 @@ impl From<&VarInfo> for VarDescriptor {
             direction: v.direction,
             ux: v.ux,
             quantity: v.quantity.map(str::to_string),
+            type_name: v.is_structured().then(|| v.type_name().to_string()),
+            members: v.members().iter().map(VarDescriptor::from).collect(),
         }
     }
 }
@@ -136,34 +176,67 @@ impl LayoutDescriptor {
 
     /// The layout hash recomputed from the variables (plc_rules::layout's recipe).
     pub fn computed_hash(&self) -> u64 {
-        let mut h = LayoutHasher::new();
-        for v in &self.variables {
-            let bit = v.bit.map(|b| (b.source, b.bit));
-            h = h.var(&v.name, v.iec_type.name(), v.offset, v.size, &v.dims, bit);
+        fn hash(mut h: LayoutHasher, vars: &[VarDescriptor]) -> LayoutHasher {
+            for v in vars {
+                let bit = v.bit.map(|b| (b.source, b.bit));
+                h = h.var(&v.name, v.iec_type.name(), v.offset, v.size, &v.dims, bit);
+                if let Some(name) = &v.type_name {
+                    h = hash(
+                        h.bytes(b"struct\0").bytes(name.as_bytes()).bytes(&[0]),
+                        &v.members,
+                    )
+                    .bytes(b"end\0");
+                }
+            }
+            h
         }
-        h.finish()
+        hash(LayoutHasher::new(), &self.variables).finish()
     }
 
     /// Checks that every variable lies inside an image of `image_size` bytes, its size is a
     /// whole number of elements, and its bit mapping names a variable: a descriptor read from
     /// another process is not trusted to be what a compiler produced.
     pub fn check_variables(&self) -> Result<(), String> {
-        let n_vars = self.variables.len();
-        for v in &self.variables {
+        let mut budget = MAX_NODES;
+        check_level(&self.variables, self.image_size, 0, &mut budget)
+    }
+}
+
+/// Most variables and members, all levels together, a descriptor may hold: far above any real
+/// program, and a bound on the work a hostile one can cause.
+const MAX_NODES: usize = 1 << 20;
+
+/// Checks one level: each variable inside `space` bytes (the image, or one element of the
+/// structure it belongs to), whole elements, bit mappings within the level, members within
+/// their element, at most 8 levels.
+fn check_level(
+    vars: &[VarDescriptor],
+    space: usize,
+    depth: usize,
+    budget: &mut usize,
+) -> Result<(), String> {
+    if depth > plc_rules::capacity::MAX_STRUCT_DEPTH {
+        return Err(format!(
+            "structures nest more than {} levels deep",
+            plc_rules::capacity::MAX_STRUCT_DEPTH
+        ));
+    }
+    *budget = budget
+        .checked_sub(vars.len())
+        .ok_or_else(|| format!("more than {MAX_NODES} variables and members"))?;
+    let n_vars = vars.len();
+    {
+        for v in vars {
             let at = || {
                 format!(
                     "variable `{}` (offset {}, {} bytes)",
                     v.name, v.offset, v.size
                 )
             };
-            if v.offset
-                .checked_add(v.size)
-                .is_none_or(|end| end > self.image_size)
-            {
+            if v.offset.checked_add(v.size).is_none_or(|end| end > space) {
                 return Err(format!(
-                    "{} lies outside the image of {} bytes",
-                    at(),
-                    self.image_size
+                    "{} lies outside the {space} bytes that hold it",
+                    at()
                 ));
             }
             let whole = match v.dims.iter().try_fold(1usize, |n, &d| n.checked_mul(d)) {
@@ -188,10 +261,22 @@ impl LayoutDescriptor {
                     b.source
                 ));
             }
+            if v.type_name.is_some() != !v.members.is_empty() {
+                return Err(format!(
+                    "{} has a type name without members or the reverse",
+                    at()
+                ));
+            }
+            if !v.members.is_empty() {
+                check_level(&v.members, v.element_size(), depth + 1, budget)
+                    .map_err(|e| format!("in `{}`: {e}", v.name))?;
+            }
         }
-        Ok(())
     }
+    Ok(())
+}
 
+impl LayoutDescriptor {
     /// Index of a variable by name, case-insensitively (the variable-editor rules).
     pub fn index_of(&self, name: &str) -> Option<usize> {
         self.variables

@@ -110,6 +110,18 @@ impl DynSegment {
         self.view.write_element(name, element, value)
     }
 
+    /// Posts a write to a value found by its path, checked as
+    /// [`check_location`](Self::check_location) checks it; its ticket, as
+    /// [`post_element`](Self::post_element) gives.
+    pub fn post_location(
+        &self,
+        at: &super::PathLocation,
+        value: Value,
+    ) -> Result<Ticket, ShmError> {
+        let value = self.check_location(at, value)?;
+        self.view.post(at.index, at.leaf, value)
+    }
+
     /// What became of a posted write: pending, applied, rejected by the owner, discarded, or
     /// unknown (taken long ago; its slot has been reused since).
     pub fn outcome(&self, ticket: Ticket) -> Outcome {

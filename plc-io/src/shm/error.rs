@@ -81,6 +81,15 @@ pub enum ShmError {
         /// The name asked for.
         variable: String,
     },
+    /// A path that names no basic value of the segment.
+    BadPath {
+        /// Segment.
+        segment: String,
+        /// The path given.
+        path: String,
+        /// Why it names nothing.
+        reason: String,
+    },
     /// The variable may not be written from outside.
     NotWritable {
         /// Variable.
@@ -229,6 +238,14 @@ impl fmt::Display for ShmError {
             ShmError::UnknownVariable { segment, variable } => write!(
                 f,
                 "segment `{segment}` has no variable `{variable}` (`plc list {segment}` shows them)"
+            ),
+            ShmError::BadPath {
+                segment,
+                path,
+                reason,
+            } => write!(
+                f,
+                "segment `{segment}`: `{path}`: {reason} (`plc list {segment}` shows the variables)"
             ),
             ShmError::NotWritable { variable, reason } => {
                 write!(f, "`{variable}` cannot be written: {reason}")

@@ -36,6 +36,7 @@ mod guard;
 mod layout;
 pub mod mailbox;
 mod owner;
+mod paths;
 mod segment;
 mod status;
 mod view;
@@ -44,6 +45,7 @@ pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use dynamic::DynSegment;
 pub use error::ShmError;
 pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
+pub use paths::PathLocation;
 pub use segment::normalise as normalise_name;
 pub use status::{OwnerState, RunState, Status};
 

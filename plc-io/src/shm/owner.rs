@@ -275,7 +275,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let base = self.view.base;
         let (mut ok, mut bad) = (0u64, 0u64);
         let n = consumer.drain(&base, &self.view.off, |r| {
-            let result = writable::<T>(r.index)
+            let result = writable::<T>(r.index, r.element)
                 .and_then(|()| gm.set(r.index, r.element, r.value).map_err(Rejection::Set));
             match result {
                 Ok(()) => ok += 1,
@@ -396,19 +396,37 @@ impl<T: GlobalMemory> ShmReader<T> {
     }
 }
 
-/// Whether variable `index` of `T` may be written from outside (its declaration, not the
-/// descriptor in the segment, which any process could have changed).
-fn writable<T: GlobalMemory>(index: usize) -> Result<(), Rejection> {
+/// Whether element (leaf) `element` of variable `index` of `T` may be written from outside:
+/// its declaration decides, not the descriptor in the segment, which any process could have
+/// changed. Inside a structure, the member and every structure on the way must be writable.
+fn writable<T: GlobalMemory>(index: usize, element: usize) -> Result<(), Rejection> {
     let Some(var) = T::VARIABLES.get(index) else {
         return Err(Rejection::Set(plc_core::SetError::UnknownIndex { index }));
     };
-    if var.writable_from_outside() {
+    let Some(found) = plc_rules::path::leaf(T::VARIABLES, index, element) else {
+        return Err(Rejection::Set(plc_core::SetError::ElementOutOfRange {
+            name: var.name,
+            element,
+            len: var.leaves(),
+        }));
+    };
+    if found.writable {
         return Ok(());
     }
-    let reason = not_writable_reason(var.access == plc_core::Access::ReadOnly, var.direction);
+    let leaf = found.node;
+    // The first thing on the way that is not writable says why.
+    let (read_only, direction, name) = if !var.writable_from_outside() {
+        (
+            var.access == plc_core::Access::ReadOnly,
+            var.direction,
+            var.name,
+        )
+    } else {
+        (true, leaf.direction, leaf.name)
+    };
     Err(Rejection::NotWritable {
-        variable: var.name,
-        reason,
+        variable: name,
+        reason: not_writable_reason(read_only, direction),
     })
 }
 

@@ -251,6 +251,56 @@ pub fn locate<'n, 'p, N: Node>(
     Ok(f)
 }
 
+/// The basic value numbered `leaf` in variable `index` (the reverse of [`locate`]), or `None`
+/// past the variable's leaves. Each level divides the number once, so the work is bounded by
+/// the nesting depth.
+pub fn leaf<N: Node>(vars: &[N], index: usize, leaf: usize) -> Option<Found<'_, N>> {
+    let top = vars.get(index)?;
+    if leaf >= leaves(top) {
+        return None;
+    }
+    let mut found = Found {
+        index,
+        leaf,
+        node: top,
+        element: 0,
+        offset: top.offset(),
+        writable: crate::access::writable_from_outside(top.access(), top.direction()),
+    };
+    let mut rest = leaf;
+    loop {
+        let node = found.node;
+        let per = element_leaves(node).max(1);
+        let element = rest / per;
+        rest %= per;
+        let elements = crate::access::elements(node.dims()).max(1);
+        found.offset = found
+            .offset
+            .saturating_add(element.saturating_mul(node.size() / elements));
+        if node.members().is_empty() {
+            found.element = element;
+            return Some(found);
+        }
+        let mut before = 0usize;
+        let member = node.members().iter().find(|m| {
+            let n = leaves(*m);
+            if rest < before.saturating_add(n) {
+                true
+            } else {
+                before = before.saturating_add(n);
+                false
+            }
+        })?;
+        rest -= before;
+        found = Found {
+            node: member,
+            offset: found.offset.saturating_add(member.offset()),
+            writable: found.writable && member_writable(member.access()),
+            ..found
+        };
+    }
+}
+
 impl<N> Found<'_, N> {
     /// An array was named without its index (kept as `usize::MAX` until the end, so the error
     /// can say which array).

@@ -20,7 +20,7 @@
 use core::fmt;
 
 mod locate;
-pub use locate::{Found, LocateError, Node, element_leaves, leaves, locate, member_writable};
+pub use locate::{Found, LocateError, Node, element_leaves, leaf, leaves, locate, member_writable};
 
 /// At most this many coordinates in one index (arrays have at most 3 dimensions).
 pub const MAX_COORDS: usize = 3;

@@ -1,0 +1,77 @@
+//! Paths into a running program's variables (`axes[1].pos`, `grid[1,2]`, `press.delay.ET`),
+//! resolved against the segment's descriptor the way the program's own
+//! `GlobalMemory::find` resolves them, so a tool without the Rust types reaches every member.
+
+use super::codec;
+use super::descriptor::VarDescriptor;
+use super::dynamic::DynSegment;
+use super::error::ShmError;
+use plc_core::Value;
+
+/// One basic value of a segment, found by its path.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathLocation {
+    /// The path, as given.
+    pub path: String,
+    /// Index of the top-level variable.
+    pub index: usize,
+    /// The value's leaf number within it (what the owner's `set` takes as the element).
+    pub leaf: usize,
+    /// The basic variable or member that holds it, as one scalar at the value's place in the
+    /// image (its offset absolute, no dimensions).
+    pub var: VarDescriptor,
+    /// Whether tools may write it.
+    pub writable: bool,
+}
+
+impl DynSegment {
+    /// The basic value `path` names, or why it names none.
+    pub fn locate(&self, path: &str) -> Result<PathLocation, ShmError> {
+        let found = plc_rules::path::locate(&self.descriptor().variables, path).map_err(|e| {
+            ShmError::BadPath {
+                segment: self.name().to_string(),
+                path: path.to_string(),
+                reason: e.to_string(),
+            }
+        })?;
+        let node = found.node;
+        let mut var = VarDescriptor {
+            offset: found.offset,
+            size: node.element_size(),
+            dims: Vec::new(),
+            members: Vec::new(),
+            ..node.clone()
+        };
+        var.name = path.trim().to_string();
+        Ok(PathLocation {
+            path: var.name.clone(),
+            index: found.index,
+            leaf: found.leaf,
+            var,
+            writable: found.writable,
+        })
+    }
+
+    /// The value at a location in an image from [`snapshot_bytes`](Self::snapshot_bytes).
+    pub fn value_at_location(&self, image: &[u8], at: &PathLocation) -> Option<Value> {
+        codec::decode(image, &at.var, 0)
+    }
+
+    /// Checks a write to a location as the owner would (writable, kind, range, capacity),
+    /// without sending it; the value as it would be sent.
+    pub fn check_location(&self, at: &PathLocation, value: Value) -> Result<Value, ShmError> {
+        if !at.writable {
+            return Err(ShmError::not_writable(
+                &at.path,
+                at.var.access == plc_core::Access::ReadOnly,
+                at.var.direction,
+            ));
+        }
+        value
+            .fit(at.var.iec_type, at.var.string_capacity())
+            .map_err(|error| ShmError::Value {
+                variable: at.path.clone(),
+                error,
+            })
+    }
+}
