@@ -234,10 +234,12 @@ fn check_level(
                 )
             };
             if v.offset.checked_add(v.size).is_none_or(|end| end > space) {
-                return Err(format!(
-                    "{} lies outside the {space} bytes that hold it",
-                    at()
-                ));
+                let whole = if depth == 0 {
+                    "the image"
+                } else {
+                    "one element of its structure"
+                };
+                return Err(format!("{} lies outside {whole} of {space} bytes", at()));
             }
             let whole = match v.dims.iter().try_fold(1usize, |n, &d| n.checked_mul(d)) {
                 Some(0) => v.size == 0,
