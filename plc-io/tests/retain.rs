@@ -322,3 +322,98 @@ fn a_failed_save_keeps_the_values_and_saves_them_when_it_can_again() {
     RetainStore::new(&path).load(&mut gm).unwrap();
     assert_eq!(gm.cycles, v1().cycles);
 }
+
+mod structures {
+    use super::temp_dir;
+    use plc_core::{GlobalMemory, PlcStruct};
+    use plc_io::retain::RetainStore;
+
+    #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
+    pub struct AxisV1 {
+        pub pos: f64,
+        #[plc(nonvolatile)]
+        pub cycles: u16,
+        #[plc(nonvolatile)]
+        pub offset: f32,
+        #[plc(nonvolatile)]
+        pub gone: u8,
+    }
+
+    #[derive(GlobalMemory, Debug, Clone, PartialEq)]
+    pub struct V1 {
+        pub lift: AxisV1,
+        pub axes: [AxisV1; 3],
+    }
+
+    /// The next version: a member added before the others, `cycles` widened, `offset`
+    /// retyped to a type it does not widen to, `gone` removed; the array grown to 4.
+    #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
+    pub struct AxisV2 {
+        #[plc(nonvolatile, initial = 9)]
+        pub added: i32,
+        pub pos: f64,
+        #[plc(nonvolatile)]
+        pub cycles: u32,
+        #[plc(nonvolatile)]
+        pub offset: i8,
+    }
+
+    #[derive(GlobalMemory, Debug, Clone, PartialEq)]
+    pub struct V2 {
+        pub lift: AxisV2,
+        pub axes: [AxisV2; 4],
+    }
+
+    #[test]
+    fn nonvolatile_members_are_kept_by_path_across_edits() {
+        let dir = temp_dir("members");
+        let store = RetainStore::new(dir.join("m.retain"));
+        let mut v1 = V1::default();
+        v1.lift.cycles = 11;
+        v1.lift.pos = 5.0;
+        for (i, a) in v1.axes.iter_mut().enumerate() {
+            a.cycles = 100 + i as u16;
+            a.offset = 0.5;
+        }
+        store.save(&v1).unwrap();
+        let text = std::fs::read_to_string(store.path()).unwrap();
+        assert!(text.contains("\"axes[2].cycles\""), "{text}");
+        assert!(
+            !text.contains("\"lift.pos\""),
+            "only nonvolatile members: {text}"
+        );
+
+        // The same declaration restores every member.
+        let mut same = V1::default();
+        let report = store.load(&mut same).unwrap();
+        assert_eq!(same.axes, v1.axes);
+        assert_eq!(same.lift.cycles, 11);
+        assert_eq!(same.lift.pos, 0.0, "not nonvolatile");
+        assert!(report.restored.contains(&"lift.gone".to_string()));
+
+        let mut v2 = V2::default();
+        let report = store.load(&mut v2).unwrap();
+        assert_eq!(v2.lift.cycles, 11);
+        assert_eq!(
+            v2.axes.map(|a| a.cycles),
+            [100, 101, 102, 0],
+            "the overlapping elements are kept, the new one starts at its initial value"
+        );
+        assert_eq!(v2.axes[3].added, 9);
+        assert!(report.new.contains(&"axes[3].cycles".to_string()));
+        assert!(report.new.contains(&"lift.added".to_string()));
+        assert!(report.removed.contains(&"axes[1].gone".to_string()));
+        assert!(
+            report
+                .converted
+                .iter()
+                .any(|(n, _, _)| n == "axes[0].cycles"),
+            "{report:?}"
+        );
+        assert!(
+            report.reset.iter().any(|(n, _)| n == "lift.offset"),
+            "REAL does not widen to SINT: {report:?}"
+        );
+        assert_eq!(v2.lift.offset, 0);
+    }
+}

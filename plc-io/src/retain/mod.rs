@@ -7,6 +7,9 @@
 //! the new content, never a mix. Saving happens on a background thread from a copy, never in
 //! the cycle.
 //!
+//! Nonvolatile members of structures are kept one by one, by path (`axes[1].cycles`), so a
+//! structure edited around them or an array of structures resized keeps what still exists.
+//!
 //! Loading matches variables by name (case-insensitive): new variables keep their `initial`,
 //! removed or renamed ones are reported, a changed type is converted only where IEC 61131-3's
 //! widening allows it (`can_widen`), otherwise reported and the initial value kept. A corrupt
@@ -46,12 +49,14 @@ use std::os::unix::fs::{DirBuilderExt, MetadataExt, OpenOptionsExt, PermissionsE
 use std::path::{Path, PathBuf};
 
 mod files;
+mod items;
 mod values;
 mod writer;
 
 pub use writer::RetainWriter;
 
 use files::{FaultPoint, create_private, euid, fault_point, process_alive};
+use items::items;
 use values::{from_json, to_json, widen};
 
 const HEADER: &str = "plc-vars retain v1 crc32=";
@@ -117,6 +122,13 @@ struct Stored {
     #[serde(rename = "type")]
     iec_type: IecType,
     values: Vec<serde_json::Value>,
+}
+
+/// A retained item as loading compares it with the file.
+struct Retained<'a> {
+    name: &'a str,
+    iec_type: IecType,
+    elements: usize,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -188,17 +200,15 @@ impl RetainStore {
 
     fn body_of<T: GlobalMemory>(gm: &T) -> Body {
         Body {
-            variables: T::VARIABLES
-                .iter()
-                .enumerate()
-                .filter(|(_, v)| v.nonvolatile)
-                .map(|(i, v)| Stored {
-                    name: v.name.to_string(),
-                    iec_type: v.iec_type,
-                    values: (0..v.elements())
-                        .filter_map(|e| gm.try_get(i, e))
+            variables: items(T::VARIABLES)
+                .into_iter()
+                .map(|item| Stored {
+                    values: (0..item.elements)
+                        .filter_map(|e| gm.try_get(item.index, item.first_leaf + e))
                         .map(|x| to_json(&x))
                         .collect(),
+                    name: item.path,
+                    iec_type: item.iec_type,
                 })
                 .collect(),
         }
@@ -419,18 +429,22 @@ impl RetainStore {
             stale_temps: self.remove_stale_temps(),
             ..RetainReport::default()
         };
+        let retained = items(T::VARIABLES);
         for stored in &body.variables {
-            if !T::VARIABLES
+            if !retained
                 .iter()
-                .any(|v| v.nonvolatile && v.name.eq_ignore_ascii_case(&stored.name))
+                .any(|v| v.path.eq_ignore_ascii_case(&stored.name))
             {
                 report.removed.push(stored.name.clone());
             }
         }
-        for (i, v) in T::VARIABLES.iter().enumerate() {
-            if !v.nonvolatile {
-                continue;
-            }
+        for item in &retained {
+            let (i, first) = (item.index, item.first_leaf);
+            let v = Retained {
+                name: &item.path,
+                iec_type: item.iec_type,
+                elements: item.elements,
+            };
             let Some(stored) = body
                 .variables
                 .iter()
@@ -439,13 +453,13 @@ impl RetainStore {
                 report.new.push(v.name.to_string());
                 continue;
             };
-            if stored.values.len() != v.elements() {
+            if stored.values.len() != v.elements {
                 report.reset.push((
                     v.name.to_string(),
                     format!(
                         "it had {} elements, now {}",
                         stored.values.len(),
-                        v.elements()
+                        v.elements
                     ),
                 ));
                 continue;
@@ -476,18 +490,18 @@ impl RetainStore {
                 continue;
             };
             // Check every element first: a variable is restored whole or not at all.
-            let mut trial = (0..v.elements()).filter_map(|e| gm.try_get(i, e));
+            let mut trial = (0..v.elements).filter_map(|e| gm.try_get(i, first + e));
             let before: Vec<Value> = trial.by_ref().collect();
             let mut failed = None;
             for (e, x) in values.iter().enumerate() {
-                if let Err(err) = gm.set(i, e, *x) {
+                if let Err(err) = gm.set(i, first + e, *x) {
                     failed = Some(err.to_string());
                     break;
                 }
             }
             if let Some(why) = failed {
                 for (e, x) in before.iter().enumerate() {
-                    let _ = gm.set(i, e, *x);
+                    let _ = gm.set(i, first + e, *x);
                 }
                 report.reset.push((v.name.to_string(), why));
             } else if stored.iec_type != v.iec_type {
