@@ -9,7 +9,7 @@ pub mod log;
 pub mod set;
 pub mod watch;
 
-use plc_io::shm::{DynSegment, VarDescriptor};
+use plc_io::shm::{DynSegment, PathLocation, PathTarget, VarDescriptor};
 
 /// The error type of the commands: a message for the user.
 pub type Error = Box<dyn std::error::Error>;
@@ -39,87 +39,23 @@ pub fn is_path(seg: &DynSegment, spec: &str) -> bool {
             .is_some_and(|i| !seg.descriptor().variables[i].members.is_empty())
 }
 
-/// Every basic value inside a structured variable or one of its elements, as `(path,
-/// location)`: what `plc get lift` prints.
-pub fn leaves_of(seg: &DynSegment, spec: &str) -> Result<Vec<plc_io::shm::PathLocation>, Error> {
-    let mut paths = Vec::new();
-    let spec = spec.trim();
-    match seg.locate(spec) {
-        Ok(at) => return Ok(vec![at]),
-        Err(e) => {
-            // Only a structure or a whole array is expanded; any other error is the answer.
-            let text = e.to_string();
-            if !text.contains("is a structure") && !text.contains("is an array") {
-                return Err(e.into());
-            }
-        }
-    }
-    expand_prefix(seg, spec, &mut paths)?;
-    paths.iter().map(|p| Ok(seg.locate(p)?)).collect()
-}
-
-/// The paths of every basic value under `prefix`, element by element, member by member.
-fn expand_prefix(seg: &DynSegment, prefix: &str, out: &mut Vec<String>) -> Result<(), Error> {
+/// Every basic value `spec` reaches: itself, or everything inside a structure or array of
+/// structures, member by member and element by element (what `plc get lift` prints).
+pub fn leaves_of(seg: &DynSegment, spec: &str) -> Result<Vec<PathLocation>, Error> {
     // Bounded: a tool prints at most this many values for one name.
     const MAX: usize = 100_000;
-    let mut todo = vec![prefix.to_string()];
+    let mut out = Vec::new();
+    let mut todo = vec![spec.trim().to_string()];
     while let Some(p) = todo.pop() {
-        match seg.locate(&p) {
-            Ok(_) => out.push(p),
-            Err(e) => {
-                let text = e.to_string();
-                let node = node_at(seg, &p).ok_or(e)?;
-                let mut next: Vec<String> = if text.contains("is an array") {
-                    coordinates(&node.dims)
-                        .into_iter()
-                        .map(|c| format!("{p}[{c}]"))
-                        .collect()
-                } else {
-                    node.members
-                        .iter()
-                        .map(|m| format!("{p}.{}", m.name))
-                        .collect()
-                };
-                next.reverse();
-                todo.extend(next);
-            }
+        match seg.resolve_path(&p)? {
+            PathTarget::Value(at) => out.push(at),
+            PathTarget::Group(children) => todo.extend(children.into_iter().rev()),
         }
         if out.len() + todo.len() > MAX {
-            return Err(format!("`{prefix}` holds more than {MAX} values: name fewer").into());
+            return Err(format!("`{spec}` holds more than {MAX} values: name fewer").into());
         }
     }
-    Ok(())
-}
-
-/// The variable or member a path prefix ends at (before any index on its last name).
-fn node_at<'a>(seg: &'a DynSegment, path: &str) -> Option<&'a VarDescriptor> {
-    let mut level = &seg.descriptor().variables;
-    let mut node = None;
-    for segment in plc_rules::path::segments(path) {
-        let s = segment.ok()?;
-        let n = level.iter().find(|v| v.name.eq_ignore_ascii_case(s.name))?;
-        level = &n.members;
-        node = Some(n);
-    }
-    node
-}
-
-/// Every coordinate of an array, row-major, as `1,2`.
-fn coordinates(dims: &[usize]) -> Vec<String> {
-    let total = plc_rules::access::elements(dims);
-    (0..total)
-        .map(|mut flat| {
-            let mut c = vec![0; dims.len()];
-            for (slot, d) in c.iter_mut().zip(dims).rev() {
-                *slot = flat % d;
-                flat /= d;
-            }
-            c.iter()
-                .map(|x| x.to_string())
-                .collect::<Vec<_>>()
-                .join(",")
-        })
-        .collect()
+    Ok(out)
 }
 
 /// `name` or `name[element]`, resolved against the segment's descriptor.

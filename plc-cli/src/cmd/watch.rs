@@ -1,10 +1,12 @@
 //! `plc watch <segment>`: a live watch window (ratatui). Keys: `/` filter, arrows and
 //! PgUp/PgDn select, Enter write a value to the selected variable (checked as `plc set`
 //! checks), `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
-//! changed in the last second are highlighted.
+//! changed in the last second are highlighted. Structures and arrays of structures are a tree:
+//! Right (or Enter) opens the selected one, Left closes it.
 
 use super::{Error, period_of, set, show, type_text};
-use plc_io::shm::DynSegment;
+use plc_io::shm::{DynSegment, PathLocation, PathTarget};
+use std::collections::{HashMap, HashSet};
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
 use ratatui::layout::{Constraint, Layout};
 use ratatui::style::{Modifier, Style, Stylize};
@@ -18,15 +20,45 @@ enum Mode {
     Edit(String),
 }
 
+/// One line of the window.
+enum Entry {
+    /// A top-level basic variable (an array shown whole).
+    Var(usize),
+    /// A structure, an array of structures or one of its elements, at `depth` in the tree.
+    Group {
+        path: String,
+        depth: usize,
+        open: bool,
+        type_text: String,
+    },
+    /// A basic value inside a structure.
+    Leaf { at: PathLocation, depth: usize },
+}
+
+impl Entry {
+    /// The key its value is kept under: the variable's name or the path.
+    fn key<'a>(&'a self, w: &'a Watch) -> &'a str {
+        match self {
+            Entry::Var(i) => &w.seg.descriptor().variables[*i].name,
+            Entry::Group { path, .. } => path,
+            Entry::Leaf { at, .. } => &at.path,
+        }
+    }
+}
+
 struct Watch {
     seg: DynSegment,
     /// Variable indices in display order: each word followed by its bit-mapped bools.
     order: Vec<usize>,
+    /// The lines as the tree is open now.
+    entries: Vec<Entry>,
+    /// The groups open, by lower-case path.
+    open: HashSet<String>,
     filter: String,
     mode: Mode,
     table: TableState,
-    values: Vec<String>,
-    changed: Vec<Option<Instant>>,
+    values: HashMap<String, String>,
+    changed: HashMap<String, Instant>,
     message: String,
 }
 
@@ -45,45 +77,124 @@ impl Watch {
                 );
             }
         }
-        let n = vars.len();
-        Watch {
+        let mut w = Watch {
             seg,
             order,
+            entries: Vec::new(),
+            open: HashSet::new(),
             filter: filter.unwrap_or_default(),
             mode: Mode::Browse,
             table: TableState::default().with_selected(Some(0)),
-            values: vec![String::new(); n],
-            changed: vec![None; n],
+            values: HashMap::new(),
+            changed: HashMap::new(),
             message: String::new(),
+        };
+        w.rebuild();
+        w
+    }
+
+    /// The lines, from the variables and the groups open.
+    fn rebuild(&mut self) {
+        let mut entries = Vec::new();
+        for &i in &self.order {
+            let v = &self.seg.descriptor().variables[i];
+            if v.members.is_empty() {
+                entries.push(Entry::Var(i));
+            } else {
+                self.group(v.name.clone(), 0, &mut entries);
+            }
+        }
+        self.entries = entries;
+    }
+
+    /// A group's line, and its children's if it is open.
+    fn group(&self, path: String, depth: usize, out: &mut Vec<Entry>) {
+        let Ok(PathTarget::Group(children)) = self.seg.resolve_path(&path) else {
+            return;
+        };
+        let open = self.open.contains(&path.to_ascii_lowercase());
+        let type_text = group_type(&self.seg, &path);
+        out.push(Entry::Group {
+            path,
+            depth,
+            open,
+            type_text,
+        });
+        if !open {
+            return;
+        }
+        for child in children {
+            match self.seg.resolve_path(&child) {
+                Ok(PathTarget::Value(at)) => out.push(Entry::Leaf {
+                    at,
+                    depth: depth + 1,
+                }),
+                Ok(PathTarget::Group(_)) => self.group(child, depth + 1, out),
+                Err(_) => {}
+            }
         }
     }
 
+    /// Indexes into `entries` of the lines the filter lets through.
     fn visible(&self) -> Vec<usize> {
         let f = self.filter.to_ascii_lowercase();
-        self.order
-            .iter()
-            .copied()
-            .filter(|&i| {
-                self.seg.descriptor().variables[i]
-                    .name
-                    .to_ascii_lowercase()
-                    .contains(&f)
-            })
+        (0..self.entries.len())
+            .filter(|&e| self.entries[e].key(self).to_ascii_lowercase().contains(&f))
             .collect()
     }
 
     fn refresh(&mut self) -> Result<(), Error> {
         let image = self.seg.snapshot_bytes()?;
-        for i in 0..self.values.len() {
-            let v = show(&self.seg, &image, i, None);
-            if v != self.values[i] {
-                if !self.values[i].is_empty() {
-                    self.changed[i] = Some(Instant::now());
+        let now = Instant::now();
+        let mut fresh = Vec::with_capacity(self.entries.len());
+        for e in &self.entries {
+            let value = match e {
+                Entry::Var(i) => show(&self.seg, &image, *i, None),
+                Entry::Group { .. } => String::new(),
+                Entry::Leaf { at, .. } => self
+                    .seg
+                    .value_at_location(&image, at)
+                    .map_or("?".into(), |v| v.to_string()),
+            };
+            fresh.push((e.key(self).to_string(), value));
+        }
+        for (key, value) in fresh {
+            match self.values.get(&key) {
+                Some(old) if *old == value => {}
+                Some(_) => {
+                    self.changed.insert(key.clone(), now);
+                    self.values.insert(key, value);
                 }
-                self.values[i] = v;
+                None => {
+                    self.values.insert(key, value);
+                }
             }
         }
         Ok(())
+    }
+
+    /// Opens or closes the selected group; `open` `None` toggles it.
+    fn set_open(&mut self, open: Option<bool>) -> bool {
+        let Some(Entry::Group { path, open: now, .. }) = self.selected_entry() else {
+            return false;
+        };
+        let (key, now) = (path.to_ascii_lowercase(), *now);
+        if open.unwrap_or(!now) {
+            self.open.insert(key);
+        } else {
+            self.open.remove(&key);
+        }
+        self.rebuild();
+        let _ = self.refresh();
+        true
+    }
+
+    fn selected_entry(&self) -> Option<&Entry> {
+        let visible = self.visible();
+        self.table
+            .selected()
+            .and_then(|s| visible.get(s))
+            .map(|&e| &self.entries[e])
     }
 
     fn draw(&mut self, f: &mut ratatui::Frame) {
@@ -115,21 +226,53 @@ impl Watch {
         );
         let vars = &self.seg.descriptor().variables;
         let visible = self.visible();
-        let rows = visible.iter().map(|&i| {
-            let v = &vars[i];
-            let name = if v.bit.is_some() {
-                format!("  └ {}", v.name)
-            } else {
-                v.name.clone()
+        let rows = visible.iter().map(|&e| {
+            let entry = &self.entries[e];
+            let (name, ty, direction) = match entry {
+                Entry::Var(i) => {
+                    let v = &vars[*i];
+                    let name = if v.bit.is_some() {
+                        format!("  └ {}", v.name)
+                    } else {
+                        v.name.clone()
+                    };
+                    (name, type_text(v), v.direction.name())
+                }
+                Entry::Group {
+                    path,
+                    depth,
+                    open,
+                    type_text,
+                } => (
+                    format!(
+                        "{}{} {}",
+                        "  ".repeat(*depth),
+                        if *open { "▾" } else { "▸" },
+                        tail(path)
+                    ),
+                    type_text.clone(),
+                    "",
+                ),
+                Entry::Leaf { at, depth } => (
+                    format!("{}{}", "  ".repeat(*depth), tail(&at.path)),
+                    type_text(&at.var),
+                    at.var.direction.name(),
+                ),
             };
-            let mut value = ratatui::text::Span::raw(self.values[i].clone());
-            if self.changed[i].is_some_and(|t| t.elapsed() < Duration::from_secs(1)) {
+            let key = entry.key(self);
+            let mut value =
+                ratatui::text::Span::raw(self.values.get(key).cloned().unwrap_or_default());
+            if self
+                .changed
+                .get(key)
+                .is_some_and(|t| t.elapsed() < Duration::from_secs(1))
+            {
                 value = value.black().on_yellow();
             }
             Row::new(vec![
                 ratatui::widgets::Cell::from(name),
-                type_text(v).into(),
-                v.direction.name().into(),
+                ty.into(),
+                direction.into(),
                 ratatui::widgets::Cell::from(value),
             ])
         });
@@ -145,9 +288,9 @@ impl Watch {
         .header(Row::new(["NAME", "TYPE", "DIRECTION", "VALUE"]).add_modifier(Modifier::BOLD))
         .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED))
         .block(Block::bordered().title(format!(
-            " {} of {} variables{} ",
+            " {} of {} lines{} ",
             visible.len(),
-            vars.len(),
+            self.entries.len(),
             if self.filter.is_empty() {
                 String::new()
             } else {
@@ -158,19 +301,18 @@ impl Watch {
         let foot_text = match &self.mode {
             Mode::Filter => format!("filter: {}_   (Enter done, Esc clear)", self.filter),
             Mode::Edit(input) => {
-                let name = self.selected().map_or("", |i| vars[i].name.as_str());
+                let name = self.selected_entry().map_or("", |e| e.key(self));
                 format!("{name} = {input}_   (Enter write, Esc cancel)")
             }
             Mode::Browse if !self.message.is_empty() => self.message.clone(),
-            Mode::Browse => "q quit | / filter | up/down select | Enter write value".into(),
+            Mode::Browse => {
+                "q quit | / filter | up/down select | right/left open/close | Enter write value"
+                    .into()
+            }
         };
         f.render_widget(Line::from(foot_text), foot);
     }
 
-    fn selected(&self) -> Option<usize> {
-        let visible = self.visible();
-        self.table.selected().and_then(|s| visible.get(s).copied())
-    }
 
     /// Handles a key; `false` quits.
     fn key(&mut self, code: KeyCode) -> bool {
@@ -199,8 +341,14 @@ impl Watch {
                 KeyCode::Enter => {
                     let input = input.clone();
                     self.mode = Mode::Browse;
-                    if let Some(i) = self.selected() {
-                        let name = self.seg.descriptor().variables[i].name.clone();
+                    let name = match self.selected_entry() {
+                        Some(Entry::Var(i)) => {
+                            Some(self.seg.descriptor().variables[*i].name.clone())
+                        }
+                        Some(Entry::Leaf { at, .. }) => Some(at.path.clone()),
+                        _ => None,
+                    };
+                    if let Some(name) = name {
                         let result =
                             set::check(&self.seg, &format!("{name}={input}")).and_then(|t| {
                                 t.post(&self.seg)?;
@@ -227,8 +375,16 @@ impl Watch {
                         self.table.select(Some((sel + 20).min(n.saturating_sub(1))))
                     }
                     KeyCode::PageUp => self.table.select(Some(sel.saturating_sub(20))),
-                    KeyCode::Enter if self.selected().is_some() => {
-                        self.mode = Mode::Edit(String::new())
+                    KeyCode::Right | KeyCode::Char('+') => {
+                        self.set_open(Some(true));
+                    }
+                    KeyCode::Left | KeyCode::Char('-') => {
+                        self.set_open(Some(false));
+                    }
+                    KeyCode::Enter => {
+                        if !self.set_open(None) && self.selected_entry().is_some() {
+                            self.mode = Mode::Edit(String::new())
+                        }
                     }
                     _ => {}
                 }
@@ -271,4 +427,35 @@ pub fn run(segment: &str, filter: Option<String>, rate: f64) -> Result<(), Error
         eprintln!("{message}");
     }
     outcome.map(|_| ())
+}
+
+/// The last step of a path, as a tree line shows it under its parent: `pos`, `[1]`.
+fn tail(path: &str) -> &str {
+    match path.rfind(['.', '[']) {
+        Some(i) if path.as_bytes()[i] == b'.' => &path[i + 1..],
+        Some(i) if path.ends_with(']') => &path[i..],
+        _ => path,
+    }
+}
+
+/// A group's type as the window shows it: `Axis[3]` for an array of structures, `Axis` for
+/// a structure or one element.
+fn group_type(seg: &DynSegment, path: &str) -> String {
+    let mut level = &seg.descriptor().variables;
+    let mut node = None;
+    for segment in plc_rules::path::segments(path).flatten() {
+        let Some(n) = level.iter().find(|v| v.name.eq_ignore_ascii_case(segment.name)) else {
+            return String::new();
+        };
+        node = Some((n, segment.index.is_some()));
+        level = &n.members;
+    }
+    match node {
+        Some((n, false)) if !n.dims.is_empty() => {
+            let dims: Vec<String> = n.dims.iter().map(|d| d.to_string()).collect();
+            format!("{}[{}]", n.type_name(), dims.join(","))
+        }
+        Some((n, _)) => n.type_name().to_string(),
+        None => String::new(),
+    }
 }

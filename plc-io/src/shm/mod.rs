@@ -45,7 +45,7 @@ pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use dynamic::DynSegment;
 pub use error::ShmError;
 pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
-pub use paths::PathLocation;
+pub use paths::{PathLocation, PathTarget};
 pub use segment::normalise as normalise_name;
 pub use status::{OwnerState, RunState, Status};
 

@@ -24,7 +24,61 @@ pub struct PathLocation {
     pub writable: bool,
 }
 
+/// What a path names: one basic value, or a group of them (a structure, or an array) with the
+/// paths one level further down.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PathTarget {
+    /// One basic value.
+    Value(PathLocation),
+    /// A structure (its members' paths) or an array (its elements' paths, by coordinates).
+    Group(Vec<String>),
+}
+
 impl DynSegment {
+    /// What `path` names: a basic value, or a structure or array whose members or elements a
+    /// tool shows one level at a time (`plc watch`'s tree, `plc get lift`).
+    pub fn resolve_path(&self, path: &str) -> Result<PathTarget, ShmError> {
+        let text = path.trim();
+        match plc_rules::path::locate(&self.descriptor().variables, text) {
+            Ok(_) => return self.locate(text).map(PathTarget::Value),
+            Err(plc_rules::path::LocateError::WholeArray { at }) if at == text => {
+                if let Some(node) = self.node_at(text) {
+                    let children = coordinates(&node.dims)
+                        .into_iter()
+                        .map(|c| format!("{text}[{c}]"))
+                        .collect();
+                    return Ok(PathTarget::Group(children));
+                }
+            }
+            Err(plc_rules::path::LocateError::WholeStructure { at }) if at == text => {
+                if let Some(node) = self.node_at(text) {
+                    let children = node
+                        .members
+                        .iter()
+                        .map(|m| format!("{text}.{}", m.name))
+                        .collect();
+                    return Ok(PathTarget::Group(children));
+                }
+            }
+            Err(_) => {}
+        }
+        // The error, in the words `locate` gives it.
+        self.locate(text).map(PathTarget::Value)
+    }
+
+    /// The variable or member the names of `path` lead to (its indexes aside).
+    fn node_at(&self, path: &str) -> Option<&VarDescriptor> {
+        let mut level = &self.descriptor().variables;
+        let mut node = None;
+        for segment in plc_rules::path::segments(path) {
+            let s = segment.ok()?;
+            let n = level.iter().find(|v| v.name.eq_ignore_ascii_case(s.name))?;
+            level = &n.members;
+            node = Some(n);
+        }
+        node
+    }
+
     /// The basic value `path` names, or why it names none.
     pub fn locate(&self, path: &str) -> Result<PathLocation, ShmError> {
         let found = plc_rules::path::locate(&self.descriptor().variables, path).map_err(|e| {
@@ -74,4 +128,20 @@ impl DynSegment {
                 error,
             })
     }
+}
+
+/// Every coordinate of an array, row-major, as `1,2`. Bounded by the array's elements, which
+/// the descriptor check keeps within the image.
+fn coordinates(dims: &[usize]) -> Vec<String> {
+    let total = plc_rules::access::elements(dims);
+    (0..total)
+        .map(|mut flat| {
+            let mut c = vec![0; dims.len()];
+            for (slot, d) in c.iter_mut().zip(dims).rev() {
+                *slot = flat % d;
+                flat /= d;
+            }
+            c.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",")
+        })
+        .collect()
 }
