@@ -10,7 +10,7 @@
 pub mod plant;
 
 use ethercat_sim::{Device, SimBus};
-use plc_core::{FixedString, GlobalMemory};
+use plc_core::{FixedString, GlobalMemory, PlcStruct};
 use plc_io::ethercat::Transport;
 use std::time::Duration;
 
@@ -42,6 +42,35 @@ pub fn simulated_bus() -> SimBus {
 /// The in-process transport to a simulated bus (no privileges needed).
 pub fn sim_transport(bus: SimBus) -> Transport {
     Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)))
+}
+
+/// One of the machine's drives, as the HMI shows it: [`Gm::axes`] holds the lift, the
+/// centering jaws and the test drive, in [`axis`]'s order.
+#[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
+pub struct Axis {
+    /// The program switches the drive on (IN)
+    #[plc(direction = "input")]
+    pub enable: bool,
+    /// The drive reached its end position (OUT)
+    #[plc(direction = "output")]
+    pub done: bool,
+    /// Where the drive is, in mm
+    pub pos_mm: f64,
+    /// Cycles the drive has been on in the current step
+    pub on_cycles: u32,
+    /// Moves completed since commissioning (kept across restarts)
+    #[plc(nonvolatile, read_only)]
+    pub moves: u32,
+}
+
+/// Indexes of [`Gm::axes`].
+pub mod axis {
+    /// The lift.
+    pub const LIFT: usize = 0;
+    /// The centering jaws.
+    pub const CENTERING: usize = 1;
+    /// The test drive pulling the specimen.
+    pub const TEST_DRIVE: usize = 2;
 }
 
 /// The tensile tester's variables. Every link is checked against the bus description while
@@ -138,6 +167,8 @@ pub struct Gm {
     /// Cycles spent in the current state
     #[plc(direction = "status")]
     pub state_cycles: u32,
+    /// The drives: lift, centering jaws, test drive (`axes[2].pos_mm` is the elongation)
+    pub axes: [Axis; 3],
 }
 
 /// The machine states, as `machine_state` holds them.
@@ -298,12 +329,39 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
         }
     }
     let state = State::from_u8(gm.machine_state);
+    update_axes(gm, state);
     gm.lamp_green = state == State::Idle;
     gm.lamp_yellow = matches!(
         state,
         State::Centering | State::Lifting | State::Testing | State::Done
     );
     gm.lamp_red = state == State::Fault || !info.inputs_valid;
+}
+
+/// The drives' view of this cycle: each follows its output, counts its cycles on and its
+/// completed moves (a move completes when its step ends with the drive at its end position).
+fn update_axes(gm: &mut Gm, state: State) {
+    let outputs = [
+        (axis::LIFT, gm.cr_lift_up, !gm.ls_lift_neg),
+        (
+            axis::CENTERING,
+            gm.cr_centering_drive,
+            gm.ls_centering_neg && gm.ls_centering_pos,
+        ),
+        (axis::TEST_DRIVE, gm.cr_test_drive, gm.specimen_broken),
+    ];
+    for (i, on, at_end) in outputs {
+        let a = &mut gm.axes[i];
+        if a.enable && !on && a.done {
+            a.moves = a.moves.saturating_add(1);
+        }
+        a.enable = on;
+        a.done = at_end;
+        a.on_cycles = if on { a.on_cycles.saturating_add(1) } else { 0 };
+    }
+    gm.axes[axis::TEST_DRIVE].pos_mm = gm.elongation_mm;
+    gm.axes[axis::LIFT].pos_mm = if gm.ls_lift_neg { 0.0 } else { 5.0 };
+    gm.axes[axis::CENTERING].pos_mm = if state == State::Idle { 20.0 } else { 0.0 };
 }
 
 #[cfg(test)]
@@ -341,6 +399,13 @@ mod tests {
         assert_eq!(gm.machine_state, State::Done as u8);
         assert_eq!(gm.tests_completed, 1);
         assert!(gm.max_force_kn > 0.0);
+        assert_eq!(gm.axes[axis::TEST_DRIVE].pos_mm, gm.elongation_mm);
+        assert_eq!(
+            gm.axes[axis::TEST_DRIVE].moves,
+            1,
+            "the test drive's move completed"
+        );
+        assert!(!gm.axes[axis::TEST_DRIVE].enable);
     }
 
     #[test]

@@ -6,12 +6,12 @@
 
 use super::{Error, period_of, set, show, type_text};
 use plc_io::shm::{DynSegment, PathLocation, PathTarget};
-use std::collections::{HashMap, HashSet};
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
 use ratatui::layout::{Constraint, Layout};
 use ratatui::style::{Modifier, Style, Stylize};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Paragraph, Row, Table, TableState};
+use std::collections::{HashMap, HashSet};
 use std::time::{Duration, Instant};
 
 enum Mode {
@@ -175,7 +175,10 @@ impl Watch {
 
     /// Opens or closes the selected group; `open` `None` toggles it.
     fn set_open(&mut self, open: Option<bool>) -> bool {
-        let Some(Entry::Group { path, open: now, .. }) = self.selected_entry() else {
+        let Some(Entry::Group {
+            path, open: now, ..
+        }) = self.selected_entry()
+        else {
             return false;
         };
         let (key, now) = (path.to_ascii_lowercase(), *now);
@@ -313,7 +316,6 @@ impl Watch {
         f.render_widget(Line::from(foot_text), foot);
     }
 
-
     /// Handles a key; `false` quits.
     fn key(&mut self, code: KeyCode) -> bool {
         match &mut self.mode {
@@ -444,7 +446,10 @@ fn group_type(seg: &DynSegment, path: &str) -> String {
     let mut level = &seg.descriptor().variables;
     let mut node = None;
     for segment in plc_rules::path::segments(path).flatten() {
-        let Some(n) = level.iter().find(|v| v.name.eq_ignore_ascii_case(segment.name)) else {
+        let Some(n) = level
+            .iter()
+            .find(|v| v.name.eq_ignore_ascii_case(segment.name))
+        else {
             return String::new();
         };
         node = Some((n, segment.index.is_some()));

@@ -141,7 +141,10 @@ fn coordinates(dims: &[usize]) -> Vec<String> {
                 *slot = flat % d;
                 flat /= d;
             }
-            c.iter().map(|x| x.to_string()).collect::<Vec<_>>().join(",")
+            c.iter()
+                .map(|x| x.to_string())
+                .collect::<Vec<_>>()
+                .join(",")
         })
         .collect()
 }
