@@ -1,6 +1,8 @@
 //! `derive_check_s_2000` and `derive_vs_serde_2000`: `cargo check` time of a generated crate
 //! with one 2,000-field struct, declared with our derive, against the same struct with
-//! `#[derive(serde::Serialize, serde::Deserialize)]`, both measured in the same run.
+//! `#[derive(serde::Serialize, serde::Deserialize)]`, both measured in the same run; and
+//! `derive_nested_vs_flat_2000`: the same 2,000 variables as members of 20 `PlcStruct`
+//! types of 100 members each, against the flat struct.
 //!
 //! The crates are written under `target/plc-bench/`, with the workspace's lockfile so both
 //! resolve the same dependency versions offline. The first run builds their dependencies once;
@@ -20,7 +22,13 @@ pub enum Flavour {
     PlcVars,
     /// `#[derive(serde::Serialize, serde::Deserialize)]` on the same fields.
     Serde,
+    /// The same fields as members of 20 `#[derive(PlcStruct)]` types, each a field of the
+    /// `GlobalMemory`.
+    Nested,
 }
+
+/// Structure types of the nested flavour.
+const PARTS: usize = 20;
 
 /// The source of a struct with `fields` fields: a fifth bools (half of them bit-mapped onto
 /// u16 words), then integers, reals and strings, as a machine's variable list mixes them.
@@ -32,18 +40,46 @@ pub fn source(flavour: Flavour, fields: usize) -> String {
         Flavour::Serde => {
             "#[derive(serde::Serialize, serde::Deserialize, Debug, Clone, Default)]\n"
         }
+        Flavour::Nested => return nested(s, fields),
     };
     s += "pub struct Machine {\n";
-    let words = fields / 10;
-    for i in 0..fields {
-        if i < words {
+    s += &members(flavour, 0, fields);
+    s += "}\n";
+    s
+}
+
+/// The nested flavour: the fields split into [`PARTS`] structures, bit mappings within each.
+fn nested(mut s: String, fields: usize) -> String {
+    let per = fields / PARTS;
+    for k in 0..PARTS {
+        s += "#[derive(plc_core::PlcStruct, Debug, Clone, Copy)]\n";
+        s += &format!("pub struct Part{k} {{\n");
+        s += &members(Flavour::Nested, k * per, per);
+        s += "}\n\n";
+    }
+    s += "#[derive(plc_core::GlobalMemory, Debug, Clone)]\npub struct Machine {\n";
+    for k in 0..PARTS {
+        s += &format!("    pub part{k}: Part{k},\n");
+    }
+    s += "}\n";
+    s
+}
+
+/// Fields `start..start + count`: a tenth u16 words, a tenth bools mapped onto them, then a
+/// mix of integers, reals and strings.
+fn members(flavour: Flavour, start: usize, count: usize) -> String {
+    let mut s = String::new();
+    let words = count / 10;
+    for j in 0..count {
+        let i = start + j;
+        if j < words {
             s += &format!("    pub word{i}: u16,\n");
-        } else if i < 2 * words {
-            let b = i - words;
-            if flavour == Flavour::PlcVars {
+        } else if j < 2 * words {
+            let b = j - words;
+            if flavour != Flavour::Serde {
                 s += &format!(
                     "    #[plc(source = \"word{}\", bit = {})]\n",
-                    b / 16 % words,
+                    start + b / 16 % words,
                     b % 16
                 );
             }
@@ -62,7 +98,6 @@ pub fn source(flavour: Flavour, fields: usize) -> String {
             s += &format!("    pub var{i}: {ty},\n");
         }
     }
-    s += "}\n";
     s
 }
 

@@ -2,7 +2,8 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,cycle_10k,snapshot,process_image,derive,import` runs some groups of figures.
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import` runs some groups
+//! of figures.
 //! `cycle_10k` and `derive` compile generated crates: their first run takes minutes.
 
 use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
@@ -23,8 +24,9 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 6] = [
+const GROUPS: [&str; 7] = [
     "cycle",
+    "structures",
     "cycle_10k",
     "snapshot",
     "process_image",
@@ -60,6 +62,7 @@ fn main() {
     for group in only {
         match group {
             "cycle" => cycle(&segment, cycle_batches),
+            "structures" => structures(&segment, cycle_batches),
             "cycle_10k" => match examples::bench::cycle_10k::run(batches) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&e),
@@ -107,6 +110,18 @@ fn cycle(segment: &str, batches: usize) {
         println!("cycle_1k_{name}_ns: {}", ours.as_nanos());
         println!("cycle_1k_{name}_handwritten_ns: {}", theirs.as_nanos());
     }
+}
+
+/// The cycle on 100 ten-member structures against the same 1,000 variables flat: what the
+/// structure level costs per cycle.
+fn structures(segment: &str, batches: usize) {
+    use examples::bench::axes::{GmAxes, GmAxesFlat};
+    let mut nested = FrameworkCycle::<GmAxes>::new(&format!("{segment}_axes")).expect("segment");
+    let mut flat = FrameworkCycle::<GmAxesFlat>::new(&format!("{segment}_flat")).expect("segment");
+    let (ours, theirs) = side_by_side(batches, 2000, || nested.step(), || flat.step());
+    println!("cycle_struct_ns: {}", ours.as_nanos());
+    println!("cycle_struct_flat_ns: {}", theirs.as_nanos());
+    println!("cycle_struct_vs_flat: {:.2}", ratio(ours, theirs));
 }
 
 /// The other process: publishes a 64 KiB image at 1 kHz.
@@ -193,23 +208,29 @@ fn derive_check(runs: usize) {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/plc-bench");
     let ours = Crate::write(&root, "derive-plc-vars", Flavour::PlcVars, 2000).expect("write");
     let serde = Crate::write(&root, "derive-serde", Flavour::Serde, 2000).expect("write");
+    let nested = Crate::write(&root, "derive-nested", Flavour::Nested, 2000).expect("write");
     // The first check of each builds its dependencies (once per machine) and is not counted.
-    for c in [&ours, &serde] {
+    for c in [&ours, &serde, &nested] {
         if let Err(e) = c.check() {
             fail(&e);
         }
     }
-    let (mut a, mut b) = (Vec::new(), Vec::new());
+    let (mut a, mut b, mut c) = (Vec::new(), Vec::new(), Vec::new());
     for _ in 0..runs {
         a.push(ours.check().expect("checked before"));
         b.push(serde.check().expect("checked before"));
+        c.push(nested.check().expect("checked before"));
     }
-    a.sort();
-    b.sort();
-    let (a, b) = (a[a.len() / 2], b[b.len() / 2]);
+    let median = |mut v: Vec<Duration>| {
+        v.sort();
+        v[v.len() / 2]
+    };
+    let (a, b, c) = (median(a), median(b), median(c));
     println!("derive_check_s_2000: {:.1}", a.as_secs_f64());
     println!("derive_check_serde_s_2000: {:.1}", b.as_secs_f64());
     println!("derive_vs_serde_2000: {:.2}", ratio(a, b));
+    println!("derive_check_nested_s_2000: {:.1}", c.as_secs_f64());
+    println!("derive_nested_vs_flat_2000: {:.2}", ratio(c, a));
 }
 
 /// Importing a 10,000-variable JSON file.
