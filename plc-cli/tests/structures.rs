@@ -225,6 +225,26 @@ fn get_and_set_reach_members_by_path() {
         stderr(&out)
     );
     assert_eq!(get(&segment, "axes[0].drive_id"), "axes[0].drive_id = 3");
+
+    // The list shows each structure with its members under it.
+    let list = stdout(&plc(&["list", &segment]));
+    let line = |start: &str| {
+        list.lines()
+            .find(|l| l.starts_with(start))
+            .map(str::to_string)
+    };
+    assert!(
+        line("axes ").is_some_and(|l| l.contains("Axis[2]")),
+        "{list}"
+    );
+    assert!(
+        line("  drive_id ").is_some_and(|l| l.contains("read-only")),
+        "{list}"
+    );
+    assert!(
+        line("  enable ").is_some_and(|l| l.contains("input")),
+        "{list}"
+    );
     owner.stop();
 }
 

@@ -62,17 +62,22 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         "{:<28} {:<14} {:<9} {:<10} {:<36} DESCRIPTION",
         "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
     );
-    for v in &seg.descriptor().variables {
+    print_level(&seg.descriptor().variables, 0);
+    Ok(())
+}
+
+/// One line per variable of a level, a structure's members indented under it (bit-mapped
+/// bools under their source word, within the same level).
+fn print_level(vars: &[plc_io::shm::VarDescriptor], depth: usize) {
+    let indent = "  ".repeat(depth);
+    for v in vars {
         let (name, bit_of) = match v.bit {
             Some(b) => (
-                format!("  └ {}", v.name),
-                Some(format!(
-                    "bit {} of {}",
-                    b.bit,
-                    seg.descriptor().variables[b.source].name
-                )),
+                format!("{indent}  └ {}", v.name),
+                vars.get(b.source)
+                    .map(|s| format!("bit {} of {}", b.bit, s.name)),
             ),
-            None => (v.name.clone(), None),
+            None => (format!("{indent}{}", v.name), None),
         };
         let access = match v.access {
             plc_core::Access::ReadOnly => "read-only",
@@ -93,6 +98,6 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
             place,
             v.description
         );
+        print_level(&v.members, depth + 1);
     }
-    Ok(())
 }

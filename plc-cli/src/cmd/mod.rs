@@ -117,9 +117,11 @@ pub fn show(seg: &DynSegment, image: &[u8], index: usize, element: Option<usize>
     }
 }
 
-/// The type as users read it: `REAL`, `STRING(64)`, `REAL[3,4]`.
+/// The type as users read it: `REAL`, `STRING(64)`, `REAL[3,4]`, `Axis[3]`.
 pub fn type_text(var: &VarDescriptor) -> String {
-    let base = if var.iec_type == plc_core::IecType::String {
+    let base = if let Some(name) = &var.type_name {
+        name.clone()
+    } else if var.iec_type == plc_core::IecType::String {
         format!("STRING({})", var.string_capacity())
     } else {
         var.iec_type.name().to_string()
