@@ -43,3 +43,7 @@
 //! assert!(Gm::VARIABLES[3].nonvolatile);
 //! # }
 //! ```
+
+/// The examples of `docs/structures.md`, compiled and run as doctests so the page stays true.
+#[doc = include_str!("../../docs/structures.md")]
+pub mod structures_doc {}
