@@ -217,9 +217,11 @@ pub fn source(k: usize, hand_trait: &str) -> String {
     s
 }
 
-/// The members of the structure workload's `BenchAxis`: name, type, and the word and bit of a
-/// bit-mapped bool. Ten members, as an axis of a machine has.
-const AXIS_MEMBERS: [(&str, &str, Option<(&str, u8)>); 10] = [
+/// A member of `BenchAxis`: name, type, and the word and bit of a bit-mapped bool.
+type AxisMember = (&'static str, &'static str, Option<(&'static str, u8)>);
+
+/// The members of the structure workload's `BenchAxis`: ten, as an axis of a machine has.
+const AXIS_MEMBERS: [AxisMember; 10] = [
     ("pos", "f64", None),
     ("target", "f64", None),
     ("speed", "f32", None),

@@ -48,7 +48,7 @@ pub fn leaves_of(seg: &DynSegment, spec: &str) -> Result<Vec<PathLocation>, Erro
     let mut todo = vec![spec.trim().to_string()];
     while let Some(p) = todo.pop() {
         match seg.resolve_path(&p)? {
-            PathTarget::Value(at) => out.push(at),
+            PathTarget::Value(at) => out.push(*at),
             PathTarget::Group(children) => todo.extend(children.into_iter().rev()),
         }
         if out.len() + todo.len() > MAX {

@@ -32,7 +32,7 @@ enum Entry {
         type_text: String,
     },
     /// A basic value inside a structure.
-    Leaf { at: PathLocation, depth: usize },
+    Leaf { at: Box<PathLocation>, depth: usize },
 }
 
 impl Entry {
@@ -383,10 +383,9 @@ impl Watch {
                     KeyCode::Left | KeyCode::Char('-') => {
                         self.set_open(Some(false));
                     }
-                    KeyCode::Enter => {
-                        if !self.set_open(None) && self.selected_entry().is_some() {
-                            self.mode = Mode::Edit(String::new())
-                        }
+                    // Enter opens or closes a group, else edits the value.
+                    KeyCode::Enter if !self.set_open(None) && self.selected_entry().is_some() => {
+                        self.mode = Mode::Edit(String::new())
                     }
                     _ => {}
                 }

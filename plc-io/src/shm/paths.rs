@@ -29,7 +29,7 @@ pub struct PathLocation {
 #[derive(Clone, Debug, PartialEq)]
 pub enum PathTarget {
     /// One basic value.
-    Value(PathLocation),
+    Value(Box<PathLocation>),
     /// A structure (its members' paths) or an array (its elements' paths, by coordinates).
     Group(Vec<String>),
 }
@@ -40,7 +40,7 @@ impl DynSegment {
     pub fn resolve_path(&self, path: &str) -> Result<PathTarget, ShmError> {
         let text = path.trim();
         match plc_rules::path::locate(&self.descriptor().variables, text) {
-            Ok(_) => return self.locate(text).map(PathTarget::Value),
+            Ok(_) => return self.locate(text).map(|at| PathTarget::Value(Box::new(at))),
             Err(plc_rules::path::LocateError::WholeArray { at }) if at == text => {
                 if let Some(node) = self.node_at(text) {
                     let children = coordinates(&node.dims)
@@ -63,7 +63,7 @@ impl DynSegment {
             Err(_) => {}
         }
         // The error, in the words `locate` gives it.
-        self.locate(text).map(PathTarget::Value)
+        self.locate(text).map(|at| PathTarget::Value(Box::new(at)))
     }
 
     /// The variable or member the names of `path` lead to (its indexes aside).
