@@ -234,7 +234,7 @@ const AXIS_MEMBERS: [AxisMember; 10] = [
     ("mode", "i16", None),
 ];
 
-/// The structure workload: `GmAxes`, 100 `BenchAxis` structures of [`AXIS_MEMBERS`] in an
+/// The structure workload: `GmAxes`, 100 `BenchAxis` structures of ten members in an
 /// array, and `GmAxesFlat`, the same 1,000 variables as top-level fields (`a7_pos`), in
 /// the same order, so both images are the same bytes.
 pub fn axes_source(axes: usize) -> String {
