@@ -291,7 +291,7 @@ impl Watch {
         .header(Row::new(["NAME", "TYPE", "DIRECTION", "VALUE"]).add_modifier(Modifier::BOLD))
         .row_highlight_style(Style::new().add_modifier(Modifier::REVERSED))
         .block(Block::bordered().title(format!(
-            " {} of {} lines{} ",
+            " {} of {} variables{} ",
             visible.len(),
             self.entries.len(),
             if self.filter.is_empty() {
