@@ -278,3 +278,72 @@ fn a_nonvolatile_member_survives_a_restart_and_an_edit() {
     );
     owner.stop();
 }
+
+fn tmux(args: &[&str]) -> Output {
+    Command::new("tmux").args(args).output().unwrap()
+}
+
+#[test]
+fn watch_shows_structures_as_a_tree_and_writes_a_member() {
+    let dir = temp_dir("watch");
+    let segment = format!("cli_struct_watch_{}", std::process::id());
+    let owner = Owner::start("owner", &segment, &dir.join("s.retain"));
+    let session = format!("plcwatchstruct{}", std::process::id());
+    let cmd = format!("{} watch {} --rate 20", env!("CARGO_BIN_EXE_plc"), segment);
+    let started = tmux(&[
+        "new-session",
+        "-d",
+        "-s",
+        &session,
+        "-x",
+        "150",
+        "-y",
+        "40",
+        &cmd,
+    ]);
+    assert!(started.status.success(), "{}", stderr(&started));
+    let screen = || stdout(&tmux(&["capture-pane", "-p", "-t", &session]));
+    wait_until("the watch window", || screen().contains("▸ axes"));
+    assert!(screen().contains("Axis[2]"), "{}", screen());
+    assert!(
+        !screen().contains("drive_id"),
+        "closed at first:\n{}",
+        screen()
+    );
+
+    // Select `axes` (the filter leaves it first), open it, then its element [1].
+    tmux(&["send-keys", "-t", &session, "/", "axes", "Enter"]);
+    wait_until("the filter", || !screen().contains("│counter"));
+    tmux(&["send-keys", "-t", &session, "Right"]);
+    wait_until("axes open", || {
+        screen().contains("▾ axes") && screen().contains("▸ [1]")
+    });
+    tmux(&["send-keys", "-t", &session, "Down", "Down", "Right"]);
+    wait_until("axes[1] open", || screen().contains("▾ [1]"));
+    assert!(screen().contains("target"), "{}", screen());
+
+    // Down to `axes[1].target`, then write it from the window.
+    tmux(&[
+        "send-keys",
+        "-t",
+        &session,
+        "Down",
+        "Down",
+        "Enter",
+        "75.5",
+        "Enter",
+    ]);
+    wait_until("the write to reach the program", || {
+        get(&segment, "axes[1].target") == "axes[1].target = 75.5"
+    });
+    assert!(
+        screen().contains("wrote axes[1].target = 75.5"),
+        "{}",
+        screen()
+    );
+    tmux(&["send-keys", "-t", &session, "q"]);
+    wait_until("watch to quit", || {
+        !tmux(&["has-session", "-t", &session]).status.success()
+    });
+    owner.stop();
+}
