@@ -15,6 +15,10 @@ pub mod devices;
 mod hex;
 pub mod layout;
 pub mod links;
+pub mod naming;
+pub mod scan;
+pub mod scan_file;
+pub mod sii;
 mod validate;
 
 pub use layout::{BusLayout, EntryLayout, LayoutError};
