@@ -168,6 +168,30 @@ impl Device {
         d
     }
 
+    /// The order numbers of the modelled terminals, as [`Device::model`] takes them.
+    pub const MODELS: [&'static str; 6] = ["EK1100", "EL1004", "EL2004", "EL2828", "EL2889", "EL3004"];
+
+    /// The model of order number `name` (case-insensitive: `"el1004"` is the EL1004), or
+    /// `None` for a terminal that is not modelled (see [`Device::MODELS`]).
+    ///
+    /// ```
+    /// use ethercat_sim::Device;
+    /// assert_eq!(Device::model("el3004").unwrap().name(), "EL3004");
+    /// assert!(Device::model("EL9999").is_none());
+    /// ```
+    pub fn model(name: &str) -> Option<Device> {
+        let make: fn() -> Device = match name.to_ascii_uppercase().as_str() {
+            "EK1100" => Device::ek1100,
+            "EL1004" => Device::el1004,
+            "EL2004" => Device::el2004,
+            "EL2828" => Device::el2828,
+            "EL2889" => Device::el2889,
+            "EL3004" => Device::el3004,
+            _ => return None,
+        };
+        Some(make())
+    }
+
     /// The value of CoE object `index`:`sub` (None without a mailbox or for an unknown
     /// object), e.g. the PDO assignment a MainDevice wrote.
     pub fn sdo(&self, index: u16, sub: u8) -> Option<u32> {
@@ -553,6 +577,13 @@ impl Device {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_listed_model_is_found_by_its_name() {
+        for name in Device::MODELS {
+            assert_eq!(Device::model(name).map(|d| d.name().to_owned()).as_deref(), Some(name));
+        }
+    }
 
     #[test]
     fn models_have_the_real_names_and_identities() {
