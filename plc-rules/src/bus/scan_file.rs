@@ -29,7 +29,7 @@ pub fn to_toml(bus: &BusConfig, scanned: &[ScannedDevice]) -> String {
     let mut out = String::from(
         "# Bus description read from the SubDevices by `plc bus scan`: identities, and PDO entries\n\
          # as the bus is configured (each entry's CoE object in its comment). Rename devices and\n\
-         # entries to the names the program's links use; see docs/bus.md.\n",
+         # entries to the names the program's links use; see docs/bus-scan.md.\n",
     );
     for (pos, d) in bus.devices.iter().enumerate() {
         let _ = write!(
