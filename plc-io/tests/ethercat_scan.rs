@@ -235,3 +235,72 @@ fn the_scanned_description_brings_the_same_bus_to_op_and_moves_its_data() {
     assert_eq!(bus.outputs(3), [0x08], "EL2004 channel 4");
     backend.stop();
 }
+
+/// The links of the tensile tester's program (its JSON variable list): the impact67 block's
+/// input and output words and the signal tower's horn.
+#[derive(GlobalMemory, Debug, Clone)]
+struct TensileTesterLinks {
+    #[plc(link = "ethercat.impact67_0.digital_inputs", direction = "input")]
+    inputs: u16,
+    #[plc(link = "ethercat.impact67_0.digital_outputs", direction = "output")]
+    outputs: u16,
+    #[plc(link = "ethercat.lamps.horn", direction = "output")]
+    horn: bool,
+}
+
+/// What the engineer does to the scanned file for the tensile tester: the names its program's
+/// links use, and the EL1004's and EL2889's channels as one word each.
+fn renamed_for_the_tensile_tester(mut bus: BusConfig) -> BusConfig {
+    let names = ["coupler", "impact67_0", "impact67_0", "lamps"];
+    for (d, name) in bus.devices.iter_mut().zip(names) {
+        d.name = name.into();
+    }
+    let word = plc_core::IecType::Uint;
+    bus.devices[1] = bus.devices[1]
+        .clone()
+        .grouped(PdoDirection::Input, "digital_inputs", word);
+    bus.devices[2] = bus.devices[2]
+        .clone()
+        .grouped(PdoDirection::Output, "digital_outputs", word);
+    for (e, name) in bus.devices[3]
+        .entries
+        .iter_mut()
+        .zip(["green", "yellow", "red", "horn"])
+    {
+        e.name = name.into();
+    }
+    bus
+}
+
+#[test]
+fn the_scanned_file_with_the_programs_names_is_the_tensile_testers_and_runs_its_links() {
+    let bus = SimBus::new(tensile_tester_sim());
+    let scan = scan(transport(&bus), &Options::simulated()).unwrap();
+    let edited = renamed_for_the_tensile_tester(scan.bus);
+    // The hand-written file, but for its descriptions and the revisions it leaves open.
+    let mut file = tensile_tester_file();
+    for (f, e) in file.devices.iter_mut().zip(&edited.devices) {
+        f.description.clone_from(&e.description);
+        f.identity.revision = e.identity.revision;
+    }
+    assert_eq!(edited, file);
+
+    let mut backend =
+        EtherCatBackend::<TensileTesterLinks>::new(edited, transport(&bus), Options::simulated())
+            .unwrap();
+    backend.start().unwrap();
+    let mut gm = TensileTesterLinks {
+        outputs: 0x0201,
+        horn: true,
+        ..TensileTesterLinks::default()
+    };
+    bus.set_input_bit(1, 3, true);
+    for _ in 0..3 {
+        let status = backend.exchange(&mut gm);
+        assert!(status.inputs_valid && !status.bus_fault, "{status:?}");
+    }
+    assert_eq!(gm.inputs, 0b1000, "EL1004 channel 4");
+    assert_eq!(bus.outputs(2), [0x01, 0x02], "EL2889 channels 1 and 10");
+    assert_eq!(bus.outputs(3), [0x08], "EL2004 channel 4: the horn");
+    backend.stop();
+}
