@@ -697,8 +697,10 @@ fn bus_scan_of_a_simulated_bus_prints_a_description_that_reads_back() {
     assert!(o.status.success(), "{}", stderr(&o));
     let table = stdout(&o);
     assert!(
-        table.lines().any(|l| l.split_whitespace().collect::<Vec<_>>()
-            == ["2", "el2889", "output_16", "output", "1.7", "1", "BOOL"]),
+        table
+            .lines()
+            .any(|l| l.split_whitespace().collect::<Vec<_>>()
+                == ["2", "el2889", "output_16", "output", "1.7", "1", "BOOL"]),
         "{table}"
     );
     std::fs::remove_dir_all(&dir).unwrap();

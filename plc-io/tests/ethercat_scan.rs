@@ -20,7 +20,10 @@ fn scanned(models: Vec<Device>) -> ScannedBus {
 }
 
 fn tensile_tester_file() -> BusConfig {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../examples/bus/tensile_tester.toml");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../examples/bus/tensile_tester.toml"
+    );
     BusConfig::load(path).unwrap()
 }
 
@@ -56,7 +59,12 @@ fn a_scan_of_the_tensile_tester_bus_reproduces_its_devices_identities_and_entrie
             "{}",
             want.description
         );
-        assert_eq!(got.identity.revision, Some(sim.identity().2), "{}", got.name);
+        assert_eq!(
+            got.identity.revision,
+            Some(sim.identity().2),
+            "{}",
+            got.name
+        );
     }
     // The file groups the EL1004's inputs and the EL2889's outputs into one word each; grouped
     // the same way, the scanned entries are the file's, names aside.
@@ -122,7 +130,10 @@ fn the_el1004_has_four_1_bit_inputs() {
         .iter()
         .map(|e| (e.index, e.subindex))
         .collect();
-    assert_eq!(objects, [(0x6000, 1), (0x6010, 1), (0x6020, 1), (0x6030, 1)]);
+    assert_eq!(
+        objects,
+        [(0x6000, 1), (0x6010, 1), (0x6020, 1), (0x6030, 1)]
+    );
 }
 
 #[test]
@@ -173,7 +184,11 @@ fn the_el3004_has_four_channels_of_status_and_value_from_its_coe_objects() {
             [(1, 1), (2, 1), (3, 2), (5, 2), (7, 1), (0x0F, 1), (0x10, 1)]
         );
     }
-    let gaps = d.entries.iter().filter(|e| e.name.starts_with("gap_")).count();
+    let gaps = d
+        .entries
+        .iter()
+        .filter(|e| e.name.starts_with("gap_"))
+        .count();
     assert_eq!(gaps, 8, "two gaps a channel, numbered across the device");
     // The same layout as the ready description, which names the bits after the data sheet.
     let ready = BusConfig {

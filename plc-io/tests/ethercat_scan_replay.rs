@@ -45,7 +45,13 @@ fn datagrams(frame: &[u8]) -> Vec<Datagram<'_>> {
         let Some(wkc) = frame.get(at + 10 + len..at + 12 + len) else {
             break;
         };
-        out.push((cmd, station, register, data, u16::from_le_bytes([wkc[0], wkc[1]])));
+        out.push((
+            cmd,
+            station,
+            register,
+            data,
+            u16::from_le_bytes([wkc[0], wkc[1]]),
+        ));
         at += 12 + len;
         if flags & 0x8000 == 0 {
             break;

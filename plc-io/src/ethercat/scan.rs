@@ -103,7 +103,8 @@ impl std::error::Error for ScanError {}
 /// Scans the bus behind `transport`: see the module documentation. The SubDevices are left
 /// in INIT.
 pub fn scan(transport: Transport, options: &Options) -> Result<ScannedBus, ScanError> {
-    let (maindevice, driver) = super::transport::open(transport, options).map_err(ScanError::Bus)?;
+    let (maindevice, driver) =
+        super::transport::open(transport, options).map_err(ScanError::Bus)?;
     let result = scan_group(&maindevice);
     // SAFETY: every ethercrab call in `scan_group` was awaited to its end, so no frame is in
     // flight, and the group it made was dropped there.
@@ -113,15 +114,14 @@ pub fn scan(transport: Transport, options: &Options) -> Result<ScannedBus, ScanE
 }
 
 fn scan_group(md: &MainDevice<'static>) -> Result<ScannedBus, ScanError> {
-    let group = block_on(
-        md.init_single_group::<MAX_SUBDEVICES, MAX_PDI>(ethercrab::std::ethercat_now),
-    )
-    .map_err(|error| {
-        ScanError::Bus(EtherCatError::Bus {
-            during: "scanning the bus (init to PRE-OP)",
-            error,
-        })
-    })?;
+    let group =
+        block_on(md.init_single_group::<MAX_SUBDEVICES, MAX_PDI>(ethercrab::std::ethercat_now))
+            .map_err(|error| {
+                ScanError::Bus(EtherCatError::Bus {
+                    during: "scanning the bus (init to PRE-OP)",
+                    error,
+                })
+            })?;
     let mut devices = Vec::new();
     let mut eeproms = Vec::new();
     for (position, sd) in group.iter(md).enumerate() {
@@ -220,7 +220,9 @@ async fn read_assignment(
     let mut total = 0usize;
     for (sm, _) in process_data_sms(sii) {
         let assign = 0x1C10 + u16::from(sm);
-        let upload = |what: String| move |e: ethercrab::error::Error| format!("reading {what} over CoE: {e}");
+        let upload = |what: String| {
+            move |e: ethercrab::error::Error| format!("reading {what} over CoE: {e}")
+        };
         let count: u8 = sd
             .sdo_read(assign, 0)
             .await

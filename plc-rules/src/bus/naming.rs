@@ -127,7 +127,10 @@ mod tests {
 
     #[test]
     fn repeats_are_found_after_the_names_are_made_identifiers() {
-        assert_eq!(entry_names(&["Limit 1", "limit_1"]), ["limit_1_1", "limit_1_2"]);
+        assert_eq!(
+            entry_names(&["Limit 1", "limit_1"]),
+            ["limit_1_1", "limit_1_2"]
+        );
     }
 
     #[test]
@@ -140,7 +143,10 @@ mod tests {
     #[test]
     fn the_second_device_of_a_model_gets_2_and_the_first_keeps_its_name() {
         let names = device_names(&["EK1100", "EL2004", "EL1004", "EL2004", "EL2004"]);
-        assert_eq!(names, ["ek1100", "el2004", "el1004", "el2004_2", "el2004_3"]);
+        assert_eq!(
+            names,
+            ["ek1100", "el2004", "el1004", "el2004_2", "el2004_3"]
+        );
     }
 
     #[test]

@@ -218,7 +218,12 @@ pub fn describe(devices: &[ScannedDevice]) -> Result<BusConfig, ConfigError> {
         let texts: Vec<String> = d
             .entries
             .iter()
-            .map(|e| e.name.clone().filter(|n| !n.is_empty()).unwrap_or_else(|| unnamed(e)))
+            .map(|e| {
+                e.name
+                    .clone()
+                    .filter(|n| !n.is_empty())
+                    .unwrap_or_else(|| unnamed(e))
+            })
             .collect();
         let mut entries = Vec::new();
         for (e, entry_name) in d.entries.iter().zip(entry_names(&texts)) {
@@ -299,7 +304,10 @@ mod tests {
                 index: 0x1a00,
                 sm: 3,
                 name: 0,
-                entries: vec![entry(0x6000, 0x11, 2, 0x03, 16), entry(0x6000, 1, 3, 0x06, 9)],
+                entries: vec![
+                    entry(0x6000, 0x11, 2, 0x03, 16),
+                    entry(0x6000, 1, 3, 0x06, 9),
+                ],
             }],
             ..Sii::default()
         }
@@ -312,8 +320,14 @@ mod tests {
         assert_eq!(d.identity.revision, Some(0x0015_0000));
         let bus = describe(&[d]).unwrap();
         let e = &bus.devices[0].entries;
-        assert_eq!((e[0].name.as_str(), e[0].iec_type.as_str(), e[0].sm), ("value", "INT", 3));
-        assert_eq!((e[1].name.as_str(), e[1].iec_type.as_str()), ("status", "UINT"));
+        assert_eq!(
+            (e[0].name.as_str(), e[0].iec_type.as_str(), e[0].sm),
+            ("value", "INT", 3)
+        );
+        assert_eq!(
+            (e[1].name.as_str(), e[1].iec_type.as_str()),
+            ("status", "UINT")
+        );
     }
 
     #[test]
@@ -350,7 +364,11 @@ mod tests {
     #[test]
     fn types_fall_back_to_bit_strings_when_the_data_type_does_not_fit() {
         assert_eq!(iec_type(Some(0x03), 16), Some(IecType::Int));
-        assert_eq!(iec_type(Some(0x03), 12), None, "a signed type needs its width");
+        assert_eq!(
+            iec_type(Some(0x03), 12),
+            None,
+            "a signed type needs its width"
+        );
         assert_eq!(iec_type(Some(0x06), 12), Some(IecType::Uint));
         assert_eq!(iec_type(Some(0x01), 2), None);
         assert_eq!(iec_type(Some(0x31), 2), None, "BIT2 has no IEC type");

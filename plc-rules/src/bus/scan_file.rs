@@ -55,7 +55,10 @@ pub fn to_toml(bus: &BusConfig, scanned: &[ScannedDevice]) -> String {
             continue;
         }
         out.push_str("entries = [\n");
-        let objects = scanned.get(pos).map(|s| s.entries.as_slice()).unwrap_or(&[]);
+        let objects = scanned
+            .get(pos)
+            .map(|s| s.entries.as_slice())
+            .unwrap_or(&[]);
         for (i, e) in d.entries.iter().enumerate() {
             let _ = write!(
                 out,
@@ -137,6 +140,9 @@ mod tests {
             ),
             "{text}"
         );
-        assert!(text.contains(r#"description = "quote \" backslash \\ tab \u0009 ü""#), "{text}");
+        assert!(
+            text.contains(r#"description = "quote \" backslash \\ tab \u0009 ü""#),
+            "{text}"
+        );
     }
 }

@@ -358,9 +358,9 @@ fn pdos(data: &[u8]) -> Result<Vec<SiiPdo>, String> {
     while let Some(header) = rest.get(..8) {
         let pdo_index = u16_at(header, 0);
         let count = usize::from(header[2]);
-        let body = rest
-            .get(8..8 + 8 * count)
-            .ok_or_else(|| format!("PDO {pdo_index:#06x}: its {count} entries run past the category"))?;
+        let body = rest.get(8..8 + 8 * count).ok_or_else(|| {
+            format!("PDO {pdo_index:#06x}: its {count} entries run past the category")
+        })?;
         let entries = body
             .chunks_exact(8)
             .map(|e| SiiPdoEntry {
@@ -429,14 +429,20 @@ mod tests {
         let b = image(
             true,
             &[
-                (category::STRINGS, strings_category(&["EL2889", "Ch 1", "Output"])),
+                (
+                    category::STRINGS,
+                    strings_category(&["EL2889", "Ch 1", "Output"]),
+                ),
                 (category::GENERAL, vec![0, 0, 1, 2, 0, 0]),
                 (category::SYNC_MANAGER, sm.to_vec()),
                 (category::RX_PDO, pdo.to_vec()),
             ],
         );
         let sii = Sii::parse(&b).unwrap();
-        assert_eq!((sii.vendor, sii.product, sii.revision), (2, 0x0b49_3052, 0x0011_0000));
+        assert_eq!(
+            (sii.vendor, sii.product, sii.revision),
+            (2, 0x0b49_3052, 0x0011_0000)
+        );
         assert!(sii.has_coe());
         assert_eq!(sii.order_name(), Some("EL2889"));
         assert_eq!(sii.device_name(), Some("Ch 1"));
@@ -479,7 +485,10 @@ mod tests {
     fn pdo_entries_beyond_the_category_are_an_error() {
         let pdo = vec![0x00, 0x1a, 3, 0, 0, 0, 0, 0, 0x00, 0x60, 1, 0, 1, 1, 0, 0];
         let err = Sii::parse(&image(false, &[(category::TX_PDO, pdo)])).unwrap_err();
-        assert!(err.to_string().contains("PDO 0x1a00: its 3 entries"), "{err}");
+        assert!(
+            err.to_string().contains("PDO 0x1a00: its 3 entries"),
+            "{err}"
+        );
     }
 
     #[test]
@@ -488,7 +497,10 @@ mod tests {
         s[0] = 3;
         let err = Sii::parse(&image(false, &[(category::STRINGS, s)])).unwrap_err();
         // The category's padding byte (0) reads as an empty string 2.
-        assert_eq!(err.to_string(), "EEPROM category 10: string 3 of 3 is missing");
+        assert_eq!(
+            err.to_string(),
+            "EEPROM category 10: string 3 of 3 is missing"
+        );
     }
 
     #[test]
