@@ -218,6 +218,20 @@ fn the_scanned_file_reads_back_through_bus_config_unchanged() {
     assert!(text.contains("# 0x6000:01"), "{text}");
 }
 
+/// Brings `bus` to OP with `config` through plc-io's bring-up, runs three cycles of `gm` (each
+/// with valid inputs) and returns what the struct holds then. The outputs stay as the last
+/// cycle left them: `stop` would zero them.
+fn run_three_cycles<T: GlobalMemory>(bus: &SimBus, config: BusConfig, mut gm: T) -> T {
+    let mut backend =
+        EtherCatBackend::<T>::new(config, transport(bus), Options::simulated()).unwrap();
+    backend.start().unwrap();
+    for _ in 0..3 {
+        let status = backend.exchange(&mut gm);
+        assert!(status.inputs_valid && !status.bus_fault, "{status:?}");
+    }
+    gm
+}
+
 #[derive(GlobalMemory, Debug, Clone)]
 struct Io {
     #[plc(link = "ethercat.el1004.input_2", direction = "input")]
@@ -232,23 +246,16 @@ struct Io {
 fn the_scanned_description_brings_the_same_bus_to_op_and_moves_its_data() {
     let bus = SimBus::new(tensile_tester_sim());
     let scan = scan(transport(&bus), &Options::simulated()).unwrap();
-    let mut backend =
-        EtherCatBackend::<Io>::new(scan.bus, transport(&bus), Options::simulated()).unwrap();
-    backend.start().unwrap();
-    let mut gm = Io {
+    let gm = Io {
         out10: true,
         horn: true,
         ..Io::default()
     };
     bus.set_input_bit(1, 1, true);
-    for _ in 0..3 {
-        let status = backend.exchange(&mut gm);
-        assert!(status.inputs_valid && !status.bus_fault, "{status:?}");
-    }
+    let gm = run_three_cycles(&bus, scan.bus, gm);
     assert!(gm.in2);
     assert_eq!(bus.outputs(2), [0x00, 0x02], "EL2889 channel 10");
     assert_eq!(bus.outputs(3), [0x08], "EL2004 channel 4");
-    backend.stop();
 }
 
 /// The links of the tensile tester's program (its JSON variable list): the impact67 block's
@@ -300,22 +307,50 @@ fn the_scanned_file_with_the_programs_names_is_the_tensile_testers_and_runs_its_
     }
     assert_eq!(edited, file);
 
-    let mut backend =
-        EtherCatBackend::<TensileTesterLinks>::new(edited, transport(&bus), Options::simulated())
-            .unwrap();
-    backend.start().unwrap();
-    let mut gm = TensileTesterLinks {
+    let gm = TensileTesterLinks {
         outputs: 0x0201,
         horn: true,
         ..TensileTesterLinks::default()
     };
     bus.set_input_bit(1, 3, true);
-    for _ in 0..3 {
-        let status = backend.exchange(&mut gm);
-        assert!(status.inputs_valid && !status.bus_fault, "{status:?}");
-    }
+    let gm = run_three_cycles(&bus, edited, gm);
     assert_eq!(gm.inputs, 0b1000, "EL1004 channel 4");
     assert_eq!(bus.outputs(2), [0x01, 0x02], "EL2889 channels 1 and 10");
     assert_eq!(bus.outputs(3), [0x08], "EL2004 channel 4: the horn");
-    backend.stop();
+}
+
+#[test]
+fn a_device_whose_eeprom_does_not_parse_is_an_error_naming_its_position() {
+    // A strings category longer than the EEPROM holds (not so long that ethercrab's own walk of
+    // the categories overflows its 16-bit word address, which panics in a debug build).
+    let mut long = Device::el2004();
+    long.eeprom_words_mut()[0x41] = 0x0800;
+    let err = scan(
+        transport(&SimBus::new(vec![Device::ek1100(), long])),
+        &Options::simulated(),
+    )
+    .unwrap_err()
+    .to_string();
+    // (ethercrab finds no General category behind it, so it names the device by identity.)
+    assert!(
+        err.starts_with("SubDevice 1 (manu. 0x00000002, device 0x07d43052")
+            && err.ends_with(
+                "EEPROM category 10 at word 0x0040 (4096 bytes) runs past the 2048 bytes the \
+                 EEPROM holds"
+            ),
+        "{err}"
+    );
+    // An RxPDO that claims more entries than its category holds (EL2004: 0x1600 at word 0xA3).
+    let mut crowded = Device::el2004();
+    crowded.eeprom_words_mut()[0xA4] = 0x0009;
+    let err = scan(
+        transport(&SimBus::new(vec![Device::ek1100(), crowded])),
+        &Options::simulated(),
+    )
+    .unwrap_err()
+    .to_string();
+    assert_eq!(
+        err,
+        "SubDevice 1 (EL2004): EEPROM category 51: PDO 0x1600: its 9 entries run past the category"
+    );
 }
