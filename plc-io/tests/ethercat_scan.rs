@@ -95,6 +95,13 @@ fn a_scan_of_the_tensile_tester_bus_reproduces_its_devices_identities_and_entrie
 }
 
 #[test]
+fn the_scan_leaves_every_subdevice_in_init() {
+    let bus = SimBus::new(tensile_tester_sim());
+    scan(transport(&bus), &Options::simulated()).unwrap();
+    assert!((0..4).all(|pos| bus.al_state(pos) == ethercat_sim::al::INIT));
+}
+
+#[test]
 fn devices_are_named_by_order_number_and_a_coupler_has_no_entries() {
     let scan = scanned(tensile_tester_sim());
     let names: Vec<_> = scan.bus.devices.iter().map(|d| d.name.as_str()).collect();
@@ -343,12 +350,14 @@ fn a_device_whose_eeprom_does_not_parse_is_an_error_naming_its_position() {
     // An RxPDO that claims more entries than its category holds (EL2004: 0x1600 at word 0xA3).
     let mut crowded = Device::el2004();
     crowded.eeprom_words_mut()[0xA4] = 0x0009;
-    let err = scan(
-        transport(&SimBus::new(vec![Device::ek1100(), crowded])),
-        &Options::simulated(),
-    )
-    .unwrap_err()
-    .to_string();
+    let bus = SimBus::new(vec![Device::ek1100(), crowded]);
+    let err = scan(transport(&bus), &Options::simulated())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        (0..2).all(|pos| bus.al_state(pos) == ethercat_sim::al::INIT),
+        "back in INIT after a failed scan too"
+    );
     assert_eq!(
         err,
         "SubDevice 1 (EL2004): EEPROM category 51: PDO 0x1600: its 9 entries run past the category"

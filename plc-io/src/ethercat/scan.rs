@@ -122,28 +122,34 @@ fn scan_group(md: &MainDevice<'static>) -> Result<ScannedBus, ScanError> {
                     error,
                 })
             })?;
-    let mut devices = Vec::new();
-    let mut eeproms = Vec::new();
-    for (position, sd) in group.iter(md).enumerate() {
-        let fail = |problem: String| ScanError::Device {
-            position,
-            name: sd.name().to_owned(),
-            problem,
-        };
-        let image = block_on(read_eeprom(md, &sd)).map_err(fail)?;
-        let sii = Sii::parse(&image).map_err(|e| fail(e.to_string()))?;
-        let device = if sii.has_coe() {
-            let assigned = block_on(read_assignment(&sd, &sii)).map_err(fail)?;
-            ScannedDevice::from_coe(&sii, &assigned)
-        } else {
-            ScannedDevice::from_sii(&sii)
-        };
-        devices.push(device);
-        eeproms.push(image);
-    }
+    // Every device is read before anything is returned, so the bus goes back to INIT after a
+    // failure too.
+    let read = (|| {
+        let mut devices = Vec::new();
+        let mut eeproms = Vec::new();
+        for (position, sd) in group.iter(md).enumerate() {
+            let fail = |problem: String| ScanError::Device {
+                position,
+                name: sd.name().to_owned(),
+                problem,
+            };
+            let image = block_on(read_eeprom(md, &sd)).map_err(fail)?;
+            let sii = Sii::parse(&image).map_err(|e| fail(e.to_string()))?;
+            let device = if sii.has_coe() {
+                let assigned = block_on(read_assignment(&sd, &sii)).map_err(fail)?;
+                ScannedDevice::from_coe(&sii, &assigned)
+            } else {
+                ScannedDevice::from_sii(&sii)
+            };
+            devices.push(device);
+            eeproms.push(image);
+        }
+        Ok((devices, eeproms))
+    })();
     if let Err(e) = block_on(group.into_init(md)) {
         log::warn!("scan: the SubDevices did not go back to INIT: {e}");
     }
+    let (devices, eeproms) = read?;
     let bus = describe(&devices).map_err(ScanError::Describe)?;
     Ok(ScannedBus {
         devices,
