@@ -155,6 +155,20 @@ mod tests {
         assert_eq!(names, ["el2004", "el2004_2", "el2004_2_2"]);
     }
 
+    proptest::proptest! {
+        #[test]
+        fn any_names_become_unique_identifiers(
+            names in proptest::collection::vec("[ -~]{0,6}|Input|input_[12]|[ä1 ]{1,3}", 0..12),
+        ) {
+            for made in [entry_names(&names), device_names(&names)] {
+                proptest::prop_assert_eq!(made.len(), names.len());
+                proptest::prop_assert!(made.iter().all(|n| crate::link::is_identifier(n)), "{:?}", made);
+                let lower: HashSet<String> = made.iter().map(|n| n.to_ascii_lowercase()).collect();
+                proptest::prop_assert_eq!(lower.len(), made.len(), "{:?}", made);
+            }
+        }
+    }
+
     #[test]
     fn empty_names_fall_back_to_a_word() {
         assert_eq!(device_names(&["", "?"]), ["device", "_"]);
