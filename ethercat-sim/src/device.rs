@@ -124,9 +124,10 @@ impl Device {
         )
     }
 
-    /// The EL1004, 4 digital inputs (one byte at 0x1000). ESC registers from \[R2\]; the
-    /// EEPROM idle status and the missing system-time unit are taken from the EL2828, which
-    /// reports the same features (0x01FC).
+    /// The EL1004, 4 digital inputs (one byte at 0x1000). SII from \[R3\], its strings and
+    /// PDO entries completed (TxPDOs 0x1A00-0x1A03, entries 0x60n0:01 "Input"; see
+    /// `data/README.md`). ESC registers from \[R2\]; the EEPROM idle status and the missing
+    /// system-time unit are taken from the EL2828, which reports the same features (0x01FC).
     pub fn el1004() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL1004.txt"));
         Device::from_sii(words, Self::terminal_esc(0x0050, 0x01FC, false))
@@ -156,7 +157,8 @@ impl Device {
     /// (EMULATOR-NOTES §8, §10): ethercrab reads its PDO assignment by SDO uploads (1C12 empty,
     /// 1C13 = 1A00/1A02/1A04/1A06) and gets 16 input bytes at 0x1180, per channel a status
     /// word and a 16-bit value. SII from capture \[C\] (words ethercrab never read are 0, or
-    /// erased after the SyncManager category); ESC registers as the EL1004's, which reports
+    /// erased after the SyncManager category: no PDO categories; strings 2-4 completed, see
+    /// `data/README.md`); ESC registers as the EL1004's, which reports
     /// the same features (0x01FC) and DL status (0x5613).
     pub fn el3004() -> Device {
         let words = sii::parse(include_str!("../data/sii-EL3004.txt"));
@@ -166,6 +168,31 @@ impl Device {
         d.coe_at_power_on = d.coe.clone();
         d.microcontroller = true;
         d
+    }
+
+    /// The order numbers of the modelled terminals, as [`Device::model`] takes them.
+    pub const MODELS: [&'static str; 6] =
+        ["EK1100", "EL1004", "EL2004", "EL2828", "EL2889", "EL3004"];
+
+    /// The model of order number `name` (case-insensitive: `"el1004"` is the EL1004), or
+    /// `None` for a terminal that is not modelled (see [`Device::MODELS`]).
+    ///
+    /// ```
+    /// use ethercat_sim::Device;
+    /// assert_eq!(Device::model("el3004").unwrap().name(), "EL3004");
+    /// assert!(Device::model("EL9999").is_none());
+    /// ```
+    pub fn model(name: &str) -> Option<Device> {
+        let make: fn() -> Device = match name.to_ascii_uppercase().as_str() {
+            "EK1100" => Device::ek1100,
+            "EL1004" => Device::el1004,
+            "EL2004" => Device::el2004,
+            "EL2828" => Device::el2828,
+            "EL2889" => Device::el2889,
+            "EL3004" => Device::el3004,
+            _ => return None,
+        };
+        Some(make())
     }
 
     /// The value of CoE object `index`:`sub` (None without a mailbox or for an unknown
@@ -553,6 +580,16 @@ impl Device {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_listed_model_is_found_by_its_name() {
+        for name in Device::MODELS {
+            assert_eq!(
+                Device::model(name).map(|d| d.name().to_owned()).as_deref(),
+                Some(name)
+            );
+        }
+    }
 
     #[test]
     fn models_have_the_real_names_and_identities() {

@@ -12,6 +12,8 @@
 //! plc import project.json -o src/gm.rs --struct Gm
 //! plc import --csv variables.csv -o src/gm.rs
 //! plc bus show bus/machine.toml     # the process image of a bus description
+//! plc bus scan --interface eth0 --out bus/machine.toml   # a description from the devices
+//! plc bus scan --sim EK1100,EL1004,EL2889                # the same on the simulated bus
 //! ```
 
 mod cmd;
@@ -123,6 +125,21 @@ enum BusCommand {
         /// The bus description (TOML, or JSON if the name ends in .json).
         file: PathBuf,
     },
+    /// A bus description read from the SubDevices themselves (identity, EEPROM, CoE PDO
+    /// mapping), printed as TOML or written to --out. The SubDevices go to PRE-OP and back to
+    /// INIT; nothing is switched to OP.
+    Scan {
+        /// The network interface of the bus (needs root or CAP_NET_RAW).
+        #[arg(long, required_unless_present = "sim", conflicts_with = "sim")]
+        interface: Option<String>,
+        /// Scan a simulated bus of these terminals instead, in ring order
+        /// (EK1100, EL1004, EL2004, EL2828, EL2889, EL3004).
+        #[arg(long, value_delimiter = ',')]
+        sim: Vec<String>,
+        /// Write the description to this file (replaced if it exists) instead of stdout.
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -167,6 +184,14 @@ fn main() -> ExitCode {
         Command::Bus {
             command: BusCommand::Show { file },
         } => cmd::bus::show(&file),
+        Command::Bus {
+            command:
+                BusCommand::Scan {
+                    interface,
+                    sim,
+                    out,
+                },
+        } => cmd::bus::scan(interface, &sim, out.as_deref()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

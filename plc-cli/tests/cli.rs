@@ -660,3 +660,64 @@ fn bus_show_prints_the_process_image_and_refuses_a_bad_file() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `plc bus scan --sim` scans a simulated bus in its own process: the TOML it prints is a bus
+/// description of those terminals that `BusConfig` reads, `--out` writes the same text (a
+/// symlink in its place is replaced, not followed) and `plc bus show` takes the file.
+#[test]
+fn bus_scan_of_a_simulated_bus_prints_a_description_that_reads_back() {
+    let o = plc(&["bus", "scan", "--sim", "EK1100,el1004,EL2889,EL2004"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let bus = plc_rules::bus::BusConfig::from_toml_str(&text).unwrap();
+    let names: Vec<_> = bus.devices.iter().map(|d| d.name.as_str()).collect();
+    assert_eq!(names, ["ek1100", "el1004", "el2889", "el2004"]);
+    assert_eq!(bus.devices[2].entries.len(), 16);
+    assert_eq!(bus.devices[1].identity.product, 0x03ec_3052);
+
+    let dir = std::env::temp_dir().join(format!("plc-bus-scan-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let elsewhere = dir.join("elsewhere.toml");
+    std::fs::write(&elsewhere, "keep me").unwrap();
+    let out = dir.join("scanned.toml");
+    std::os::unix::fs::symlink(&elsewhere, &out).unwrap();
+    let o = plc(&[
+        "bus",
+        "scan",
+        "--sim",
+        "EK1100,EL1004,EL2889,EL2004",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), text);
+    assert!(!std::fs::symlink_metadata(&out).unwrap().is_symlink());
+    assert_eq!(std::fs::read_to_string(&elsewhere).unwrap(), "keep me");
+    let o = plc(&["bus", "show", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = stdout(&o);
+    assert!(
+        table
+            .lines()
+            .any(|l| l.split_whitespace().collect::<Vec<_>>()
+                == ["2", "el2889", "output_16", "output", "1.7", "1", "BOOL"]),
+        "{table}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A terminal the simulator does not model, or no bus at all, is refused with what to write.
+#[test]
+fn bus_scan_refuses_an_unknown_terminal_and_a_missing_bus() {
+    let o = plc(&["bus", "scan", "--sim", "EK1100,EL9999"]);
+    assert!(!o.status.success());
+    let err = stderr(&o);
+    assert!(
+        err.contains("`EL9999` is not a simulated terminal")
+            && err.contains("EK1100, EL1004, EL2004, EL2828, EL2889, EL3004"),
+        "{err}"
+    );
+    let o = plc(&["bus", "scan"]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("--interface"), "{}", stderr(&o));
+}

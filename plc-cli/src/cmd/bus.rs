@@ -1,11 +1,91 @@
 //! `plc bus show FILE`: the resolved process image of a bus description, the table a
 //! commissioning engineer checks against the wiring: each device in ring order with each PDO
 //! entry's direction, place (byte and bit in the device's input or output data), width and type.
+//!
+//! `plc bus scan --interface IFACE | --sim MODELS [--out FILE]`: a bus description read from
+//! the SubDevices themselves (`plc_io::ethercat::scan`).
 
 use super::Error;
+use ethercat_sim::{Device, SimBus};
+use plc_io::ethercat::scan::scan as scan_bus;
+use plc_io::ethercat::{MAX_SUBDEVICES, Options, Transport};
 use plc_rules::bus::{BusConfig, BusLayout};
 use std::fmt::Write;
+use std::io::Write as _;
 use std::path::Path;
+
+pub fn scan(interface: Option<String>, sim: &[String], out: Option<&Path>) -> Result<(), Error> {
+    let (transport, options) = match interface {
+        Some(name) => (Transport::Interface(name), Options::default()),
+        None => (simulated(sim)?, Options::simulated()),
+    };
+    let text = scan_bus(transport, &options)?.to_toml();
+    match out {
+        None => print!("{text}"),
+        Some(path) => {
+            write_replacing(path, &text)
+                .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            eprintln!("plc: wrote {}", path.display());
+        }
+    }
+    Ok(())
+}
+
+/// The in-process simulated bus of the terminals named in `models`, in ring order.
+fn simulated(models: &[String]) -> Result<Transport, Error> {
+    if models.is_empty() {
+        return Err("--sim needs the terminals in ring order, e.g. --sim EK1100,EL1004".into());
+    }
+    if models.len() > MAX_SUBDEVICES {
+        return Err(format!(
+            "--sim lists {} terminals, more than the {MAX_SUBDEVICES} a bus holds",
+            models.len()
+        )
+        .into());
+    }
+    let devices = models
+        .iter()
+        .map(|m| {
+            Device::model(m.trim()).ok_or_else(|| {
+                format!(
+                    "--sim: `{m}` is not a simulated terminal (there are {})",
+                    Device::MODELS.join(", ")
+                )
+            })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let bus = SimBus::new(devices);
+    Ok(Transport::custom(move |tx, rx| {
+        Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?))
+    }))
+}
+
+/// Writes `text` to `path` through a new temporary file beside it, renamed over `path`: a
+/// reader never sees half a file, and a symlink at `path` is replaced, not followed.
+fn write_replacing(path: &Path, text: &str) -> std::io::Result<()> {
+    use std::os::unix::fs::OpenOptionsExt;
+    let name = path
+        .file_name()
+        .ok_or_else(|| std::io::Error::other("the path names no file"))?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(name);
+    tmp_name.push(format!(".{}.tmp", std::process::id()));
+    let tmp = path.with_file_name(tmp_name);
+    let written = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .custom_flags(libc::O_NOFOLLOW)
+        .open(&tmp)
+        .and_then(|mut f| {
+            f.write_all(text.as_bytes())?;
+            f.sync_all()
+        })
+        .and_then(|()| std::fs::rename(&tmp, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
+}
 
 pub fn show(file: &Path) -> Result<(), Error> {
     let bus = BusConfig::load(file)?;

@@ -18,6 +18,8 @@
 //!    `ethercat-sim` ([`Transport::custom`]). Settings are [`Options`], failures to start
 //!    [`EtherCatError`].
 //!
+//! [`scan`] reads a bus description from the SubDevices themselves, for commissioning.
+//!
 //! ```
 //! use plc_io::ethercat::{devices, layout::BusLayout, resolve, BusConfig, PdoDirection};
 //! use plc_core::IecType;
@@ -52,6 +54,7 @@ mod options;
 mod process_data;
 mod recovery;
 pub mod resolve;
+pub mod scan;
 mod startup;
 mod status;
 mod transport;

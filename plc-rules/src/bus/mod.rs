@@ -4,6 +4,10 @@
 //! ethercrab 0.7 tells the names of neither PDOs nor PDO entries (ethercrab issues #215/#228),
 //! and ESI files repeat names ("Output" eight times), so the description names every entry
 //! itself, as a configurator would. The file is TOML or JSON; see [`BusConfig`].
+//!
+//! A description can also be made from the SubDevices themselves (`plc bus scan`): [`sii`]
+//! parses what a SubDevice's EEPROM holds, [`scan`] turns what was read into a description
+//! with the names of [`naming`], and [`scan_file`] writes it as commented TOML.
 
 use crate::IecType;
 use serde::{Deserialize, Serialize};
@@ -15,6 +19,10 @@ pub mod devices;
 mod hex;
 pub mod layout;
 pub mod links;
+pub mod naming;
+pub mod scan;
+pub mod scan_file;
+pub mod sii;
 mod validate;
 
 pub use layout::{BusLayout, EntryLayout, LayoutError};
