@@ -321,3 +321,171 @@ fn segment_end(text: &str, start: usize, name_len: usize) -> usize {
         after_name
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::access::{Access, Direction};
+    use proptest::prelude::*;
+    use std::string::{String, ToString};
+    use std::vec::Vec;
+    use std::{format, vec};
+
+    #[derive(Clone, Debug)]
+    struct V {
+        name: String,
+        dims: Vec<usize>,
+        offset: usize,
+        size: usize,
+        members: Vec<V>,
+        access: Access,
+    }
+
+    impl Node for V {
+        fn name(&self) -> &str {
+            &self.name
+        }
+        fn dims(&self) -> &[usize] {
+            &self.dims
+        }
+        fn offset(&self) -> usize {
+            self.offset
+        }
+        fn size(&self) -> usize {
+            self.size
+        }
+        fn members(&self) -> &[V] {
+            &self.members
+        }
+        fn access(&self) -> Access {
+            self.access
+        }
+        fn direction(&self) -> Direction {
+            Direction::Internal
+        }
+    }
+
+    /// Lays out members one after the other from `shapes` (name, dims, scalar bytes or
+    /// nested members), as the derive does.
+    fn lay_out(vars: &mut [V]) -> usize {
+        let mut at = 0;
+        for v in vars.iter_mut() {
+            let element = if v.members.is_empty() {
+                v.size
+            } else {
+                lay_out(&mut v.members)
+            };
+            v.offset = at;
+            v.size = element * crate::access::elements(&v.dims);
+            at += v.size;
+        }
+        at
+    }
+
+    fn scalar(name: &str, bytes: usize) -> V {
+        V {
+            name: name.to_string(),
+            dims: vec![],
+            offset: 0,
+            size: bytes,
+            members: vec![],
+            access: Access::ReadWrite,
+        }
+    }
+
+    fn every_path(v: &V, prefix: String, out: &mut Vec<String>) {
+        let elements = crate::access::elements(&v.dims);
+        for e in 0..elements {
+            let at = if v.dims.is_empty() {
+                prefix.clone()
+            } else {
+                format!("{prefix}[{e}]")
+            };
+            if v.members.is_empty() {
+                out.push(at);
+            } else {
+                for m in &v.members {
+                    every_path(m, format!("{at}.{}", m.name), out);
+                }
+            }
+        }
+    }
+
+    fn tree() -> impl Strategy<Value = Vec<V>> {
+        let leaf = (1usize..9, proptest::collection::vec(1usize..4, 0..3))
+            .prop_map(|(bytes, dims)| V { dims, ..scalar("x", bytes) });
+        let node = leaf.prop_recursive(3, 24, 4, |inner| {
+            (
+                proptest::collection::vec(inner, 1..4),
+                proptest::collection::vec(1usize..3, 0..2),
+            )
+                .prop_map(|(members, dims)| V {
+                    dims,
+                    members,
+                    ..scalar("s", 0)
+                })
+        });
+        proptest::collection::vec(node, 1..4)
+    }
+
+    /// Unique names per level, as the rules require.
+    fn name_all(vars: &mut [V]) {
+        for (i, v) in vars.iter_mut().enumerate() {
+            v.name = format!("m{i}");
+            name_all(&mut v.members);
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn locate_and_leaf_agree_on_every_value(mut vars in tree()) {
+            name_all(&mut vars);
+            let size = lay_out(&mut vars);
+            for (index, v) in vars.iter().enumerate() {
+                let mut paths = Vec::new();
+                every_path(v, v.name.clone(), &mut paths);
+                prop_assert_eq!(paths.len(), leaves(v));
+                let mut last_end = v.offset;
+                for (n, path) in paths.iter().enumerate() {
+                    let f = locate(&vars, path).unwrap();
+                    prop_assert_eq!((f.index, f.leaf), (index, n), "{}", path);
+                    let back = leaf(&vars, index, n).unwrap();
+                    prop_assert_eq!(back.offset, f.offset, "{}", path);
+                    prop_assert_eq!(back.node.name(), f.node.name());
+                    // Values follow one another in the image, without gaps or overlap.
+                    let elements = crate::access::elements(f.node.dims()).max(1);
+                    prop_assert_eq!(f.offset, last_end, "{}", path);
+                    last_end = f.offset + f.node.size() / elements;
+                    prop_assert!(last_end <= size);
+                }
+                prop_assert!(leaf(&vars, index, paths.len()).is_none());
+            }
+        }
+    }
+
+    #[test]
+    fn errors_name_the_place() {
+        let mut axis = V {
+            dims: vec![2],
+            members: vec![scalar("pos", 8), V { access: Access::ReadOnly, ..scalar("id", 2) }],
+            ..scalar("axes", 0)
+        };
+        axis.members[0].dims = vec![];
+        let mut vars = vec![scalar("speed", 4), axis];
+        lay_out(&mut vars);
+        let err = |p: &'static str| locate(&vars, p).unwrap_err().to_string();
+        assert_eq!(err("nope"), "no variable `nope`");
+        assert_eq!(err("axes[0].nope"), "`axes[0]` has no member `nope`");
+        assert_eq!(err("axes[2].pos"), "`axes[2]`: index 2 is out of range 0..2");
+        assert_eq!(err("axes"), "`axes` is an array: name one element, such as `axes[0]`");
+        assert_eq!(
+            err("axes[1]"),
+            "`axes[1]` is a structure: name one of its members, such as `axes[1].<member>`"
+        );
+        assert_eq!(err("speed.x"), "`speed` is not a structure: it has no members");
+        assert_eq!(err("speed[0]"), "`speed[0]`: not an array: remove the index");
+        assert!(err("axes[0]..pos").starts_with("not a path"));
+        assert!(!locate(&vars, "axes[1].id").unwrap().writable);
+        assert!(locate(&vars, "AXES[1].POS").unwrap().writable);
+    }
+}
