@@ -286,3 +286,92 @@ impl LayoutDescriptor {
             .position(|v| v.name.eq_ignore_ascii_case(name))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn var(name: &str, offset: usize, size: usize) -> VarDescriptor {
+        VarDescriptor {
+            name: name.into(),
+            iec_type: IecType::Udint,
+            rust_type: "u32".into(),
+            offset,
+            size,
+            dims: vec![],
+            bit: None,
+            link: None,
+            address: None,
+            description: String::new(),
+            initial: None,
+            nonvolatile: false,
+            access: Access::ReadWrite,
+            direction: Direction::Internal,
+            ux: false,
+            quantity: None,
+            type_name: None,
+            members: vec![],
+        }
+    }
+
+    fn structure(name: &str, offset: usize, members: Vec<VarDescriptor>) -> VarDescriptor {
+        let size = members.iter().map(|m| m.offset + m.size).max().unwrap_or(0);
+        VarDescriptor {
+            iec_type: IecType::Byte,
+            type_name: Some("S".into()),
+            members,
+            ..var(name, offset, size)
+        }
+    }
+
+    fn descriptor(variables: Vec<VarDescriptor>, image_size: usize) -> LayoutDescriptor {
+        LayoutDescriptor {
+            format_version: plc_rules::layout::FORMAT_VERSION,
+            layout_hash: 0,
+            image_size,
+            variables,
+        }
+    }
+
+    #[test]
+    fn a_structure_s_members_must_lie_inside_one_element_and_nest_at_most_8_deep() {
+        let good = structure("s", 0, vec![var("a", 0, 4), var("b", 4, 4)]);
+        assert_eq!(descriptor(vec![good.clone()], 8).check_variables(), Ok(()));
+
+        let mut outside = good.clone();
+        outside.members[1].offset = 6;
+        let e = descriptor(vec![outside], 8).check_variables().unwrap_err();
+        assert!(
+            e.contains("in `s`") && e.contains("one element of its structure"),
+            "{e}"
+        );
+
+        let mut nameless = good.clone();
+        nameless.type_name = None;
+        let e = descriptor(vec![nameless], 8).check_variables().unwrap_err();
+        assert!(e.contains("type name"), "{e}");
+
+        let mut deep = var("leaf", 0, 4);
+        for level in 0..9 {
+            deep = structure(&format!("l{level}"), 0, vec![deep]);
+        }
+        let e = descriptor(vec![deep.clone()], 4)
+            .check_variables()
+            .unwrap_err();
+        assert!(e.contains("more than 8 levels"), "{e}");
+        // Eight levels are fine.
+        let eight = deep.members.remove(0);
+        assert_eq!(descriptor(vec![eight], 4).check_variables(), Ok(()));
+    }
+
+    #[test]
+    fn the_hash_covers_members_and_type_names() {
+        let a = descriptor(vec![structure("s", 0, vec![var("a", 0, 4)])], 4);
+        let mut b = a.clone();
+        b.variables[0].members[0].name = "b".into();
+        let mut c = a.clone();
+        c.variables[0].type_name = Some("T".into());
+        assert_ne!(a.computed_hash(), b.computed_hash());
+        assert_ne!(a.computed_hash(), c.computed_hash());
+    }
+}

@@ -412,8 +412,11 @@ mod tests {
     }
 
     fn tree() -> impl Strategy<Value = Vec<V>> {
-        let leaf = (1usize..9, proptest::collection::vec(1usize..4, 0..3))
-            .prop_map(|(bytes, dims)| V { dims, ..scalar("x", bytes) });
+        let leaf =
+            (1usize..9, proptest::collection::vec(1usize..4, 0..3)).prop_map(|(bytes, dims)| V {
+                dims,
+                ..scalar("x", bytes)
+            });
         let node = leaf.prop_recursive(3, 24, 4, |inner| {
             (
                 proptest::collection::vec(inner, 1..4),
@@ -467,7 +470,13 @@ mod tests {
     fn errors_name_the_place() {
         let mut axis = V {
             dims: vec![2],
-            members: vec![scalar("pos", 8), V { access: Access::ReadOnly, ..scalar("id", 2) }],
+            members: vec![
+                scalar("pos", 8),
+                V {
+                    access: Access::ReadOnly,
+                    ..scalar("id", 2)
+                },
+            ],
             ..scalar("axes", 0)
         };
         axis.members[0].dims = vec![];
@@ -476,14 +485,26 @@ mod tests {
         let err = |p: &'static str| locate(&vars, p).unwrap_err().to_string();
         assert_eq!(err("nope"), "no variable `nope`");
         assert_eq!(err("axes[0].nope"), "`axes[0]` has no member `nope`");
-        assert_eq!(err("axes[2].pos"), "`axes[2]`: index 2 is out of range 0..2");
-        assert_eq!(err("axes"), "`axes` is an array: name one element, such as `axes[0]`");
+        assert_eq!(
+            err("axes[2].pos"),
+            "`axes[2]`: index 2 is out of range 0..2"
+        );
+        assert_eq!(
+            err("axes"),
+            "`axes` is an array: name one element, such as `axes[0]`"
+        );
         assert_eq!(
             err("axes[1]"),
             "`axes[1]` is a structure: name one of its members, such as `axes[1].<member>`"
         );
-        assert_eq!(err("speed.x"), "`speed` is not a structure: it has no members");
-        assert_eq!(err("speed[0]"), "`speed[0]`: not an array: remove the index");
+        assert_eq!(
+            err("speed.x"),
+            "`speed` is not a structure: it has no members"
+        );
+        assert_eq!(
+            err("speed[0]"),
+            "`speed[0]`: not an array: remove the index"
+        );
         assert!(err("axes[0]..pos").starts_with("not a path"));
         assert!(!locate(&vars, "axes[1].id").unwrap().writable);
         assert!(locate(&vars, "AXES[1].POS").unwrap().writable);
