@@ -6,6 +6,25 @@ use crate::ast::Container;
 use proc_macro2::TokenStream;
 use quote::quote;
 
+/// After field `i` changed: a bit-mapped bool updates its bit of the source word, a source
+/// word its bools.
+pub fn after_set(c: &Container, i: usize) -> TokenStream {
+    let p = private(c);
+    let v = &c.vars[i];
+    let ident = v.ident;
+    let to_source = v.mapped_to.map(|(s, bit)| {
+        let src = c.vars[s].ident;
+        let bit = bit as u32;
+        quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#ident));)
+    });
+    let to_bools = mapped_onto(c, i).map(|(b, bit)| {
+        let b = b.ident;
+        let bit = bit as u32;
+        quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#ident, #bit));)
+    });
+    quote!(#to_source #(#to_bools)*)
+}
+
 pub fn expand(c: &Container) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
@@ -15,17 +34,7 @@ pub fn expand(c: &Container) -> TokenStream {
     });
     let sets = c.fields().enumerate().map(|(i, (v, m))| {
         let (ident, name) = (v.ident, &m.name.value);
-        // After the value changed: a bool updates its bit, a source word its bools.
-        let to_source = v.mapped_to.map(|(s, bit)| {
-            let src = c.vars[s].ident;
-            let bit = bit as u32;
-            quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#ident));)
-        });
-        let to_bools = mapped_onto(c, i).map(|(b, bit)| {
-            let b = b.ident;
-            let bit = bit as u32;
-            quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#ident, #bit));)
-        });
+        let bits = after_set(c, i);
         quote! {
             #i => {
                 #p::set_field(
@@ -35,8 +44,7 @@ pub fn expand(c: &Container) -> TokenStream {
                     element,
                     value,
                 )?;
-                #to_source
-                #(#to_bools)*
+                #bits
                 ::core::result::Result::Ok(())
             }
         }

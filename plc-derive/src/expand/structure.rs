@@ -4,7 +4,7 @@
 //! Its basic values are numbered by leaves (`PlcType::LEAVES`): each member's in turn, which
 //! is how `get`, `set`, the mailbox and paths reach every member.
 
-use super::{image_ident, mapped_onto, private};
+use super::{image_ident, private};
 use crate::ast::Container;
 use crate::expand::metadata;
 use proc_macro2::{Literal, TokenStream};
@@ -149,16 +149,7 @@ fn leaf_set(c: &Container) -> TokenStream {
         .enumerate()
         .map(|(i, v)| {
             let (ident, ty) = (v.ident, v.ty);
-            let to_source = v.mapped_to.map(|(s, bit)| {
-                let src = c.vars[s].ident;
-                let bit = bit as u32;
-                quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#ident));)
-            });
-            let to_bools = mapped_onto(c, i).map(|(b, bit)| {
-                let b = b.ident;
-                let bit = bit as u32;
-                quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#ident, #bit));)
-            });
+            let bits = super::access::after_set(c, i);
             quote! {
                 if leaf < <#ty as #p::PlcType>::LEAVES {
                     <#ty as #p::PlcType>::set_element(
@@ -167,8 +158,7 @@ fn leaf_set(c: &Container) -> TokenStream {
                         value,
                         <Self as #p::PlcType>::MEMBERS[#i].iec_type,
                     )?;
-                    #to_source
-                    #(#to_bools)*
+                    #bits
                     return ::core::result::Result::Ok(());
                 }
                 leaf -= <#ty as #p::PlcType>::LEAVES;

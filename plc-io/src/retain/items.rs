@@ -50,7 +50,7 @@ fn walk(v: &'static VarInfo, path: String, index: usize, first: usize, out: &mut
         let at = if v.dims.is_empty() {
             path.clone()
         } else {
-            format!("{path}[{}]", coordinates(element, v.dims))
+            format!("{path}[{}]", plc_rules::path::coordinates(element, v.dims))
         };
         let mut leaf = base;
         for m in v.members() {
@@ -58,17 +58,4 @@ fn walk(v: &'static VarInfo, path: String, index: usize, first: usize, out: &mut
             leaf += m.leaves();
         }
     }
-}
-
-/// The coordinates of row-major element `flat` of an array of `dims`, as `1,2`.
-fn coordinates(mut flat: usize, dims: &[usize]) -> String {
-    let mut c = vec![0; dims.len()];
-    for (slot, d) in c.iter_mut().zip(dims).rev() {
-        *slot = flat % d;
-        flat /= d;
-    }
-    c.iter()
-        .map(|x| x.to_string())
-        .collect::<Vec<_>>()
-        .join(",")
 }

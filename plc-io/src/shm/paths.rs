@@ -43,9 +43,9 @@ impl DynSegment {
             Ok(_) => return self.locate(text).map(|at| PathTarget::Value(Box::new(at))),
             Err(plc_rules::path::LocateError::WholeArray { at }) if at == text => {
                 if let Some(node) = self.node_at(text) {
-                    let children = coordinates(&node.dims)
-                        .into_iter()
-                        .map(|c| format!("{text}[{c}]"))
+                    let elements = plc_rules::access::elements(&node.dims);
+                    let children = (0..elements)
+                        .map(|e| format!("{text}[{}]", plc_rules::path::coordinates(e, &node.dims)))
                         .collect();
                     return Ok(PathTarget::Group(children));
                 }
@@ -128,23 +128,4 @@ impl DynSegment {
                 error,
             })
     }
-}
-
-/// Every coordinate of an array, row-major, as `1,2`. Bounded by the array's elements, which
-/// the descriptor check keeps within the image.
-fn coordinates(dims: &[usize]) -> Vec<String> {
-    let total = plc_rules::access::elements(dims);
-    (0..total)
-        .map(|mut flat| {
-            let mut c = vec![0; dims.len()];
-            for (slot, d) in c.iter_mut().zip(dims).rev() {
-                *slot = flat % d;
-                flat /= d;
-            }
-            c.iter()
-                .map(|x| x.to_string())
-                .collect::<Vec<_>>()
-                .join(",")
-        })
-        .collect()
 }

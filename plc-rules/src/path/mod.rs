@@ -159,6 +159,26 @@ impl fmt::Display for PathError {
 #[cfg(feature = "std")]
 impl std::error::Error for PathError {}
 
+/// The coordinates of row-major element `flat` of an array of `dims`, as a path writes them
+/// (`1,2`): how tools name each element of an array of structures.
+///
+/// ```
+/// assert_eq!(plc_rules::path::coordinates(5, &[2, 3]), "1,2");
+/// ```
+#[cfg(feature = "std")]
+pub fn coordinates(mut flat: usize, dims: &[usize]) -> std::string::String {
+    use std::string::ToString;
+    let mut c = std::vec![0; dims.len()];
+    for (slot, &d) in c.iter_mut().zip(dims).rev() {
+        *slot = flat % d.max(1);
+        flat /= d.max(1);
+    }
+    c.iter()
+        .map(|x| x.to_string())
+        .collect::<std::vec::Vec<_>>()
+        .join(",")
+}
+
 /// The segments of `path`, front to back; the first error ends them.
 pub fn segments(path: &str) -> Segments<'_> {
     Segments {
