@@ -9,6 +9,7 @@
 //! - [`address`]: IEC 61131-3 direct addresses such as `%IX100.4`.
 //! - [`capacity`]: the limits on strings and arrays.
 //! - [`layout`]: the layout hash that lets a reader detect a changed declaration.
+//! - [`time`]: [`Time`] (`LTIME`) and the IEC duration literal grammar (`T#1s500ms`).
 //!
 //! ```
 //! use plc_rules::{IecType, widening::can_widen};
@@ -30,6 +31,7 @@ mod iec_type;
 pub mod layout;
 pub mod link;
 pub mod names;
+pub mod time;
 pub mod widening;
 
 pub use access::{Access, Direction};
@@ -37,4 +39,5 @@ pub use address::{AddressError, AddressErrorKind, Area, IecAddress, Size};
 pub use iec_type::{IecType, TypeFamily, UnknownType};
 pub use link::{Link, LinkError};
 pub use names::NameError;
+pub use time::{Time, TimeError};
 pub use widening::WideningOptions;
