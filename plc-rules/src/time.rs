@@ -289,7 +289,10 @@ impl fmt::Display for TimeError {
                              parts of a number and a unit (d, h, m, s, ms, us, ns), such as \
                              T#1h_30m or LTIME#-2.5s";
         match *self {
-            TimeError::NoPrefix => write!(f, "not a duration literal: {PARTS}"),
+            TimeError::NoPrefix => f.write_str(
+                "a duration starts with T#, TIME#, LT# or LTIME#, such as T#1h_30m or \
+                 LTIME#-2.5s",
+            ),
             TimeError::Empty => write!(f, "no duration after `#`: {PARTS}"),
             TimeError::Unexpected { at } => {
                 write!(f, "unexpected character at byte {at}: {PARTS}")

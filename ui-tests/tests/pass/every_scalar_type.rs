@@ -23,7 +23,7 @@ pub struct Gm {
     o: u64,
     p: FixedString<1>,
     q: FixedString<255>,
-    r: Time,
+    dwell: Time,
 }
 
 fn main() {
