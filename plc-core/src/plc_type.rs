@@ -554,11 +554,7 @@ mod tests {
             .set_element(1, Value::Time(Time::from_secs(5)), IecType::Ltime)
             .unwrap();
         assert_eq!(times.get_element(1), Some(Value::Time(Time::from_secs(5))));
-        assert!(
-            times
-                .set_element(0, Value::Int(5), IecType::Ltime)
-                .is_err()
-        );
+        assert!(times.set_element(0, Value::Int(5), IecType::Ltime).is_err());
         assert_eq!(<Time as PlcType>::IEC_TYPE, IecType::Ltime);
     }
 

@@ -86,12 +86,9 @@ impl fmt::Display for ValueError {
             }
             ValueError::OutOfRange { expected } => match expected.int_range() {
                 Some((lo, hi)) => write!(f, "out of range for {expected} ({lo}..={hi})"),
-                None if expected == IecType::Ltime => write!(
-                    f,
-                    "out of range for LTIME ({}..={})",
-                    Time::MIN,
-                    Time::MAX
-                ),
+                None if expected == IecType::Ltime => {
+                    write!(f, "out of range for LTIME ({}..={})", Time::MIN, Time::MAX)
+                }
                 None => write!(f, "out of range for {expected}"),
             },
             ValueError::TooLong { len, capacity } => write!(
@@ -468,9 +465,17 @@ mod tests {
                 expected: IecType::Ltime
             }
         );
-        assert!(overflow.to_string().contains("LTIME#106751d23h"), "{overflow}");
-        let order = Value::parse("T#1s1m", IecType::Ltime).unwrap_err().to_string();
-        assert!(order.starts_with("expected an LTIME: `m` comes after `s`"), "{order}");
+        assert!(
+            overflow.to_string().contains("LTIME#106751d23h"),
+            "{overflow}"
+        );
+        let order = Value::parse("T#1s1m", IecType::Ltime)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            order.starts_with("expected an LTIME: `m` comes after `s`"),
+            "{order}"
+        );
         assert_eq!(
             Value::Int(5).fit(IecType::Ltime, 0),
             Err(ValueError::WrongKind {

@@ -73,9 +73,15 @@ fn ton_delays_a_long_pulse_and_ignores_a_short_one() {
 fn ton_compares_with_the_current_pt() {
     let mut delay = Ton::default();
     assert!(!delay.call(ms(0), true, ms(100)));
-    assert!(!delay.call(ms(80), true, ms(200)), "raised while running: later");
+    assert!(
+        !delay.call(ms(80), true, ms(200)),
+        "raised while running: later"
+    );
     assert!(!delay.call(ms(150), true, ms(200)));
-    assert!(delay.call(ms(160), true, ms(120)), "lowered below ET: at once");
+    assert!(
+        delay.call(ms(160), true, ms(120)),
+        "lowered below ET: at once"
+    );
     assert_eq!(delay.ET, ms(120));
     // Once Q is TRUE, a longer PT does not take it back; ET follows PT.
     assert!(delay.call(ms(170), true, ms(500)));
@@ -142,10 +148,19 @@ fn tof_compares_with_the_current_pt_and_zero_acts_at_once() {
     let mut run_on = Tof::default();
     run_on.call(ms(0), true, ms(100));
     assert!(run_on.call(ms(10), false, ms(100)));
-    assert!(run_on.call(ms(90), false, ms(300)), "raised while running: later");
-    assert!(!run_on.call(ms(100), false, ms(50)), "lowered below ET: at once");
+    assert!(
+        run_on.call(ms(90), false, ms(300)),
+        "raised while running: later"
+    );
+    assert!(
+        !run_on.call(ms(100), false, ms(50)),
+        "lowered below ET: at once"
+    );
     assert_eq!(run_on.ET, ms(50));
-    assert!(!run_on.call(ms(110), false, ms(1000)), "a longer PT does not set Q again");
+    assert!(
+        !run_on.call(ms(110), false, ms(1000)),
+        "a longer PT does not set Q again"
+    );
     for pt in [0, -1] {
         let mut fb = Tof::default();
         assert!(fb.call(ms(0), true, ms(pt)));
@@ -193,8 +208,14 @@ fn tp_gives_pulses_of_pt_that_retriggering_does_not_restart() {
 fn tp_compares_with_the_current_pt_and_zero_gives_no_pulse() {
     let mut pulse = Tp::default();
     assert!(pulse.call(ms(0), true, ms(100)));
-    assert!(pulse.call(ms(90), true, ms(200)), "lengthened while running");
-    assert!(!pulse.call(ms(150), true, ms(120)), "shortened below ET: ends at once");
+    assert!(
+        pulse.call(ms(90), true, ms(200)),
+        "lengthened while running"
+    );
+    assert!(
+        !pulse.call(ms(150), true, ms(120)),
+        "shortened below ET: ends at once"
+    );
     assert_eq!(pulse.ET, ms(120));
     for pt in [0, -10] {
         let mut fb = Tp::default();
@@ -206,12 +227,18 @@ fn tp_compares_with_the_current_pt_and_zero_gives_no_pulse() {
 #[test]
 fn r_trig_on_the_first_cycle_sees_an_edge_f_trig_does_not() {
     let mut rising = RTrig::default();
-    assert!(rising.call(true), "CLK TRUE at the first call is a rising edge");
+    assert!(
+        rising.call(true),
+        "CLK TRUE at the first call is a rising edge"
+    );
     assert!(!rising.call(true));
     let mut quiet = RTrig::default();
     assert!(!quiet.call(false));
     let mut falling = FTrig::default();
-    assert!(!falling.call(false), "CLK FALSE at the first call is no falling edge");
+    assert!(
+        !falling.call(false),
+        "CLK FALSE at the first call is no falling edge"
+    );
     let mut held = FTrig::default();
     assert!(!held.call(true));
     assert!(held.call(false));
@@ -282,9 +309,17 @@ fn ctud_r_before_ld_before_counting_and_edges_together_cancel() {
     assert_eq!(c.call(false, false, false, false, 2), (false, false));
     assert_eq!(c.call(true, true, false, false, 2), (false, false));
     assert_eq!(c.CV, 1, "rising edges of CU and CD together cancel");
-    assert_eq!(c.call(false, false, false, true, 2), (true, false), "LD loads PV");
+    assert_eq!(
+        c.call(false, false, false, true, 2),
+        (true, false),
+        "LD loads PV"
+    );
     assert_eq!(c.CV, 2);
-    assert_eq!(c.call(true, false, true, true, 2), (false, true), "R wins over LD");
+    assert_eq!(
+        c.call(true, false, true, true, 2),
+        (false, true),
+        "R wins over LD"
+    );
     assert_eq!(c.CV, 0);
     // CD's edge alone counts down, below 0.
     c.call(false, false, false, false, 2);

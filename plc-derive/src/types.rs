@@ -196,7 +196,11 @@ mod tests {
         for src in ["Time", "plc_core::Time", "::plc_core::Time", "[Time; 3]"] {
             assert_eq!(known(src).iec, IecType::Ltime, "{src}");
         }
-        for other in ["std::time::Duration", "chrono::Time", "plc_core::time::Time"] {
+        for other in [
+            "std::time::Duration",
+            "chrono::Time",
+            "plc_core::time::Time",
+        ] {
             assert_eq!(
                 analyse(&syn::parse_str(other).unwrap()),
                 SynType::Unknown,

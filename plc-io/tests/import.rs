@@ -662,7 +662,11 @@ fn durations_are_ltime_with_literal_initials_and_time_is_refused_with_the_fix() 
         &Options::default(),
     )
     .unwrap();
-    assert!(g.code.contains("use plc_core::{GlobalMemory, Time};"), "{}", g.code);
+    assert!(
+        g.code.contains("use plc_core::{GlobalMemory, Time};"),
+        "{}",
+        g.code
+    );
     assert!(g.code.contains("pub dwell: Time,"), "{}", g.code);
     assert!(g.code.contains("pub steps: [Time; 2],"), "{}", g.code);
     assert!(g.code.contains("initial = \"T#1m30s\""), "{}", g.code);
@@ -682,6 +686,12 @@ fn durations_are_ltime_with_literal_initials_and_time_is_refused_with_the_fix() 
         e[2].contains("variables.c.initial: \"T#106752d\" is out of range for LTIME (Time holds LTIME#-106751d23h47m16s854ms775us808ns..=LTIME#106751d23h47m16s854ms775us807ns)"),
         "{e:?}"
     );
-    assert!(e[3].contains("variables.d.type: unknown type \"TIME\""), "{e:?}");
-    assert!(e[3].contains("a duration is LTIME, 64-bit nanoseconds"), "{e:?}");
+    assert!(
+        e[3].contains("variables.d.type: unknown type \"TIME\""),
+        "{e:?}"
+    );
+    assert!(
+        e[3].contains("a duration is LTIME, 64-bit nanoseconds"),
+        "{e:?}"
+    );
 }

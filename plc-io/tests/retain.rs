@@ -358,7 +358,10 @@ fn durations_are_kept_as_literals_to_the_nanosecond() {
     assert_eq!(gm, saved);
     let mut retyped = DurationsRetyped::default();
     let report = store.load(&mut retyped).unwrap();
-    assert_eq!(retyped.dwell, 7, "LTIME does not widen to LINT: initial kept");
+    assert_eq!(
+        retyped.dwell, 7,
+        "LTIME does not widen to LINT: initial kept"
+    );
     assert_eq!(retyped.steps, saved.steps);
     assert_eq!(report.reset.len(), 1, "{:?}", report.reset);
 }

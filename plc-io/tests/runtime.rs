@@ -270,7 +270,9 @@ fn now_is_the_cycles_start_the_same_through_a_tick_and_never_going_back() {
             let at_start = ctx.now();
             std::thread::sleep(Duration::from_micros(300));
             assert_eq!(ctx.now(), at_start, "one instant through the tick");
-            if delay.call(at_start, true, plc_core::Time::from_millis(10)) && delay_done_at.is_none() {
+            if delay.call(at_start, true, plc_core::Time::from_millis(10))
+                && delay_done_at.is_none()
+            {
                 delay_done_at = Some(at_start);
             }
             seen.push(at_start);

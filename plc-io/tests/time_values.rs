@@ -67,10 +67,19 @@ fn a_tool_reads_and_writes_durations_of_a_running_program() {
     wait_for(Duration::from_secs(5), || {
         (seg.read("settled").ok()? == Value::Bool(true)).then_some(())
     });
-    assert_eq!(seg.read("settle_elapsed").unwrap(), Value::Time(Time::from_millis(10)));
-    assert!(seg.write("settle_time", Value::Int(10)).is_err(), "a bare number is refused");
+    assert_eq!(
+        seg.read("settle_elapsed").unwrap(),
+        Value::Time(Time::from_millis(10))
+    );
+    assert!(
+        seg.write("settle_time", Value::Int(10)).is_err(),
+        "a bare number is refused"
+    );
     stop.stop();
     let gm = program.join().unwrap();
     assert_eq!(gm.settle_time, Time::from_millis(10));
-    assert_eq!(LayoutDescriptor::of::<Gm>().variables[2].iec_type, IecType::Ltime);
+    assert_eq!(
+        LayoutDescriptor::of::<Gm>().variables[2].iec_type,
+        IecType::Ltime
+    );
 }

@@ -158,9 +158,7 @@ impl IecType {
             IecType::Sint | IecType::Usint | IecType::Byte => 8,
             IecType::Int | IecType::Uint | IecType::Word => 16,
             IecType::Dint | IecType::Udint | IecType::Dword | IecType::Real => 32,
-            IecType::Lint | IecType::Ulint | IecType::Lword | IecType::Lreal | IecType::Ltime => {
-                64
-            }
+            IecType::Lint | IecType::Ulint | IecType::Lword | IecType::Lreal | IecType::Ltime => 64,
             IecType::String => 0,
         }
     }
@@ -403,7 +401,10 @@ mod tests {
         assert_eq!("ltime".parse::<IecType>(), Ok(IecType::Ltime));
         assert_eq!(IecType::from_rust_name("Time"), Some(IecType::Ltime));
         assert_eq!(IecType::Ltime.family(), TypeFamily::Time);
-        assert_eq!((IecType::Ltime.bits(), IecType::Ltime.image_size()), (64, 8));
+        assert_eq!(
+            (IecType::Ltime.bits(), IecType::Ltime.image_size()),
+            (64, 8)
+        );
         assert_eq!(IecType::Ltime.int_range(), None);
         assert!(!IecType::Ltime.same_storage(IecType::Lint));
         assert_eq!("".parse::<IecType>(), Err(UnknownType));

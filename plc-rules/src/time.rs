@@ -557,7 +557,9 @@ mod tests {
 
     #[test]
     fn every_prefix_in_any_case() {
-        for prefix in ["T#", "t#", "TIME#", "time#", "LT#", "lt#", "LTIME#", "LTime#"] {
+        for prefix in [
+            "T#", "t#", "TIME#", "time#", "LT#", "lt#", "LTIME#", "LTime#",
+        ] {
             assert_eq!(Time::parse(&std::format!("{prefix}1s500ms")), ms(1500));
         }
         for bad in ["1s", "#1s", "D#1s", "TOD#1s", "LTIMES#1s", "T1s", " T#1s"] {
@@ -577,14 +579,21 @@ mod tests {
             ))
         );
         assert_eq!(Time::parse("T#1H_2M_3S"), Ok(Time::from_secs(3723)));
-        assert_eq!(Time::parse("T#1MS"), ms(1), "ms is one unit, not minutes and s");
+        assert_eq!(
+            Time::parse("T#1MS"),
+            ms(1),
+            "ms is one unit, not minutes and s"
+        );
         assert_eq!(Time::parse("T#-0s"), Ok(Time::ZERO));
     }
 
     #[test]
     fn only_the_first_part_may_exceed_its_unit() {
         assert_eq!(Time::parse("T#90m"), Ok(Time::from_secs(5400)));
-        assert_eq!(Time::parse("T#25h_15m"), Ok(Time::from_secs(25 * 3600 + 900)));
+        assert_eq!(
+            Time::parse("T#25h_15m"),
+            Ok(Time::from_secs(25 * 3600 + 900))
+        );
         assert_eq!(
             Time::parse("T#1h75m"),
             Err(TimeError::PartTooLarge {
@@ -645,7 +654,10 @@ mod tests {
         assert_eq!(Time::parse("T#_5s"), Err(TimeError::Unexpected { at: 2 }));
         assert_eq!(Time::parse("T#5_s"), Err(TimeError::Unexpected { at: 3 }));
         assert_eq!(Time::parse("T#5s_"), Err(TimeError::Unexpected { at: 5 }));
-        assert_eq!(Time::parse("T#5s__3ms"), Err(TimeError::Unexpected { at: 5 }));
+        assert_eq!(
+            Time::parse("T#5s__3ms"),
+            Err(TimeError::Unexpected { at: 5 })
+        );
         assert_eq!(Time::parse("T#--5s"), Err(TimeError::Unexpected { at: 3 }));
         assert_eq!(Time::parse("T#5s "), Err(TimeError::Unexpected { at: 4 }));
     }
@@ -656,7 +668,10 @@ mod tests {
         let min = "LTIME#-106751d23h47m16s854ms775us808ns";
         assert_eq!(Time::parse(max), Ok(Time::MAX));
         assert_eq!(Time::parse(min), Ok(Time::MIN));
-        assert_eq!((Time::MAX.to_string(), Time::MIN.to_string()), (max.into(), min.into()));
+        assert_eq!(
+            (Time::MAX.to_string(), Time::MIN.to_string()),
+            (max.into(), min.into())
+        );
         assert_eq!(
             Time::parse("LTIME#106751d23h47m16s854ms775us808ns"),
             Err(TimeError::Overflow)
@@ -680,7 +695,10 @@ mod tests {
     #[test]
     fn conversions_truncate_toward_zero_and_construction_saturates() {
         let t = Time::from_nanos(-1_999_999_999);
-        assert_eq!((t.as_secs(), t.as_millis(), t.as_micros()), (-1, -1999, -1_999_999));
+        assert_eq!(
+            (t.as_secs(), t.as_millis(), t.as_micros()),
+            (-1, -1999, -1_999_999)
+        );
         assert_eq!(Time::from_millis(i64::MAX), Time::MAX);
         assert_eq!(Time::from_secs(i64::MIN), Time::MIN);
         assert_eq!(Time::MIN.checked_neg(), None);

@@ -72,10 +72,8 @@ fn one_line(text: &str) -> String {
 
 /// The `use` line, the struct's doc and attributes and its opening line, formatted.
 fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
-    let uses = |test: fn(&KnownType) -> bool| {
-        vars.iter()
-            .any(|v| v.ty.value.known().is_some_and(test))
-    };
+    let uses =
+        |test: fn(&KnownType) -> bool| vars.iter().any(|v| v.ty.value.known().is_some_and(test));
     let strings = uses(|k| k.capacity.is_some());
     let times = uses(|k| k.iec == IecType::Ltime);
     let imports = match (strings, times) {
