@@ -171,6 +171,22 @@ macro_rules! located {
     };
 }
 
+/// `set_element` of a scalar: only element 0, the value fitted to `ty` (and a string's
+/// `capacity`); nothing changes on error.
+fn set_scalar<T: PlcScalar>(
+    scalar: &mut T,
+    element: usize,
+    value: Value,
+    ty: IecType,
+    capacity: usize,
+) -> Result<(), ElementError> {
+    if element != 0 {
+        return Err(ElementError::OutOfRange { len: 1 });
+    }
+    *scalar = T::from_fitted(value.fit(ty, capacity).map_err(ElementError::Value)?);
+    Ok(())
+}
+
 /// A scalar (non-array) variable type.
 pub trait PlcScalar: PlcType {
     /// The value as a [`Value`].
@@ -202,12 +218,7 @@ macro_rules! scalar {
             }
             fn set_element(&mut self, element: usize, value: Value, ty: IecType)
                 -> Result<(), ElementError> {
-                if element != 0 {
-                    return Err(ElementError::OutOfRange { len: 1 });
-                }
-                let fitted = value.fit(ty, 0).map_err(ElementError::Value)?;
-                *self = Self::from_fitted(fitted);
-                Ok(())
+                set_scalar(self, element, value, ty, 0)
             }
             located!();
             bits!($kind $t);
@@ -283,14 +294,7 @@ impl PlcType for bool {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        if element != 0 {
-            return Err(ElementError::OutOfRange { len: 1 });
-        }
-        match value.fit(ty, 0).map_err(ElementError::Value)? {
-            Value::Bool(b) => *self = b,
-            _ => unreachable!("fit returns a Bool for BOOL"),
-        }
-        Ok(())
+        set_scalar(self, element, value, ty, 0)
     }
     #[inline(always)]
     fn __to_bit(self) -> bool {
@@ -336,12 +340,7 @@ impl<const N: usize> PlcType for FixedString<N> {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        if element != 0 {
-            return Err(ElementError::OutOfRange { len: 1 });
-        }
-        let fitted = value.fit(ty, N).map_err(ElementError::Value)?;
-        *self = Self::from_fitted(fitted);
-        Ok(())
+        set_scalar(self, element, value, ty, N)
     }
 }
 impl<const N: usize> PlcScalar for FixedString<N> {
@@ -382,12 +381,7 @@ impl PlcType for Time {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        if element != 0 {
-            return Err(ElementError::OutOfRange { len: 1 });
-        }
-        let fitted = value.fit(ty, 0).map_err(ElementError::Value)?;
-        *self = Self::from_fitted(fitted);
-        Ok(())
+        set_scalar(self, element, value, ty, 0)
     }
     located!();
 }

@@ -361,6 +361,22 @@ mod tests {
     }
 
     #[test]
+    fn a_time_is_a_long_word_of_nanoseconds() {
+        let mut buf = [0u8; 16];
+        let mut pi = ProcessImage::new(&mut buf);
+        pi.set("%QL8", crate::Time::from_nanos(-2)).unwrap();
+        assert!(
+            pi.set("%QD8", crate::Time::ZERO).is_err(),
+            "an LTIME needs an L address"
+        );
+        assert_eq!(
+            pi.get::<crate::Time>("%QL8"),
+            Ok(crate::Time::from_nanos(-2))
+        );
+        assert_eq!(&buf[8..16], &(-2i64).to_be_bytes());
+    }
+
+    #[test]
     fn errors_instead_of_panics() {
         let buf = [0u8; 4];
         let pi = ProcessImage::new(&buf);
