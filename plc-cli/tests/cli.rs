@@ -485,7 +485,11 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
     );
 
     tmux(&["send-keys", "-t", &session, "/", "speed_set", "Enter"]);
-    wait_until("the filter", || screen().contains("1 of 8 variables"));
+    assert!(
+        header.contains("LTIME#1s500ms"),
+        "a duration as its literal:\n{header}"
+    );
+    wait_until("the filter", || screen().contains("1 of 9 variables"));
     assert!(!screen().contains("│counter"));
     tmux(&["send-keys", "-t", &session, "Enter", "2500", "Enter"]);
     wait_until("the write to reach the program", || {
