@@ -63,7 +63,9 @@ pub enum IecType {
     Lword,
     /// Fixed-capacity UTF-8 text, `FixedString<N>`.
     String,
-    /// Duration, a signed 64-bit count of nanoseconds, [`Time`](crate::Time).
+    /// Duration, a signed 64-bit count of nanoseconds, [`Time`](crate::Time): from
+    /// [`Time::MIN`](crate::Time::MIN) to [`Time::MAX`](crate::Time::MAX), about ±292 years
+    /// (not an integer: [`int_range`](Self::int_range) is `None`).
     Ltime,
 }
 
