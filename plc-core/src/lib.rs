@@ -31,9 +31,9 @@
 //! [`fb`].
 //!
 //! Crate features: `std` (default; error types implement `std::error::Error`), `derive`
-//! (default; re-exports `#[derive(GlobalMemory)]`), `serde` (serde for `FixedString`,
-//! `IecType`, `Access`, `Direction`). Without default features the crate is `no_std` and needs
-//! no allocator.
+//! (default; re-exports `#[derive(GlobalMemory)]`), `serde` (serde for `FixedString`, `Time`
+//! as its literal, `IecType`, `Access`, `Direction`). Without default features the crate is
+//! `no_std` and needs no allocator.
 #![cfg_attr(not(any(feature = "std", test)), no_std)]
 #![deny(missing_docs)]
 
