@@ -25,7 +25,8 @@ fn the_golden_struct_declares_what_the_json_says() {
             "door_closed",
             "analog_in",
             "lamp",
-            "counter_total"
+            "counter_total",
+            "dwell"
         ]
     );
     assert_eq!(v[0].description, "Line speed in mm/s");
@@ -43,11 +44,13 @@ fn the_golden_struct_declares_what_the_json_says() {
     );
     assert_eq!(v[7].direction, Direction::Output);
     assert_eq!(v[8].direction, Direction::Status);
+    assert_eq!((v[9].iec_type, v[9].size), (IecType::Ltime, 8));
     let gm = Press::default();
     assert_eq!(
         (gm.Speed, gm.lamp, gm.label.as_str()),
         (-5, true, "a \"b\"")
     );
+    assert_eq!(gm.dwell, plc_core::Time::from_millis(1500));
 }
 
 #[test]

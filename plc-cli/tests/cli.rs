@@ -1,7 +1,7 @@
 //! The `plc` command against a real program in another process: the test binary runs itself
 //! as the control program (`PLC_TEST_ROLE=owner`), and each test drives the `plc` binary.
 
-use plc_core::{FixedString, GlobalMemory, Value};
+use plc_core::{FixedString, GlobalMemory, Time, Value};
 use plc_io::Runtime;
 use plc_io::shm::DynSegment;
 use std::os::unix::fs::FileExt;
@@ -25,6 +25,8 @@ pub struct Gm {
     recipe: FixedString<16>,
     counter: u64,
     table: [i16; 3],
+    #[plc(direction = "command", initial = "T#1.5s")]
+    dwell: Time,
 }
 
 /// Runs as the control program when `PLC_TEST_ROLE=owner`.
@@ -131,7 +133,8 @@ fn list_shows_programs_and_their_variables() {
     );
     let json: serde_json::Value =
         serde_json::from_str(&stdout(&plc(&["list", &owner.segment, "--json"]))).unwrap();
-    assert_eq!(json["variables"].as_array().unwrap().len(), 8);
+    assert_eq!(json["variables"].as_array().unwrap().len(), 9);
+    assert!(vars.contains("LTIME"), "{vars}");
     let shm_name = format!("/dev/shm/plc.{}", owner.segment);
     assert!(
         plc(&["list", &shm_name]).status.success(),
@@ -149,6 +152,7 @@ fn get_and_set_reach_the_program() {
         "speed_setpoint=1500",
         "recipe=\"steel, S235\"",
         "table[1]=-4",
+        "dwell=t#2m_30.5s",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     wait_until("the write to apply", || {
@@ -161,6 +165,8 @@ fn get_and_set_reach_the_program() {
         "{got}"
     );
     assert!(got.contains("serial = 7"), "{got}");
+    let dwell = stdout(&plc(&["get", s, "dwell"]));
+    assert!(dwell.contains("dwell = LTIME#2m30s500ms"), "{dwell}");
 }
 
 #[test]
@@ -176,6 +182,8 @@ fn set_refuses_bad_writes_and_writes_nothing() {
         ("speed_setpoint=fast", "whole number"),
         ("recipe=seventeen chars!!", "capacity of 16"),
         ("table[3]=1", "out of range"),
+        ("dwell=5000", "a duration starts with T#"),
+        ("dwell=T#1h75m", "must be below 60m"),
         ("speed_setpoint", "name=value"),
     ] {
         let o = plc(&["set", s, "speed_setpoint=999", assignment]);
@@ -413,6 +421,8 @@ fn export_prints_the_declaration_as_json() {
     assert_eq!(v["recipe"]["initial"], "none");
     assert_eq!(v["serial"]["read_only"], true);
     assert_eq!(v["table"]["dims"], serde_json::json!([3]));
+    assert_eq!(v["dwell"]["type"], "LTIME");
+    assert_eq!(v["dwell"]["initial"], "T#1.5s");
 }
 
 fn tmux(args: &[&str]) -> Output {
@@ -475,7 +485,11 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
     );
 
     tmux(&["send-keys", "-t", &session, "/", "speed_set", "Enter"]);
-    wait_until("the filter", || screen().contains("1 of 8 variables"));
+    assert!(
+        header.contains("LTIME#1s500ms"),
+        "a duration as its literal:\n{header}"
+    );
+    wait_until("the filter", || screen().contains("1 of 9 variables"));
     assert!(!screen().contains("│counter"));
     tmux(&["send-keys", "-t", &session, "Enter", "2500", "Enter"]);
     wait_until("the write to reach the program", || {

@@ -26,14 +26,19 @@
 //! assert_eq!(Gm::VARIABLES[3].initial, Some("12.5"));
 //! ```
 //!
+//! Durations are [`Time`] (IEC 61131-3 `LTIME`, nanoseconds, literals such as `T#1s500ms`);
+//! the standard function blocks (TON, TOF, TP, R_TRIG, F_TRIG, CTU, CTD, CTUD, SR, RS) are in
+//! [`fb`].
+//!
 //! Crate features: `std` (default; error types implement `std::error::Error`), `derive`
-//! (default; re-exports `#[derive(GlobalMemory)]`), `serde` (serde for `FixedString`,
-//! `IecType`, `Access`, `Direction`). Without default features the crate is `no_std` and needs
-//! no allocator.
+//! (default; re-exports `#[derive(GlobalMemory)]`), `serde` (serde for `FixedString`, `Time`
+//! as its literal, `IecType`, `Access`, `Direction`). Without default features the crate is
+//! `no_std` and needs no allocator.
 #![cfg_attr(not(any(feature = "std", test)), no_std)]
 #![deny(missing_docs)]
 
 pub mod convert;
+pub mod fb;
 mod fixed_string;
 mod global_memory;
 mod image_bytes;
@@ -51,7 +56,8 @@ pub use global_memory::{
     Access, BitMapping, Direction, GlobalMemory, Location, SetError, VarInfo, layout_hash,
 };
 pub use plc_rules::{
-    AddressError, AddressErrorKind, Area, IecAddress, IecType, Size, TypeFamily, UnknownType,
+    AddressError, AddressErrorKind, Area, IecAddress, IecType, Size, Time, TimeError, TypeFamily,
+    UnknownType,
 };
 
 /// The declaration rules the derive applies, for tools that check what a user typed before it

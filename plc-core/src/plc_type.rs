@@ -3,7 +3,7 @@
 //! The derive relies on this trait instead of reading type names, so a field declared through a
 //! type alias (`type Word = u16;`) is checked and laid out exactly like one written `u16`.
 
-use crate::{FixedString, IecType, Value, ValueError};
+use crate::{FixedString, IecType, Time, Value, ValueError};
 use zerocopy::byteorder::little_endian as le;
 use zerocopy::{FromBytes, Immutable, IntoBytes, KnownLayout, Unaligned};
 
@@ -55,7 +55,8 @@ pub(crate) mod sealed {
     message = "`{Self}` is not a supported PLC variable type",
     label = "not a PLC variable type",
     note = "use bool, u8, u16, u32, u64, i8, i16, i32, i64, f32, f64, plc_core::FixedString<N>, \
-            a #[derive(PlcStruct)] structure, or an array of these with up to 3 dimensions"
+            plc_core::Time, a #[derive(PlcStruct)] structure, or an array of these with up to 3 \
+            dimensions"
 )]
 pub trait PlcType: Copy + sealed::Sealed + 'static {
     /// IEC type of one element, as the Rust type maps it (a `u16` is `UINT`).
@@ -200,6 +201,22 @@ macro_rules! located {
     };
 }
 
+/// `set_element` of a scalar: only element 0, the value fitted to `ty` (and a string's
+/// `capacity`); nothing changes on error.
+fn set_scalar<T: PlcScalar>(
+    scalar: &mut T,
+    element: usize,
+    value: Value,
+    ty: IecType,
+    capacity: usize,
+) -> Result<(), ElementError> {
+    if element != 0 {
+        return Err(ElementError::OutOfRange { len: 1 });
+    }
+    *scalar = T::from_fitted(value.fit(ty, capacity).map_err(ElementError::Value)?);
+    Ok(())
+}
+
 /// A scalar (non-array) variable type.
 pub trait PlcScalar: PlcType {
     /// The value as a [`Value`].
@@ -231,12 +248,7 @@ macro_rules! scalar {
             }
             fn set_element(&mut self, element: usize, value: Value, ty: IecType)
                 -> Result<(), ElementError> {
-                if element != 0 {
-                    return Err(ElementError::OutOfRange { len: 1 });
-                }
-                let fitted = value.fit(ty, 0).map_err(ElementError::Value)?;
-                *self = Self::from_fitted(fitted);
-                Ok(())
+                set_scalar(self, element, value, ty, 0)
             }
             located!();
             bits!($kind $t);
@@ -312,14 +324,7 @@ impl PlcType for bool {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        if element != 0 {
-            return Err(ElementError::OutOfRange { len: 1 });
-        }
-        match value.fit(ty, 0).map_err(ElementError::Value)? {
-            Value::Bool(b) => *self = b,
-            _ => unreachable!("fit returns a Bool for BOOL"),
-        }
-        Ok(())
+        set_scalar(self, element, value, ty, 0)
     }
     #[inline(always)]
     fn __to_bit(self) -> bool {
@@ -365,12 +370,7 @@ impl<const N: usize> PlcType for FixedString<N> {
         value: Value,
         ty: IecType,
     ) -> Result<(), ElementError> {
-        if element != 0 {
-            return Err(ElementError::OutOfRange { len: 1 });
-        }
-        let fitted = value.fit(ty, N).map_err(ElementError::Value)?;
-        *self = Self::from_fitted(fitted);
-        Ok(())
+        set_scalar(self, element, value, ty, N)
     }
 }
 impl<const N: usize> PlcScalar for FixedString<N> {
@@ -381,6 +381,48 @@ impl<const N: usize> PlcScalar for FixedString<N> {
         match value {
             Value::Text(t) => FixedString::from_str_truncate(t.as_str()),
             _ => FixedString::new(),
+        }
+    }
+}
+
+/// `LTIME`: stored as its nanoseconds, a little-endian `i64`.
+impl sealed::Sealed for Time {}
+impl PlcType for Time {
+    const IEC_TYPE: IecType = IecType::Ltime;
+    const RANK: usize = 0;
+    const DIMS: &'static [usize] = &[];
+    const ELEMENTS: usize = 1;
+    const STRING_CAPACITY: usize = 0;
+    type Repr = le::I64;
+    #[inline(always)]
+    fn to_repr(&self) -> le::I64 {
+        le::I64::new(self.as_nanos())
+    }
+    #[inline(always)]
+    fn from_repr(repr: &le::I64) -> Self {
+        Time::from_nanos(repr.get())
+    }
+    fn get_element(&self, element: usize) -> Option<Value> {
+        (element == 0).then_some(Value::Time(*self))
+    }
+    fn set_element(
+        &mut self,
+        element: usize,
+        value: Value,
+        ty: IecType,
+    ) -> Result<(), ElementError> {
+        set_scalar(self, element, value, ty, 0)
+    }
+    located!();
+}
+impl PlcScalar for Time {
+    fn to_value(&self) -> Value {
+        Value::Time(*self)
+    }
+    fn from_fitted(value: Value) -> Self {
+        match value {
+            Value::Time(t) => t,
+            _ => Time::ZERO,
         }
     }
 }
@@ -547,6 +589,20 @@ mod tests {
             let boxed: Box<dyn std::error::Error> = Box::new(value);
             assert_eq!(boxed.to_string(), "out of range for USINT (0..=255)");
         }
+    }
+
+    #[test]
+    fn a_time_is_its_nanoseconds_in_little_endian() {
+        let t = Time::from_nanos(-2);
+        assert_eq!(t.to_repr().as_bytes(), &(-2i64).to_le_bytes());
+        assert_eq!(Time::from_repr(&t.to_repr()), t);
+        let mut times = [Time::ZERO; 2];
+        times
+            .set_element(1, Value::Time(Time::from_secs(5)), IecType::Ltime)
+            .unwrap();
+        assert_eq!(times.get_element(1), Some(Value::Time(Time::from_secs(5))));
+        assert!(times.set_element(0, Value::Int(5), IecType::Ltime).is_err());
+        assert_eq!(<Time as PlcType>::IEC_TYPE, IecType::Ltime);
     }
 
     #[test]

@@ -103,8 +103,15 @@ pub fn set_from_bit<T: PlcType>(field: &mut T, bit: bool) {
 }
 
 /// Sets every element of a field to its declared initial value (the derive's `Default`; the
-/// value was checked at compile time, so an error cannot happen here).
+/// value was checked at compile time, so an error cannot happen here). A duration's initial is
+/// written as its literal text (`"T#5s"`) and read here with the one grammar.
 pub fn set_initial<T: PlcType>(field: &mut T, ty: IecType, value: Value) {
+    let value = match value {
+        Value::Text(text) if ty == IecType::Ltime => {
+            Value::parse(text.as_str(), ty).unwrap_or(Value::Time(crate::Time::ZERO))
+        }
+        other => other,
+    };
     for element in 0..T::ELEMENTS {
         let _ = field.set_element(element, value, ty);
     }
@@ -207,6 +214,11 @@ impl TypeFacts {
     /// Whether one element is a string.
     pub const fn element_is_string(self) -> bool {
         !self.structured && matches!(self.iec_type, IecType::String)
+    }
+
+    /// Whether one element is a duration (`LTIME`, `plc_core::Time`).
+    pub const fn element_is_time(self) -> bool {
+        !self.structured && matches!(self.iec_type, IecType::Ltime)
     }
 
     /// Whether `initial = true/false` fits.

@@ -84,7 +84,7 @@ mod sealed {
 }
 
 /// A Rust type that a process image address can hold: `bool` (X), `u8`/`i8` (B), `u16`/`i16`
-/// (W), `u32`/`i32`/`f32` (D), `u64`/`i64`/`f64` (L).
+/// (W), `u32`/`i32`/`f32` (D), `u64`/`i64`/`f64`/[`Time`](crate::Time) (L).
 pub trait ProcessValue: Copy + sealed::Sealed {
     /// The address size this type needs.
     const SIZE: Size;
@@ -138,6 +138,20 @@ process_value! {
     u16 => Word, 2; i16 => Word, 2;
     u32 => DoubleWord, 4; i32 => DoubleWord, 4; f32 => DoubleWord, 4;
     u64 => LongWord, 8; i64 => LongWord, 8; f64 => LongWord, 8;
+}
+
+/// An `LTIME` at an L address: its nanoseconds as a 64-bit integer.
+impl sealed::Sealed for crate::Time {}
+impl ProcessValue for crate::Time {
+    const SIZE: Size = Size::LongWord;
+    #[inline(always)]
+    fn decode(bytes: &[u8], bit: u8, order: ByteOrder) -> Self {
+        crate::Time::from_nanos(i64::decode(bytes, bit, order))
+    }
+    #[inline(always)]
+    fn encode(self, bytes: &mut [u8], bit: u8, order: ByteOrder) {
+        self.as_nanos().encode(bytes, bit, order)
+    }
 }
 
 /// A process image over a byte buffer, read and written by IEC address (IEC 61131-3 addressing).
@@ -344,6 +358,22 @@ mod tests {
         assert_eq!(&piq[4..6], &[0xFF, 0xFE]);
         assert_eq!(&piq[8..12], &[0x3F, 0xC0, 0x00, 0x00]);
         assert_eq!(piq[1], 0x7F);
+    }
+
+    #[test]
+    fn a_time_is_a_long_word_of_nanoseconds() {
+        let mut buf = [0u8; 16];
+        let mut pi = ProcessImage::new(&mut buf);
+        pi.set("%QL8", crate::Time::from_nanos(-2)).unwrap();
+        assert!(
+            pi.set("%QD8", crate::Time::ZERO).is_err(),
+            "an LTIME needs an L address"
+        );
+        assert_eq!(
+            pi.get::<crate::Time>("%QL8"),
+            Ok(crate::Time::from_nanos(-2))
+        );
+        assert_eq!(&buf[8..16], &(-2i64).to_be_bytes());
     }
 
     #[test]

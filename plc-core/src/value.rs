@@ -2,12 +2,12 @@
 
 use crate::FixedString;
 use core::fmt;
-use plc_rules::{IecType, TypeFamily};
+use plc_rules::{IecType, Time, TimeError, TypeFamily};
 
 /// A value of any plc-vars type, `no_std` and without allocation.
 ///
 /// Integers and bit strings are `Int` or `UInt` (either is accepted for either kind when in
-/// range), reals `Real`, strings `Text`.
+/// range), reals `Real`, strings `Text`, durations (`LTIME`) `Time`.
 ///
 /// ```
 /// use plc_core::{IecType, Value};
@@ -15,6 +15,9 @@ use plc_rules::{IecType, TypeFamily};
 /// assert_eq!(Value::parse("1", IecType::Bool), Ok(Value::Bool(true)));
 /// assert!(Value::parse("300", IecType::Usint).is_err());
 /// assert_eq!(Value::parse("\"TEST 1\"", IecType::String).unwrap().to_string(), "TEST 1");
+/// let delay = Value::parse("T#1m30s", IecType::Ltime).unwrap();
+/// assert_eq!(delay, Value::Time(plc_core::Time::from_secs(90)));
+/// assert_eq!(delay.to_string(), "LTIME#1m30s");
 /// ```
 // Text is stored inline (no allocator in `no_std`); a Value is 264 bytes by design.
 #[allow(clippy::large_enum_variant)]
@@ -30,6 +33,8 @@ pub enum Value {
     Real(f64),
     /// `STRING` (at most 255 bytes).
     Text(FixedString<255>),
+    /// `LTIME`: a duration.
+    Time(Time),
 }
 
 /// Why a value does not fit a type.
@@ -65,6 +70,12 @@ pub enum ValueError {
         /// The type that was expected.
         expected: IecType,
     },
+    /// Text that is not a duration literal, for an `LTIME` (one beyond its range is
+    /// [`OutOfRange`](Self::OutOfRange)).
+    Duration {
+        /// What is wrong with it.
+        error: TimeError,
+    },
 }
 
 impl fmt::Display for ValueError {
@@ -75,6 +86,9 @@ impl fmt::Display for ValueError {
             }
             ValueError::OutOfRange { expected } => match expected.int_range() {
                 Some((lo, hi)) => write!(f, "out of range for {expected} ({lo}..={hi})"),
+                None if expected == IecType::Ltime => {
+                    write!(f, "out of range for LTIME ({}..={})", Time::MIN, Time::MAX)
+                }
                 None => write!(f, "out of range for {expected}"),
             },
             ValueError::TooLong { len, capacity } => write!(
@@ -91,6 +105,7 @@ impl fmt::Display for ValueError {
                 t if t.is_real() => write!(f, "expected a number for {t}"),
                 t => write!(f, "expected a {t} value"),
             },
+            ValueError::Duration { error } => write!(f, "expected an LTIME: {error}"),
         }
     }
 }
@@ -106,6 +121,7 @@ impl Value {
             Value::Int(_) | Value::UInt(_) => "integer",
             Value::Real(_) => "real",
             Value::Text(_) => "text",
+            Value::Time(_) => "duration",
         }
     }
 
@@ -120,7 +136,8 @@ impl Value {
 
     /// Checks that the value fits `ty` (kind and range; `capacity` for strings) and returns it in
     /// its canonical form: `Int` for signed, `UInt` for unsigned integers and bit strings, `Real`
-    /// for reals (a whole number is accepted for a real, IEC 61131-3's untyped literals).
+    /// for reals (a whole number is accepted for a real, IEC 61131-3's untyped literals). An
+    /// `LTIME` takes only a `Time`: a bare number's unit would be a guess.
     pub fn fit(self, ty: IecType, capacity: usize) -> Result<Value, ValueError> {
         let wrong = |v: &Value| ValueError::WrongKind {
             expected: ty,
@@ -163,14 +180,19 @@ impl Value {
                 }),
                 other => Err(wrong(&other)),
             },
+            TypeFamily::Time => match self {
+                Value::Time(_) => Ok(self),
+                other => Err(wrong(&other)),
+            },
         }
     }
 
     /// Parses text as a value of `ty`, as a person types it (`plc set`): bools `true`/`false`/
     /// `1`/`0`; integers in decimal, `0x`/`16#` hex, `2#` binary, `8#` octal, with `_` separators; reals in
     /// decimal or exponent notation; strings as plain text or in double quotes (with `\"`, `\\`,
-    /// `\n`, `\t` escapes). Strings are checked against the largest capacity, 255 bytes; check a
-    /// variable's own capacity with [`fit`](Self::fit).
+    /// `\n`, `\t` escapes); durations as IEC literals (`T#1m30s`, `LTIME#-2.5s`: the grammar
+    /// of [`Time::parse`]). Strings are checked against the largest capacity, 255 bytes; check
+    /// a variable's own capacity with [`fit`](Self::fit).
     pub fn parse(text: &str, ty: IecType) -> Result<Value, ValueError> {
         let syntax = ValueError::Syntax { expected: ty };
         let t = text.trim();
@@ -209,6 +231,10 @@ impl Value {
                 }
                 Value::Text(FixedString::from_str_truncate(unquoted.as_ref()))
             }
+            TypeFamily::Time => Value::Time(Time::parse(t).map_err(|error| match error {
+                TimeError::Overflow => ValueError::OutOfRange { expected: ty },
+                error => ValueError::Duration { error },
+            })?),
         };
         value.fit(ty, 255)
     }
@@ -304,7 +330,7 @@ impl AsRef<str> for StrOrOwned<'_> {
 
 impl fmt::Display for Value {
     /// Booleans as `true`/`false`, numbers in decimal (reals always with a point or exponent),
-    /// text as it is.
+    /// text as it is, durations as IEC literals (`LTIME#1m30s`).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Value::Bool(b) => write!(f, "{b}"),
@@ -315,6 +341,7 @@ impl fmt::Display for Value {
             }
             Value::Real(r) => write!(f, "{r}"),
             Value::Text(t) => f.write_str(t.as_str()),
+            Value::Time(t) => fmt::Display::fmt(t, f),
         }
     }
 }
@@ -420,6 +447,46 @@ mod tests {
     }
 
     #[test]
+    fn durations_parse_as_literals_and_take_only_durations() {
+        assert_eq!(
+            Value::parse(" T#1s500ms ", IecType::Ltime),
+            Ok(Value::Time(Time::from_millis(1500)))
+        );
+        assert_eq!(
+            Value::parse("5000", IecType::Ltime),
+            Err(ValueError::Duration {
+                error: TimeError::NoPrefix
+            })
+        );
+        let overflow = Value::parse("T#106752d", IecType::Ltime).unwrap_err();
+        assert_eq!(
+            overflow,
+            ValueError::OutOfRange {
+                expected: IecType::Ltime
+            }
+        );
+        assert!(
+            overflow.to_string().contains("LTIME#106751d23h"),
+            "{overflow}"
+        );
+        let order = Value::parse("T#1s1m", IecType::Ltime)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            order.starts_with("expected an LTIME: `m` comes after `s`"),
+            "{order}"
+        );
+        assert_eq!(
+            Value::Int(5).fit(IecType::Ltime, 0),
+            Err(ValueError::WrongKind {
+                expected: IecType::Ltime,
+                found: "integer"
+            })
+        );
+        assert!(Value::Time(Time::ZERO).fit(IecType::Lint, 0).is_err());
+    }
+
+    #[test]
     fn kinds_are_checked() {
         assert_eq!(
             Value::Bool(true).fit(IecType::Dint, 0),
@@ -443,6 +510,8 @@ mod tests {
             (Value::UInt(9), IecType::Udint),
             (Value::Real(2.0), IecType::Lreal),
             (Value::Real(0.1), IecType::Lreal),
+            (Value::Time(Time::from_millis(-1500)), IecType::Ltime),
+            (Value::Time(Time::MIN), IecType::Ltime),
         ] {
             assert_eq!(Value::parse(&v.to_string(), t), Ok(v));
         }

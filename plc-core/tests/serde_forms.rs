@@ -42,3 +42,19 @@ fn other_types_read_from_owned_values_too() {
         Direction::Input
     );
 }
+
+#[test]
+fn a_time_is_its_literal() {
+    use plc_core::Time;
+    assert_eq!(
+        serde_json::to_value(Time::from_millis(1500)).unwrap(),
+        json!("LTIME#1s500ms")
+    );
+    assert_eq!(
+        serde_json::from_value::<Time>(json!("T#2h_30m")).unwrap(),
+        Time::from_secs(9000)
+    );
+    let e = serde_json::from_value::<Time>(json!("T#1h75m")).unwrap_err();
+    assert!(e.to_string().contains("below 60m"), "{e}");
+    assert!(serde_json::from_value::<Time>(json!(1500)).is_err());
+}

@@ -170,12 +170,19 @@ impl Initial {
             ],
             InitialValue::Text(s) => {
                 let len = s.len();
+                // A duration literal is text too; whether it is a valid one is known here.
+                let time = plc_rules::Time::parse(s);
+                let time_ok = time.is_ok();
+                let time_problem = match time {
+                    Ok(_) => String::new(),
+                    Err(e) => e.to_string(),
+                };
                 vec![
                     (
-                        quote!(#facts.element_is_string()),
+                        quote!(#facts.element_is_string() || #facts.element_is_time()),
                         format!(
                             "initial value {text} is text, but the type of `{field}` is not a \
-                             FixedString"
+                             FixedString or a Time"
                         ),
                     ),
                     (
@@ -183,6 +190,13 @@ impl Initial {
                         format!(
                             "initial text {text} is {len} bytes, more than the type of `{field}` \
                              holds: shorten it or raise the capacity"
+                        ),
+                    ),
+                    (
+                        quote!(!#facts.element_is_time() || #time_ok),
+                        format!(
+                            "initial value {text} of `{field}`, a Time, is not a duration \
+                             literal: {time_problem}"
                         ),
                     ),
                 ]

@@ -18,7 +18,7 @@ pub enum SynType {
 }
 
 const SUPPORTED: &str = "use bool, u8, u16, u32, u64, i8, i16, i32, i64, f32, f64, \
-                         FixedString<N>, or an array of these";
+                         FixedString<N>, Time, or an array of these";
 
 pub fn analyse(ty: &Type) -> SynType {
     match ty {
@@ -81,6 +81,9 @@ pub fn analyse(ty: &Type) -> SynType {
             if name == "FixedString" {
                 return fixed_string(last);
             }
+            if is_plc_core_time(&p.path) {
+                return SynType::Known(KnownType::scalar(IecType::Ltime));
+            }
             if matches!(
                 name.as_str(),
                 "Vec" | "Option" | "Box" | "HashMap" | "BTreeMap"
@@ -103,6 +106,17 @@ pub fn analyse(ty: &Type) -> SynType {
         }
         _ => SynType::Unknown,
     }
+}
+
+/// `plc_core::Time` or `::plc_core::Time` (a bare `Time` is read as a Rust type name, as
+/// `u16` is).
+fn is_plc_core_time(path: &syn::Path) -> bool {
+    let names: Vec<String> = path.segments.iter().map(|s| s.ident.to_string()).collect();
+    names == ["plc_core", "Time"]
+        && path
+            .segments
+            .iter()
+            .all(|s| matches!(s.arguments, PathArguments::None))
 }
 
 fn fixed_string(segment: &syn::PathSegment) -> SynType {
@@ -175,6 +189,24 @@ mod tests {
             analyse(&syn::parse_str("(u8, u8)").unwrap()),
             SynType::Unsupported(_)
         ));
+    }
+
+    #[test]
+    fn time_in_plc_core_or_bare_is_ltime() {
+        for src in ["Time", "plc_core::Time", "::plc_core::Time", "[Time; 3]"] {
+            assert_eq!(known(src).iec, IecType::Ltime, "{src}");
+        }
+        for other in [
+            "std::time::Duration",
+            "chrono::Time",
+            "plc_core::time::Time",
+        ] {
+            assert_eq!(
+                analyse(&syn::parse_str(other).unwrap()),
+                SynType::Unknown,
+                "{other}"
+            );
+        }
     }
 
     #[test]

@@ -654,3 +654,44 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn durations_are_ltime_with_literal_initials_and_time_is_refused_with_the_fix() {
+    let g = generate(
+        &vars(r#""dwell": { "type": "LTIME", "initial": "T#1m30s" }, "steps": { "type": "ltime", "dims": [2] }"#),
+        &Options::default(),
+    )
+    .unwrap();
+    assert!(
+        g.code.contains("use plc_core::{GlobalMemory, Time};"),
+        "{}",
+        g.code
+    );
+    assert!(g.code.contains("pub dwell: Time,"), "{}", g.code);
+    assert!(g.code.contains("pub steps: [Time; 2],"), "{}", g.code);
+    assert!(g.code.contains("initial = \"T#1m30s\""), "{}", g.code);
+    let e = errors(&vars(
+        r#""a": { "type": "LTIME", "initial": "T#1h75m" }, "b": { "type": "LTIME", "initial": 5000 }, "c": { "type": "LTIME", "initial": "T#106752d" }, "d": { "type": "TIME" }"#,
+    ));
+    assert_eq!(e.len(), 4, "{e:?}");
+    assert!(
+        e[0].starts_with("variables.a.initial: \"T#1h75m\" is not a duration literal: 75m after a larger unit must be below 60m"),
+        "{e:?}"
+    );
+    assert!(
+        e[1].contains("variables.b.initial: 5000 is not a LTIME value: `initial` must be a duration literal in double quotes, such as \"T#5s\""),
+        "{e:?}"
+    );
+    assert!(
+        e[2].contains("variables.c.initial: \"T#106752d\" is out of range for LTIME (Time holds LTIME#-106751d23h47m16s854ms775us808ns..=LTIME#106751d23h47m16s854ms775us807ns)"),
+        "{e:?}"
+    );
+    assert!(
+        e[3].contains("variables.d.type: unknown type \"TIME\""),
+        "{e:?}"
+    );
+    assert!(
+        e[3].contains("a duration is LTIME, 64-bit nanoseconds"),
+        "{e:?}"
+    );
+}

@@ -417,3 +417,46 @@ mod structures {
         assert_eq!(v2.lift.offset, 0);
     }
 }
+
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct Durations {
+    #[plc(nonvolatile, initial = "T#5s")]
+    dwell: plc_core::Time,
+    #[plc(nonvolatile)]
+    steps: [plc_core::Time; 2],
+}
+
+/// The same program, with `dwell` retyped to a number: a duration does not become one.
+#[derive(GlobalMemory, Debug, Clone, PartialEq)]
+pub struct DurationsRetyped {
+    #[plc(nonvolatile, initial = 7)]
+    dwell: i64,
+    #[plc(nonvolatile)]
+    steps: [plc_core::Time; 2],
+}
+
+#[test]
+fn durations_are_kept_as_literals_to_the_nanosecond() {
+    use plc_core::Time;
+    let dir = temp_dir("durations");
+    let store = RetainStore::new(dir.join("d.retain"));
+    let saved = Durations {
+        dwell: Time::from_nanos(-1_500_000_001),
+        steps: [Time::MIN, Time::MAX],
+    };
+    store.save(&saved).unwrap();
+    let text = std::fs::read_to_string(dir.join("d.retain")).unwrap();
+    assert!(text.contains("\"LTIME#-1s500ms1ns\""), "{text}");
+    let mut gm = Durations::default();
+    let report = store.load(&mut gm).unwrap();
+    assert!(report.reset.is_empty(), "{:?}", report.reset);
+    assert_eq!(gm, saved);
+    let mut retyped = DurationsRetyped::default();
+    let report = store.load(&mut retyped).unwrap();
+    assert_eq!(
+        retyped.dwell, 7,
+        "LTIME does not widen to LINT: initial kept"
+    );
+    assert_eq!(retyped.steps, saved.steps);
+    assert_eq!(report.reset.len(), 1, "{:?}", report.reset);
+}

@@ -257,6 +257,47 @@ fn context_for_test_runs_a_tick_without_bus_or_segment() {
 }
 
 #[test]
+fn now_is_the_cycles_start_the_same_through_a_tick_and_never_going_back() {
+    let mut seen: Vec<plc_core::Time> = Vec::new();
+    let mut delay = plc_core::fb::Ton::default();
+    let mut delay_done_at = None;
+    Runtime::<Gm>::builder()
+        .period(Duration::from_millis(1))
+        .max_cycles(40)
+        .handle_signals(false)
+        .build()
+        .run(|ctx: &mut Context<Gm>| {
+            let at_start = ctx.now();
+            std::thread::sleep(Duration::from_micros(300));
+            assert_eq!(ctx.now(), at_start, "one instant through the tick");
+            if delay.call(at_start, true, plc_core::Time::from_millis(10))
+                && delay_done_at.is_none()
+            {
+                delay_done_at = Some(at_start);
+            }
+            seen.push(at_start);
+        })
+        .unwrap();
+    assert!(seen.windows(2).all(|w| w[0] < w[1]), "{seen:?}");
+    // Cycles of at least 1 ms apart: 40 of them span at least 39 ms.
+    let span = seen[39].saturating_sub(seen[0]);
+    assert!(span >= plc_core::Time::from_millis(39), "{span}");
+    let done = delay_done_at.expect("a 10 ms TON in 40 cycles of 1 ms");
+    assert!(done.saturating_sub(seen[0]) >= plc_core::Time::from_millis(10));
+}
+
+#[test]
+fn context_for_test_sets_and_advances_now() {
+    let mut ctx = Context::for_test(Gm::default());
+    assert_eq!(ctx.now(), plc_core::Time::ZERO);
+    ctx.set_now(plc_core::Time::from_secs(5));
+    ctx.advance(plc_core::Time::from_millis(250));
+    assert_eq!(ctx.now(), plc_core::Time::from_millis(5250));
+    ctx.advance(plc_core::Time::MAX);
+    assert_eq!(ctx.now(), plc_core::Time::MAX, "saturates");
+}
+
+#[test]
 fn a_panic_keeps_the_last_good_cycles_retained_values() {
     let dir = std::env::temp_dir().join(format!("plc-rt-panic-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

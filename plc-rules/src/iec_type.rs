@@ -14,7 +14,11 @@ use core::str::FromStr;
 /// | BOOL | bool | 1 | | REAL | f32 | 32 |
 /// | SINT / INT / DINT / LINT | i8 / i16 / i32 / i64 | 8..64 | | LREAL | f64 | 64 |
 /// | USINT / UINT / UDINT / ULINT | u8 / u16 / u32 / u64 | 8..64 | | STRING | `FixedString<N>` | 8·N |
-/// | BYTE / WORD / DWORD / LWORD | u8 / u16 / u32 / u64 | 8..64 | | | | |
+/// | BYTE / WORD / DWORD / LWORD | u8 / u16 / u32 / u64 | 8..64 | | LTIME | [`Time`](crate::Time) | 64 |
+///
+/// `LTIME` is IEC 61131-3's long duration, a signed 64-bit count of nanoseconds. plc-vars has
+/// no 32-bit `TIME` type: `"TIME"` does not parse (declare `LTIME`), though `T#` and `TIME#`
+/// literals are read as `LTIME` values (IEC 61131-3 widens `TIME` to `LTIME`).
 ///
 /// ```
 /// use plc_rules::IecType;
@@ -59,6 +63,10 @@ pub enum IecType {
     Lword,
     /// Fixed-capacity UTF-8 text, `FixedString<N>`.
     String,
+    /// Duration, a signed 64-bit count of nanoseconds, [`Time`](crate::Time): from
+    /// [`Time::MIN`](crate::Time::MIN) to [`Time::MAX`](crate::Time::MAX), about ±292 years
+    /// (not an integer: [`int_range`](Self::int_range) is `None`).
+    Ltime,
 }
 
 /// The family of an [`IecType`], which decides what a value of it may become.
@@ -76,11 +84,13 @@ pub enum TypeFamily {
     BitString,
     /// `STRING`.
     String,
+    /// `LTIME`.
+    Time,
 }
 
 impl IecType {
     /// Every type, in declaration order.
-    pub const ALL: [IecType; 16] = [
+    pub const ALL: [IecType; 17] = [
         IecType::Bool,
         IecType::Sint,
         IecType::Int,
@@ -97,6 +107,7 @@ impl IecType {
         IecType::Dword,
         IecType::Lword,
         IecType::String,
+        IecType::Ltime,
     ];
 
     /// The IEC name in upper case, e.g. `"DINT"`.
@@ -118,10 +129,12 @@ impl IecType {
             IecType::Dword => "DWORD",
             IecType::Lword => "LWORD",
             IecType::String => "STRING",
+            IecType::Ltime => "LTIME",
         }
     }
 
-    /// The Rust type of the JSON variable-list format's type table (`"FixedString"` for `STRING`).
+    /// The Rust type of the JSON variable-list format's type table (`"FixedString"` for
+    /// `STRING`, `"Time"` for `LTIME`).
     pub const fn rust_name(self) -> &'static str {
         match self {
             IecType::Bool => "bool",
@@ -136,6 +149,7 @@ impl IecType {
             IecType::Real => "f32",
             IecType::Lreal => "f64",
             IecType::String => "FixedString",
+            IecType::Ltime => "Time",
         }
     }
 
@@ -146,7 +160,7 @@ impl IecType {
             IecType::Sint | IecType::Usint | IecType::Byte => 8,
             IecType::Int | IecType::Uint | IecType::Word => 16,
             IecType::Dint | IecType::Udint | IecType::Dword | IecType::Real => 32,
-            IecType::Lint | IecType::Ulint | IecType::Lword | IecType::Lreal => 64,
+            IecType::Lint | IecType::Ulint | IecType::Lword | IecType::Lreal | IecType::Ltime => 64,
             IecType::String => 0,
         }
     }
@@ -172,6 +186,7 @@ impl IecType {
                 TypeFamily::BitString
             }
             IecType::String => TypeFamily::String,
+            IecType::Ltime => TypeFamily::Time,
         }
     }
 
@@ -213,7 +228,8 @@ impl IecType {
         })
     }
 
-    /// The type an unannotated Rust primitive maps to (`u16` is `UINT`, never `WORD`).
+    /// The type an unannotated Rust type maps to (`u16` is `UINT`, never `WORD`; `Time` is
+    /// `LTIME`). Exact case: `time` is no Rust type here.
     pub fn from_rust_name(name: &str) -> Option<IecType> {
         Some(match name {
             "bool" => IecType::Bool,
@@ -228,6 +244,7 @@ impl IecType {
             "f32" => IecType::Real,
             "f64" => IecType::Lreal,
             "string" | "FixedString" => IecType::String,
+            "Time" => IecType::Ltime,
             _ => return None,
         })
     }
@@ -265,7 +282,8 @@ impl fmt::Display for UnknownType {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(
             "unknown type: use an IEC name (BOOL, SINT..LINT, USINT..ULINT, REAL, LREAL, \
-             BYTE..LWORD, STRING) or a Rust name (bool, i8..i64, u8..u64, f32, f64, string)",
+             BYTE..LWORD, STRING, LTIME) or a Rust name (bool, i8..i64, u8..u64, f32, f64, \
+             string); for a duration use LTIME, 64-bit nanoseconds (there is no 32-bit TIME)",
         )
     }
 }
@@ -380,7 +398,17 @@ mod tests {
             assert_eq!(std::format!("{t}"), t.name());
         }
         assert_eq!("I32".parse::<IecType>(), Ok(IecType::Dint));
+        // One duration type, LTIME; TIME (32-bit in many PLCs) is not silently made 64-bit.
         assert_eq!("TIME".parse::<IecType>(), Err(UnknownType));
+        assert_eq!("ltime".parse::<IecType>(), Ok(IecType::Ltime));
+        assert_eq!(IecType::from_rust_name("Time"), Some(IecType::Ltime));
+        assert_eq!(IecType::Ltime.family(), TypeFamily::Time);
+        assert_eq!(
+            (IecType::Ltime.bits(), IecType::Ltime.image_size()),
+            (64, 8)
+        );
+        assert_eq!(IecType::Ltime.int_range(), None);
+        assert!(!IecType::Ltime.same_storage(IecType::Lint));
         assert_eq!("".parse::<IecType>(), Err(UnknownType));
     }
 

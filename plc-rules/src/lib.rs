@@ -10,6 +10,7 @@
 //! - [`capacity`]: the limits on strings and arrays.
 //! - [`layout`]: the layout hash that lets a reader detect a changed declaration.
 //! - [`path`]: paths such as `axes[1].pos` that name one value inside the variables.
+//! - [`time`]: [`Time`] (`LTIME`) and the IEC duration literal grammar (`T#1s500ms`).
 //!
 //! ```
 //! use plc_rules::{IecType, widening::can_widen};
@@ -32,6 +33,7 @@ pub mod layout;
 pub mod link;
 pub mod names;
 pub mod path;
+pub mod time;
 pub mod widening;
 
 pub use access::{Access, Direction};
@@ -39,4 +41,5 @@ pub use address::{AddressError, AddressErrorKind, Area, IecAddress, Size};
 pub use iec_type::{IecType, TypeFamily, UnknownType};
 pub use link::{Link, LinkError};
 pub use names::NameError;
+pub use time::{Time, TimeError};
 pub use widening::WideningOptions;

@@ -3,7 +3,8 @@
 //! prettyplease formats it (short lines written directly, long ones by prettyplease).
 
 use super::validate::ListAt;
-use plc_rules::decl::Var;
+use plc_rules::IecType;
+use plc_rules::decl::{KnownType, Var};
 
 /// Rust's keywords: a variable of one of these names becomes a raw identifier (`r#type`).
 const KEYWORDS: &[&str] = &[
@@ -27,7 +28,7 @@ fn ident(name: &str) -> String {
 
 /// Names the generated module defines or imports: a struct of one of these names would not
 /// compile (or would shadow what the module needs).
-const TAKEN: &[&str] = &["GlobalMemory", "FixedString", "Self", "_"];
+const TAKEN: &[&str] = &["GlobalMemory", "FixedString", "Time", "Self", "_"];
 
 /// Whether the struct name gives code that compiles: an identifier, not a keyword, not a name
 /// the module imports.
@@ -71,18 +72,20 @@ fn one_line(text: &str) -> String {
 
 /// The `use` line, the struct's doc and attributes and its opening line, formatted.
 fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
-    let strings = vars
-        .iter()
-        .any(|v| v.ty.value.known().is_some_and(|k| k.capacity.is_some()));
+    let uses =
+        |test: fn(&KnownType) -> bool| vars.iter().any(|v| v.ty.value.known().is_some_and(test));
+    let strings = uses(|k| k.capacity.is_some());
+    let times = uses(|k| k.iec == IecType::Ltime);
+    let imports = match (strings, times) {
+        (false, false) => "GlobalMemory",
+        (true, false) => "{FixedString, GlobalMemory}",
+        (false, true) => "{GlobalMemory, Time}",
+        (true, true) => "{FixedString, GlobalMemory, Time}",
+    };
     let mut out = format!(
-        "use plc_core::{};\n\
+        "use plc_core::{imports};\n\
          /// The variables of {}.\n\
          #[derive(GlobalMemory, Debug, Clone)]\n",
-        if strings {
-            "{FixedString, GlobalMemory}"
-        } else {
-            "GlobalMemory"
-        },
         origin.trim_end()
     );
     if vars
@@ -282,6 +285,7 @@ mod tests {
             IecType::Lreal,
             IecType::String,
             IecType::Ulint,
+            IecType::Ltime,
         ]);
         let dims = prop::collection::vec(1u64..70000, 0..4);
         let direction =

@@ -13,7 +13,8 @@ pub fn descriptor_to_json(desc: &LayoutDescriptor) -> Value {
         let mut o = Map::new();
         let ty = match v.iec_type.family() {
             TypeFamily::String => "string".to_string(),
-            TypeFamily::BitString => v.iec_type.name().to_string(),
+            // No Rust primitive names these: the IEC name (`"WORD"`, `"LTIME"`).
+            TypeFamily::BitString | TypeFamily::Time => v.iec_type.name().to_string(),
             _ => v.iec_type.rust_name().to_string(),
         };
         o.insert("type".into(), json!(ty));

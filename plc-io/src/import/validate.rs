@@ -155,7 +155,12 @@ impl Reader<'_> {
                     "type",
                     format!(
                         "unknown type {ty:?}: use bool, u8..u64, i8..i64, f32, f64, string, or \
-                         BOOL..LREAL, BYTE..LWORD, STRING"
+                         BOOL..LREAL, BYTE..LWORD, STRING, LTIME{}",
+                        if ty.eq_ignore_ascii_case("TIME") {
+                            " (a duration is LTIME, 64-bit nanoseconds; there is no 32-bit TIME)"
+                        } else {
+                            ""
+                        }
                     ),
                 );
                 None

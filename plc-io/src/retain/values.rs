@@ -2,7 +2,7 @@
 //! variable now of another.
 
 use plc_core::convert::can_widen;
-use plc_core::{FixedString, IecType, TypeFamily, Value};
+use plc_core::{FixedString, IecType, Time, TypeFamily, Value};
 
 pub(super) fn to_json(v: &Value) -> serde_json::Value {
     match *v {
@@ -12,11 +12,13 @@ pub(super) fn to_json(v: &Value) -> serde_json::Value {
         Value::Real(r) if r.is_finite() => r.into(),
         Value::Real(r) => r.to_string().into(),
         Value::Text(t) => t.as_str().into(),
+        // The IEC literal (`"LTIME#1m30s"`): exact, and readable in the file.
+        Value::Time(t) => t.to_string().into(),
     }
 }
 
 /// A saved value, read as the type it was saved as: a STRING whose text is `inf` stays text, a
-/// REAL saved as `"NaN"` (JSON has no NaN) is a number.
+/// REAL saved as `"NaN"` (JSON has no NaN) is a number, an LTIME is its duration literal.
 pub(super) fn from_json(v: &serde_json::Value, saved_as: IecType) -> Option<Value> {
     use serde_json::Value as J;
     Some(match (saved_as.family(), v) {
@@ -30,6 +32,7 @@ pub(super) fn from_json(v: &serde_json::Value, saved_as: IecType) -> Option<Valu
             t.try_set(s).ok()?;
             Value::Text(t)
         }
+        (TypeFamily::Time, J::String(s)) => Value::Time(Time::parse(s).ok()?),
         _ => return None,
     })
 }

@@ -6,7 +6,7 @@ use super::{
 };
 use crate::retain::{RetainStore, RetainWriter};
 use crate::shm::{RunState, SharedGlobalMemory, ShmOwner};
-use plc_core::GlobalMemory;
+use plc_core::{GlobalMemory, Time};
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::time::{Duration, Instant};
@@ -25,6 +25,8 @@ where
     retained: RetainedBytes,
     retain: Option<RetainWriter<T::Image>>,
     shm: Option<ShmOwner<T>>,
+    /// Where `Context::now` counts from: the runtime's start, on the monotonic clock.
+    epoch: Instant,
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
@@ -64,6 +66,7 @@ where
             image,
             retain,
             shm,
+            epoch: Instant::now(),
         };
         // The initial and restored values go out before the bus starts (which can take
         // seconds): a tool attaching meanwhile reads them, not a zeroed image.
@@ -106,6 +109,8 @@ where
         let start = Instant::now();
         let ctx = &mut self.ctx;
         ctx.cycle += 1;
+        // Beyond LTIME only after 292 years of running.
+        ctx.set_now(Time::try_from(start.duration_since(self.epoch)).unwrap_or(Time::MAX));
         let io = backend.exchange(&mut ctx.gm);
         ctx.inputs_valid = io.inputs_valid;
         ctx.bus_fault = io.bus_fault;

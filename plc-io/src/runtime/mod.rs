@@ -238,12 +238,13 @@ pub fn zero_outputs<T: GlobalMemory>(gm: &mut T) {
     }
 }
 
-/// The zero of a type: `false`, 0, 0.0 or "".
+/// The zero of a type: `false`, 0, 0.0, "" or `T#0s`.
 pub(crate) fn zero_of(ty: IecType) -> Value {
     match ty.family() {
         TypeFamily::Bool => Value::Bool(false),
         TypeFamily::Real => Value::Real(0.0),
         TypeFamily::String => Value::Text(Default::default()),
+        TypeFamily::Time => Value::Time(plc_core::Time::ZERO),
         _ => Value::UInt(0),
     }
 }

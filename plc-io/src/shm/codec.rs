@@ -43,6 +43,7 @@ pub(crate) fn from_raw(raw: u64, ty: IecType, bits: u32) -> Value {
             Value::Real(f64::from(f32::from_bits(raw as u32)))
         }
         TypeFamily::Real => Value::Real(f64::from_bits(raw)),
+        TypeFamily::Time => Value::Time(plc_core::Time::from_nanos(raw as i64)),
         _ => Value::UInt(raw),
     }
 }
@@ -62,6 +63,7 @@ pub(crate) fn to_raw(v: Value, ty: IecType) -> u64 {
         (Value::Real(f), TypeFamily::Real) => real(f),
         (Value::Int(i), _) => i as u64,
         (Value::UInt(u), _) => u,
+        (Value::Time(t), _) => t.as_nanos() as u64,
         (Value::Real(_) | Value::Text(_), _) => 0,
     }
 }

@@ -135,6 +135,7 @@ fn encode(value: &Value) -> (u64, u64, [u8; TEXT]) {
             text[..s.len()].copy_from_slice(s);
             (4, s.len() as u64)
         }
+        Value::Time(t) => (5, t.as_nanos() as u64),
     };
     (kind, num, text)
 }
@@ -145,6 +146,7 @@ fn decode(kind: u64, num: u64, text: &[u8]) -> Value {
         1 => Value::Int(num as i64),
         2 => Value::UInt(num),
         3 => Value::Real(f64::from_bits(num)),
+        5 => Value::Time(plc_core::Time::from_nanos(num as i64)),
         _ => {
             let len = usize::try_from(num).map_or(text.len(), |n| n.min(text.len()));
             let s = match std::str::from_utf8(&text[..len]) {

@@ -133,9 +133,9 @@ fn check_entry(
     };
     let width = ty.bits();
     let ok = match ty.family() {
-        TypeFamily::String => {
+        TypeFamily::String | TypeFamily::Time => {
             problems.push(format!(
-                "{at}: STRING is not a process data type: use an integer, real or bit-string type"
+                "{at}: {ty} is not a process data type: use an integer, real or bit-string type"
             ));
             return;
         }

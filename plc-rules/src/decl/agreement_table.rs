@@ -328,6 +328,36 @@ const ROWS: &[Row] = &[
         kinds: &[],
     },
     Row {
+        rule: "durations (LTIME) with initial literals of each prefix, a sign, a fraction",
+        rust: "struct Gm { #[plc(initial = \"T#1s500ms\")] a: Time, #[plc(initial = \"LTIME#-2h_30m\")] b: plc_core::Time, #[plc(initial = \"lt#1.5s\")] c: Time, d: [Time; 2] }",
+        json: Some(r#""a": {"type": "LTIME", "initial": "T#1s500ms"}, "b": {"type": "LTIME", "initial": "LTIME#-2h_30m"}, "c": {"type": "ltime", "initial": "lt#1.5s"}, "d": {"type": "LTIME", "dims": [2]}"#),
+        kinds: &[],
+    },
+    Row {
+        rule: "a duration literal whose later part reaches the next unit",
+        rust: "struct Gm { #[plc(initial = \"T#1h75m\")] delay: Time }",
+        json: Some(r#""delay": {"type": "LTIME", "initial": "T#1h75m"}"#),
+        kinds: &["InitialBadTime"],
+    },
+    Row {
+        rule: "a duration literal with its units out of order",
+        rust: "struct Gm { #[plc(initial = \"T#5s1m\")] delay: Time }",
+        json: Some(r#""delay": {"type": "LTIME", "initial": "T#5s1m"}"#),
+        kinds: &["InitialBadTime"],
+    },
+    Row {
+        rule: "a duration beyond LTIME",
+        rust: "struct Gm { #[plc(initial = \"T#106752d\")] delay: Time }",
+        json: Some(r#""delay": {"type": "LTIME", "initial": "T#106752d"}"#),
+        kinds: &["InitialOutOfRange"],
+    },
+    Row {
+        rule: "a bare number as the initial value of a duration (its unit would be a guess)",
+        rust: "struct Gm { #[plc(initial = 5000)] delay: Time }",
+        json: Some(r#""delay": {"type": "LTIME", "initial": 5000}"#),
+        kinds: &["InitialWrongKind"],
+    },
+    Row {
         rule: "initial text longer than the string",
         rust: "struct Gm { #[plc(initial = \"TEST-0001\")] test_id: FixedString<8> }",
         json: Some(r#""test_id": {"type": "string", "max_length": 8, "initial": "TEST-0001"}"#),

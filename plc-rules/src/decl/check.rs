@@ -8,7 +8,7 @@ use super::{Decl, DeclType, Direction, InitialValue, KnownType, Var};
 use crate::address::{Area, IecAddress, Size};
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS};
 use crate::link::Link;
-use crate::{IecType, TypeFamily, names};
+use crate::{IecType, Time, TimeError, TypeFamily, names};
 use std::format;
 use std::string::{String, ToString};
 use std::vec::Vec;
@@ -456,7 +456,9 @@ fn initial_and_iec_type<L: Clone>(decl: &Decl<L>, issues: &mut Vec<Issue<L>>) {
 }
 
 /// Why an initial value does not fit a variable of type `k` (declared as `iec`), if it does
-/// not. A bare integer is fine for REAL and LREAL (IEC 61131-3: integer to real widening).
+/// not. A bare integer is fine for REAL and LREAL (IEC 61131-3: integer to real widening); an
+/// LTIME takes a duration literal as text (`"T#5s"`), never a bare number, whose unit would
+/// be a guess.
 pub fn initial_misfit(
     value: &InitialValue,
     text: &str,
@@ -511,6 +513,15 @@ pub fn initial_misfit(
             })
         }
         _ if family == TypeFamily::String => wrong(Expected::Text),
+        InitialValue::Text(s) if family == TypeFamily::Time => match Time::parse(s) {
+            Ok(_) => None,
+            Err(TimeError::Overflow) => out_of_range(format!("{}..={}", Time::MIN, Time::MAX)),
+            Err(error) => Some(IssueKind::InitialBadTime {
+                text: text.to_string(),
+                error,
+            }),
+        },
+        _ if family == TypeFamily::Time => wrong(Expected::Duration),
         InitialValue::Float(_) if k.iec.is_integer() => wrong(Expected::NotReal),
         _ if k.iec.is_integer() => wrong(Expected::WholeNumber),
         _ => wrong(Expected::Number),

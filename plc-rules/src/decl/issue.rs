@@ -3,7 +3,7 @@
 
 use crate::address::{AddressError, IecAddress, Size};
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY};
-use crate::{Direction, IecType, LinkError, NameError};
+use crate::{Direction, IecType, LinkError, NameError, TimeError};
 use std::format;
 use std::string::{String, ToString};
 
@@ -33,6 +33,8 @@ pub enum Expected {
     Number,
     /// Text (for STRING).
     Text,
+    /// A duration literal in double quotes (for LTIME).
+    Duration,
 }
 
 /// One kind of problem, with what its message needs. The variants are the declaration rules.
@@ -244,6 +246,14 @@ pub enum IssueKind {
         /// What the type holds, as text (`0..=255`).
         range: String,
     },
+    /// An initial duration that is not a valid IEC duration literal (one beyond `LTIME`'s
+    /// range is [`InitialOutOfRange`](Self::InitialOutOfRange)).
+    InitialBadTime {
+        /// The value as written.
+        text: String,
+        /// What is wrong with it.
+        error: TimeError,
+    },
     /// Initial text longer than the string's capacity.
     InitialTooLong {
         /// Bytes of the text.
@@ -293,6 +303,7 @@ pub const KIND_NAMES: &[&str] = &[
     "BitTaken",
     "InitialWrongKind",
     "InitialOutOfRange",
+    "InitialBadTime",
     "InitialTooLong",
     "SharedLink",
 ];
@@ -331,6 +342,7 @@ impl IssueKind {
             IssueKind::BitTaken { .. } => "BitTaken",
             IssueKind::InitialWrongKind { .. } => "InitialWrongKind",
             IssueKind::InitialOutOfRange { .. } => "InitialOutOfRange",
+            IssueKind::InitialBadTime { .. } => "InitialBadTime",
             IssueKind::InitialTooLong { .. } => "InitialTooLong",
             IssueKind::SharedLink { .. } => "SharedLink",
         }
@@ -547,7 +559,14 @@ impl<L> Issue<L> {
                     "{text} is not a {iec} value: `initial` must be text in double quotes, such \
                      as \"TEST-001\""
                 ),
+                Expected::Duration => format!(
+                    "{text} is not a {iec} value: `initial` must be a duration literal in double \
+                     quotes, such as \"T#5s\" or \"T#1m30s\""
+                ),
             },
+            IssueKind::InitialBadTime { text, error } => {
+                format!("{text} is not a duration literal: {error}")
+            }
             IssueKind::InitialOutOfRange {
                 text,
                 iec,

@@ -1,4 +1,4 @@
-use plc_core::{FixedString, GlobalMemory, IecType};
+use plc_core::{FixedString, GlobalMemory, IecType, Time};
 
 #[derive(GlobalMemory, Debug, Clone, PartialEq)]
 pub struct Gm {
@@ -23,10 +23,12 @@ pub struct Gm {
     o: u64,
     p: FixedString<1>,
     q: FixedString<255>,
+    dwell: Time,
 }
 
 fn main() {
     let types: Vec<IecType> = Gm::VARIABLES.iter().map(|v| v.iec_type).collect();
-    assert_eq!(types[..16], IecType::ALL);
+    assert_eq!(types[..16], IecType::ALL[..16]);
     assert_eq!(types[16], IecType::String);
+    assert_eq!(types[17], IecType::ALL[16]);
 }
