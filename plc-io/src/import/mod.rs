@@ -12,6 +12,19 @@
 //! assert!(generated.code.contains("#[plc(source = \"impact67_0_digital_inputs\", bit = 0"));
 //! ```
 //!
+//! Structure types come in the list's `types` section, each becoming a `#[derive(PlcStruct)]`
+//! struct (docs/variable-lists.md describes both formats):
+//!
+//! ```
+//! let json = r#"{
+//!     "types": { "Axis": { "variables": { "pos": { "type": "f64" }, "homed": { "type": "bool" } } } },
+//!     "variables": { "lift": { "type": "Axis" }, "axes": { "type": "Axis", "dims": [3] } }
+//! }"#;
+//! let generated = plc_io::import::generate(json, &plc_io::import::Options::default()).unwrap();
+//! assert!(generated.code.contains("pub struct Axis {"));
+//! assert!(generated.code.contains("pub axes: [Axis; 3],"));
+//! ```
+//!
 //! The same variables as CSV ([`COLUMNS`]; RFC 4180 quoting, a header line naming the columns
 //! in any order, empty cells for what a variable does not declare):
 //!
@@ -138,10 +151,11 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
 #[cfg(feature = "import")]
 /// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same
 /// rules as [`generate`]. A structure type is declared by a row of type `STRUCT` (its
-/// description in the description column) and its members by rows named
-/// `<type>.<member>`; see [`csv_read`](self) in docs/import.md.
+/// description in the description column) and its members by rows named `<type>.<member>`
+/// (docs/variable-lists.md, "CSV").
 ///
-/// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`.
+/// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`
+/// (`variable Axis.pos` for a member, `type Axis` for a type's own row).
 pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let table = csv_read::parse(csv).map_err(ImportErrors)?;
     let lines = |ty: Option<usize>, var: usize| table.line_of(ty, var);
