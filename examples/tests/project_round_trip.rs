@@ -21,7 +21,8 @@ fn normalised(mut v: Value) -> Value {
 #[test]
 fn json_to_rust_to_json_is_the_identity() {
     let input: Value = serde_json::from_str(include_str!("../project.json")).unwrap();
-    let output: Value = serde_json::from_str(&plc_io::import::export_json::<Gm>().unwrap()).unwrap();
+    let output: Value =
+        serde_json::from_str(&plc_io::import::export_json::<Gm>().unwrap()).unwrap();
     assert_eq!(output, normalised(input));
 }
 

@@ -152,8 +152,12 @@ fn the_export_quotes_as_rfc_4180_says() {
 fn the_csv_and_json_exports_import_to_the_same_code() {
     let o = Options::default();
     assert_eq!(
-        generate_csv(&export_csv::<Quoting>().unwrap(), &o).unwrap().code,
-        generate(&export_json::<Quoting>().unwrap(), &o).unwrap().code
+        generate_csv(&export_csv::<Quoting>().unwrap(), &o)
+            .unwrap()
+            .code,
+        generate(&export_json::<Quoting>().unwrap(), &o)
+            .unwrap()
+            .code
     );
 }
 

@@ -34,9 +34,16 @@ fn a_structured_variable_and_an_array_of_them_import() {
         "types": { "Axis": axis() },
         "variables": { "lift": { "type": "Axis" }, "axes": { "type": "Axis", "dims": [3] } }
     });
-    let code = generate(&list.to_string(), &Options::default()).unwrap().code;
-    assert!(code.contains("use plc_core::{GlobalMemory, PlcStruct};"), "{code}");
-    assert!(code.contains("#[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]\npub struct Axis {"));
+    let code = generate(&list.to_string(), &Options::default())
+        .unwrap()
+        .code;
+    assert!(
+        code.contains("use plc_core::{GlobalMemory, PlcStruct};"),
+        "{code}"
+    );
+    assert!(
+        code.contains("#[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]\npub struct Axis {")
+    );
     assert!(code.contains("pub lift: Axis,"));
     assert!(code.contains("pub axes: [Axis; 3],"));
     // The structure before the program's struct that uses it.
@@ -55,9 +62,21 @@ fn a_member_error_is_named_by_its_path_in_the_types_section() {
     });
     let e = errors(&list);
     assert_eq!(e.len(), 3, "{e:#?}");
-    assert!(e[0].starts_with("types.Axis.variables.pos.link: "), "{}", e[0]);
-    assert!(e[1].starts_with("types.Axis.variables.fault.direction: "), "{}", e[1]);
-    assert!(e[2].starts_with("types.Axis.variables.count.initial: 300 is out of range"), "{}", e[2]);
+    assert!(
+        e[0].starts_with("types.Axis.variables.pos.link: "),
+        "{}",
+        e[0]
+    );
+    assert!(
+        e[1].starts_with("types.Axis.variables.fault.direction: "),
+        "{}",
+        e[1]
+    );
+    assert!(
+        e[2].starts_with("types.Axis.variables.count.initial: 300 is out of range"),
+        "{}",
+        e[2]
+    );
 }
 
 #[test]
@@ -71,12 +90,18 @@ fn a_cycle_is_refused_naming_it() {
     });
     one_error(
         list,
-        &["types.B.variables.a.type: ", "\"A\" contains itself: A.b -> B.a -> A"],
+        &[
+            "types.B.variables.a.type: ",
+            "\"A\" contains itself: A.b -> B.a -> A",
+        ],
     );
     let own = json!({
         "types": { "Node": { "variables": { "next": { "type": "Node", "dims": [2] } } } }
     });
-    one_error(own, &["types.Node.variables.next.type: ", "Node.next -> Node"]);
+    one_error(
+        own,
+        &["types.Node.variables.next.type: ", "Node.next -> Node"],
+    );
 }
 
 #[test]
@@ -87,7 +112,11 @@ fn an_unknown_type_is_refused_with_the_nearest_name() {
     });
     let e = errors(&list);
     assert_eq!(e.len(), 2, "{e:#?}");
-    assert!(e[0].starts_with("variables.lift.type: unknown type \"Axsi\" (did you mean \"Axis\"?)"), "{}", e[0]);
+    assert!(
+        e[0].starts_with("variables.lift.type: unknown type \"Axsi\" (did you mean \"Axis\"?)"),
+        "{}",
+        e[0]
+    );
     // Type names are exact: another case is a mistake the hint corrects.
     assert!(e[1].contains("(did you mean \"Axis\"?)"), "{}", e[1]);
 }
@@ -104,7 +133,8 @@ fn type_names_are_checked() {
         let list = json!({ "types": { name: axis() }, "variables": { "v": { "type": name } } });
         let e = errors(&list);
         assert!(
-            e.iter().any(|m| m.starts_with(&format!("types.{name}: ")) && m.contains(says)),
+            e.iter()
+                .any(|m| m.starts_with(&format!("types.{name}: ")) && m.contains(says)),
             "{name}: {e:#?}"
         );
     }
@@ -114,9 +144,19 @@ fn type_names_are_checked() {
     );
     let e = errors(&serde_json::from_str(&twice).unwrap());
     assert_eq!(e.len(), 1, "{e:#?}");
-    assert!(e[0].starts_with("types.AXIS: the type \"AXIS\" is declared already as \"Axis\""), "{}", e[0]);
+    assert!(
+        e[0].starts_with("types.AXIS: the type \"AXIS\" is declared already as \"Axis\""),
+        "{}",
+        e[0]
+    );
     let same_rust = json!({ "types": { "axis_t": axis(), "AxisT": axis() } });
-    one_error(same_rust, &["types.AxisT: ", "Rust name \"AxisT\" is that of the type \"axis_t\""]);
+    one_error(
+        same_rust,
+        &[
+            "types.AxisT: ",
+            "Rust name \"AxisT\" is that of the type \"axis_t\"",
+        ],
+    );
 }
 
 #[test]
@@ -129,7 +169,9 @@ fn a_type_has_members_and_only_known_fields() {
     assert_eq!(e.len(), 3, "{e:#?}");
     assert!(e[0].starts_with("types.Empty.variables: a structure needs at least one member"));
     assert!(e[1].starts_with("types.Odd.description: expected a string, found 3"));
-    assert!(e[2].starts_with("types.Odd.members: unknown field: use one of description, variables"));
+    assert!(
+        e[2].starts_with("types.Odd.members: unknown field: use one of description, variables")
+    );
 }
 
 #[test]
@@ -187,7 +229,10 @@ fn chain(n: usize) -> Value {
     types.insert("T0".into(), axis());
     for i in 1..n {
         let prev = format!("T{}", i - 1);
-        types.insert(format!("T{i}"), json!({ "variables": { "inner": { "type": prev } } }));
+        types.insert(
+            format!("T{i}"),
+            json!({ "variables": { "inner": { "type": prev } } }),
+        );
     }
     json!({ "types": types, "variables": { "top": { "type": format!("T{}", n - 1) } } })
 }
@@ -200,14 +245,22 @@ fn nesting_stops_at_eight_levels() {
     let e = errors(&chain(9));
     assert_eq!(e.len(), 2, "{e:#?}");
     assert!(e[0].starts_with("types.T8.variables.inner.type: the type of \"inner\" nests structures too deep: at most 8 levels"), "{}", e[0]);
-    assert!(e[1].starts_with("variables.top.type: the type of \"top\" nests structures too deep"), "{}", e[1]);
+    assert!(
+        e[1].starts_with("variables.top.type: the type of \"top\" nests structures too deep"),
+        "{}",
+        e[1]
+    );
 }
 
 #[test]
 fn a_deep_chain_of_types_is_refused_in_bounded_time_without_recursion() {
     let started = std::time::Instant::now();
     let e = errors(&chain(20_000));
-    assert!(e.iter().all(|m| m.contains("nests structures too deep")), "{:?}", &e[..2]);
+    assert!(
+        e.iter().all(|m| m.contains("nests structures too deep")),
+        "{:?}",
+        &e[..2]
+    );
     // One per member past the limit (types T8 and later) and one for the variable, as the
     // derive reports each field.
     assert_eq!(e.len(), 20_000 - 8 + 1);
@@ -225,8 +278,16 @@ fn an_image_of_four_gib_is_refused() {
     });
     let e = errors(&list);
     assert_eq!(e.len(), 2, "{e:#?}");
-    assert!(e[0].starts_with("types.Huge: the image of \"Huge\" is 4 GiB or more"), "{}", e[0]);
-    assert!(e[1].starts_with("the image of `Gm` is 4 GiB or more"), "{}", e[1]);
+    assert!(
+        e[0].starts_with("types.Huge: the image of \"Huge\" is 4 GiB or more"),
+        "{}",
+        e[0]
+    );
+    assert!(
+        e[1].starts_with("the image of `Gm` is 4 GiB or more"),
+        "{}",
+        e[1]
+    );
 }
 
 #[test]
@@ -265,9 +326,21 @@ fn a_sheet_s_structure_errors_name_the_line() {
     };
     assert_eq!(e.len(), 4, "{e:#?}");
     assert!(e[0].starts_with("line 2, column name: \"Axsi.pos\" is a member of the type \"Axsi\", which no row declares"), "{}", e[0]);
-    assert!(e[1].starts_with("line 3, type Axis, column link: a STRUCT row declares a type"), "{}", e[1]);
-    assert!(e[2].starts_with("line 4, variable Axis.pos, column link: "), "{}", e[2]);
-    assert!(e[3].starts_with("line 5, column name: \"Axis.a.b\" is not a member"), "{}", e[3]);
+    assert!(
+        e[1].starts_with("line 3, type Axis, column link: a STRUCT row declares a type"),
+        "{}",
+        e[1]
+    );
+    assert!(
+        e[2].starts_with("line 4, variable Axis.pos, column link: "),
+        "{}",
+        e[2]
+    );
+    assert!(
+        e[3].starts_with("line 5, column name: \"Axis.a.b\" is not a member"),
+        "{}",
+        e[3]
+    );
 }
 
 /// A type graph: `n` types whose members use types by index (`edges[i]` for type `i`);
@@ -280,7 +353,10 @@ fn type_graph(edges: &[Vec<usize>], dims: &[u64]) -> Value {
         members.insert("x".into(), json!({ "type": "u8" }));
         for (k, &u) in uses.iter().enumerate() {
             let d = dims[(i + k) % dims.len()];
-            members.insert(format!("m{k}"), json!({ "type": format!("T{}", u % n), "dims": [d] }));
+            members.insert(
+                format!("m{k}"),
+                json!({ "type": format!("T{}", u % n), "dims": [d] }),
+            );
         }
         types.insert(format!("T{i}"), json!({ "variables": members }));
     }

@@ -72,16 +72,21 @@ impl Table {
 
     /// The type a member row belongs to (by name, in any case), created at its first mention.
     fn type_of(&mut self, name: &str, index: &mut HashMap<String, usize>) -> usize {
-        *index.entry(name.to_ascii_lowercase()).or_insert_with(|| {
-            self.parsed.types.push(TypeDef {
-                name: name.to_string(),
-                fields: serde_json::Map::new(),
-                members: Parsed::new(),
-            });
-            self.type_lines.push(None);
-            self.member_lines.push((Vec::new(), Vec::new()));
-            self.parsed.types.len() - 1
-        })
+        *index
+            .entry(name.to_ascii_lowercase())
+            .or_insert_with(|| self.new_type(name))
+    }
+
+    /// A type with no members and no declaring row yet; its index.
+    fn new_type(&mut self, name: &str) -> usize {
+        self.parsed.types.push(TypeDef {
+            name: name.to_string(),
+            fields: serde_json::Map::new(),
+            members: Parsed::new(),
+        });
+        self.type_lines.push(None);
+        self.member_lines.push((Vec::new(), Vec::new()));
+        self.parsed.types.len() - 1
     }
 }
 
@@ -354,7 +359,11 @@ pub fn parse(text: &str) -> Result<Table, Vec<String>> {
             table.row_errors.push(format!(
                 "line {line}, column name: {:?} is a member of the type {:?}, which no row \
                  declares: add a row {},{STRUCT}",
-                format!("{}.{}", def.name, def.members.variables.first().map_or("", |m| m.0.as_str())),
+                format!(
+                    "{}.{}",
+                    def.name,
+                    def.members.variables.first().map_or("", |m| m.0.as_str())
+                ),
                 def.name,
                 def.name
             ));
@@ -385,16 +394,7 @@ fn struct_row(
         // A type seen only in member rows so far: this row declares it.
         Some(&t) if table.type_lines[t].is_none() => t,
         // A second declaration: a type of its own, which the checks report as a duplicate.
-        Some(_) => {
-            table.parsed.types.push(TypeDef {
-                name: name.clone(),
-                fields: serde_json::Map::new(),
-                members: Parsed::new(),
-            });
-            table.type_lines.push(None);
-            table.member_lines.push((Vec::new(), Vec::new()));
-            table.parsed.types.len() - 1
-        }
+        Some(_) => table.new_type(&name),
         None => table.type_of(&name, index),
     };
     table.type_lines[t] = Some(line);

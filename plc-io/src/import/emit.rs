@@ -54,7 +54,12 @@ pub fn rust_type_name(type_name: &str) -> String {
 pub fn check_type_names(checked: &Checked, struct_name: &str) -> Vec<(usize, String)> {
     let mut errors = Vec::new();
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
-    for (t, ty) in checked.types.iter().enumerate().filter(|(_, t)| !t.duplicate) {
+    for (t, ty) in checked
+        .types
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| !t.duplicate)
+    {
         let rust = rust_type_name(&ty.name);
         if rust == struct_name || TAKEN.contains(&rust.as_str()) || rust.is_empty() {
             errors.push((
@@ -259,10 +264,13 @@ fn rust_types(group: &Group, checked: &Checked) -> Result<Vec<String>, String> {
     let vars = group.decl.vars.iter().zip(&group.structured);
     vars.take(group.declared)
         .map(|(v, s)| match (s, v.ty.value.known()) {
-            (Some(s), _) => Ok(s.dims.iter().rev().fold(
-                rust_type_name(&checked.types[s.ty].name),
-                |inner, d| format!("[{inner}; {d}]"),
-            )),
+            (Some(s), _) => Ok(s
+                .dims
+                .iter()
+                .rev()
+                .fold(rust_type_name(&checked.types[s.ty].name), |inner, d| {
+                    format!("[{inner}; {d}]")
+                })),
             (None, Some(k)) => Ok(k.rust_type()),
             // Every generated variable has a type: one without is an error before emission.
             (None, None) => Err(format!(
@@ -341,12 +349,24 @@ pub fn emit(checked: &Checked, struct_name: &str, origin: &str) -> Result<String
         let g = &ty.group;
         let types = rust_types(g, checked)?;
         let rust = rust_type_name(&ty.name);
-        out.push_str(&emit_struct(&g.decl.vars[..g.declared], &types, &rust, &kind, &origin)?);
+        out.push_str(&emit_struct(
+            &g.decl.vars[..g.declared],
+            &types,
+            &rust,
+            &kind,
+            &origin,
+        )?);
     }
     let g = &checked.top;
     let types = rust_types(g, checked)?;
     let kind = Kind::Program { origin: &origin };
-    out.push_str(&emit_struct(&g.decl.vars[..g.declared], &types, struct_name, &kind, &origin)?);
+    out.push_str(&emit_struct(
+        &g.decl.vars[..g.declared],
+        &types,
+        struct_name,
+        &kind,
+        &origin,
+    )?);
     Ok(out)
 }
 
@@ -359,7 +379,12 @@ mod tests {
 
     /// The whole struct through syn and prettyplease, as the importer made it before: what
     /// [`emit_struct`] must equal.
-    fn by_prettyplease(vars: &[Var<ListAt>], types: &[String], kind: &Kind, origin: &str) -> String {
+    fn by_prettyplease(
+        vars: &[Var<ListAt>],
+        types: &[String],
+        kind: &Kind,
+        origin: &str,
+    ) -> String {
         let mut text = head(vars, "Gm", kind);
         for (v, ty) in vars.iter().zip(types) {
             text.push_str(&field(v, ty, origin));

@@ -12,6 +12,18 @@
 //! assert!(generated.code.contains("#[plc(source = \"impact67_0_digital_inputs\", bit = 0"));
 //! ```
 //!
+//! The same variables as CSV ([`COLUMNS`]; RFC 4180 quoting, a header line naming the columns
+//! in any order, empty cells for what a variable does not declare):
+//!
+//! ```
+//! let csv = "name,type,link,source,bit,description\r\n\
+//!            impact67_0_digital_inputs,u16,ethercat.impact67_0.digital_inputs,,,\r\n\
+//!            ls_centering_neg,bool,,impact67_0_digital_inputs,0,\r\n\
+//!            info_test_id,string,,,,\"Test identifier, as printed\"\r\n";
+//! let generated = plc_io::import::generate_csv(csv, &plc_io::import::Options::default()).unwrap();
+//! assert!(generated.code.contains("/// Test identifier, as printed"));
+//! ```
+//!
 //! Structure types come in the list's `types` section, each becoming a `#[derive(PlcStruct)]`
 //! struct (docs/variable-lists.md describes both formats):
 //!
@@ -23,18 +35,6 @@
 //! let generated = plc_io::import::generate(json, &plc_io::import::Options::default()).unwrap();
 //! assert!(generated.code.contains("pub struct Axis {"));
 //! assert!(generated.code.contains("pub axes: [Axis; 3],"));
-//! ```
-//!
-//! The same variables as CSV ([`COLUMNS`]; RFC 4180 quoting, a header line naming the columns
-//! in any order, empty cells for what a variable does not declare):
-//!
-//! ```
-//! let csv = "name,type,link,source,bit,description\r\n\
-//!            impact67_0_digital_inputs,u16,ethercat.impact67_0.digital_inputs,,,\r\n\
-//!            ls_centering_neg,bool,,impact67_0_digital_inputs,0,\r\n\
-//!            info_test_id,string,,,,\"Test identifier, as printed\"\r\n";
-//! let generated = plc_io::import::generate_csv(csv, &plc_io::import::Options::default()).unwrap();
-//! assert!(generated.code.contains("/// Test identifier, as printed"));
 //! ```
 
 // The importer is feature `import`, the export feature `export`. The export writes the CSV
@@ -185,7 +185,14 @@ pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErr
             None => format!("{line}type {name}: {message}"),
         }
     };
-    finish(&checked, options, table.row_errors.clone(), place, place_type).map_err(|mut e| {
+    finish(
+        &checked,
+        options,
+        table.row_errors.clone(),
+        place,
+        place_type,
+    )
+    .map_err(|mut e| {
         // In the order of the file, as a user fixes them going down the sheet (the sort is
         // stable: one row's errors keep their column order).
         e.0.sort_by_key(|m| line_of(m));

@@ -228,7 +228,9 @@ impl Reader<'_> {
         if let Some(&t) = types.index.get(ty.as_str()) {
             return Some(Declared::Structure(t));
         }
-        let basic = ["bool", "u8", "u16", "u32", "u64", "i8", "i16", "i32", "i64", "f32", "f64"];
+        let basic = [
+            "bool", "u8", "u16", "u32", "u64", "i8", "i16", "i32", "i64", "f32", "f64",
+        ];
         let candidates = types.names.iter().copied().chain(basic).chain(["string"]);
         let hint = plc_rules::names::nearest(&ty, candidates)
             .map_or_else(String::new, |n| format!(" (did you mean {n:?}?)"));
@@ -868,8 +870,20 @@ pub fn check(parsed: &Parsed, lines: Lines) -> Checked {
         .enumerate()
         .map(|(t, (def, duplicate))| CheckedType {
             name: def.name.clone(),
-            description: def.fields.get("description").and_then(Value::as_str).unwrap_or("").to_string(),
-            group: read_group(Some(t), &def.members, &names, &wording, &mut errors, &mut warnings),
+            description: def
+                .fields
+                .get("description")
+                .and_then(Value::as_str)
+                .unwrap_or("")
+                .to_string(),
+            group: read_group(
+                Some(t),
+                &def.members,
+                &names,
+                &wording,
+                &mut errors,
+                &mut warnings,
+            ),
             duplicate,
         })
         .collect();
@@ -923,8 +937,8 @@ mod agreement {
             } else {
                 format!("{{ \"variables\": {{ {json} }} }}")
             };
-            let parsed = super::super::parse::parse(&list)
-                .unwrap_or_else(|e| panic!("{}: {e}", row.rule));
+            let parsed =
+                super::super::parse::parse(&list).unwrap_or_else(|e| panic!("{}: {e}", row.rule));
             let checked = super::check(&parsed, &|_, _| None);
             let problems = checked.errors.iter().chain(&checked.warnings);
             let format: Vec<&String> = problems
