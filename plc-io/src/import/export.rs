@@ -122,7 +122,9 @@ fn type_json(name: &str, v: &VarDescriptor, types: &mut Types, depth: usize) -> 
     let def = json!({ "variables": members });
     match types.json.get(name) {
         // By text: the members' order is part of the type (its layout).
-        Some(known) if known.to_string() == def.to_string() => Ok(()),
+        Some(known) if serde_json::to_string(known).ok() == serde_json::to_string(&def).ok() => {
+            Ok(())
+        }
         Some(_) => Err(format!(
             "two structure types are named {name:?} with different members (one in {}, one \
              in {:?}): give one another name (`#[plc(name = \"...\")]`), as a list names each \

@@ -263,7 +263,7 @@ fn check_level(
                     b.source
                 ));
             }
-            if v.type_name.is_some() != !v.members.is_empty() {
+            if v.type_name.is_some() == v.members.is_empty() {
                 return Err(format!(
                     "{} has a type name without members or the reverse",
                     at()
