@@ -131,6 +131,7 @@ fn type_names_are_checked() {
     for (name, says) in [
         ("INT", "invalid type name \"INT\""),
         ("1axis", "invalid type name \"1axis\""),
+        ("f64", "it is the name of a basic type"),
         ("ax__is", "invalid type name"),
         ("PlcStruct", "a name the generated module uses"),
         ("gm", "the type's Rust name \"Gm\""),

@@ -663,6 +663,15 @@ fn type_rules(t: usize, def: &TypeDef, duplicate_of: Option<&str>) -> Vec<TypePr
     };
     if let Err(e) = plc_rules::names::check_name(&def.name) {
         problem(None, format!("invalid type name {:?}: {e}", def.name));
+    } else if def.name.parse::<IecType>().is_ok() {
+        // `"type": "f64"` would name the basic type, never this one.
+        problem(
+            None,
+            format!(
+                "invalid type name {:?}: it is the name of a basic type; choose another name",
+                def.name
+            ),
+        );
     }
     if let Some(first) = duplicate_of {
         problem(
