@@ -32,6 +32,6 @@ fn the_export_gives_back_the_variables_of_the_project_file() {
         }
     }
     let output: serde_json::Value =
-        serde_json::from_str(&plc_io::import::export_json::<Station>()).unwrap();
+        serde_json::from_str(&plc_io::import::export_json::<Station>().unwrap()).unwrap();
     assert_eq!(output["variables"], expected);
 }

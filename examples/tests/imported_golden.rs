@@ -63,6 +63,6 @@ fn the_golden_struct_exports_the_json_it_came_from() {
     input["variables"]["Speed"]["type"] = "i32".into();
     input["variables"]["lamp"]["type"] = "bool".into();
     let output: serde_json::Value =
-        serde_json::from_str(&plc_io::import::export_json::<Press>()).unwrap();
+        serde_json::from_str(&plc_io::import::export_json::<Press>().unwrap()).unwrap();
     assert_eq!(output["variables"], input["variables"]);
 }

@@ -399,6 +399,21 @@ fn emitted_code_matches_the_golden_file() {
     assert_eq!(code, include_str!("golden/press.rs"));
 }
 
+/// A list with structure types (nested, in arrays, with a Rust name other than the type name):
+/// the golden file is compiled and exported back by `examples/tests/imported_structures.rs`.
+#[test]
+fn emitted_structures_match_the_golden_file() {
+    let json = include_str!("golden/axes.json");
+    let code = golden("axes", json, "Machine", "axes.json");
+    assert_eq!(code, include_str!("golden/axes.rs"));
+    // Written directly, but as prettyplease prints the whole module (which drops the first,
+    // plain comment).
+    let file = syn::parse_file(&code).unwrap();
+    let (comment, rest) = code.split_once("\n\n").unwrap();
+    assert!(comment.starts_with("// Generated"));
+    assert_eq!(rest, prettyplease::unparse(&file));
+}
+
 /// Imports `golden/<name>.json` (given as `json`) and returns the code; with
 /// `GOLDEN_OVERWRITE` set, writes it to `golden/<name>.rs` first.
 fn golden(name: &str, json: &str, struct_name: &str, origin: &str) -> String {

@@ -132,7 +132,7 @@ struct Quoting {
 
 #[test]
 fn the_export_quotes_as_rfc_4180_says() {
-    let csv = export_csv::<Quoting>();
+    let csv = export_csv::<Quoting>().unwrap();
     assert_eq!(
         csv,
         format!(
@@ -152,8 +152,12 @@ fn the_export_quotes_as_rfc_4180_says() {
 fn the_csv_and_json_exports_import_to_the_same_code() {
     let o = Options::default();
     assert_eq!(
-        generate_csv(&export_csv::<Quoting>(), &o).unwrap().code,
-        generate(&export_json::<Quoting>(), &o).unwrap().code
+        generate_csv(&export_csv::<Quoting>().unwrap(), &o)
+            .unwrap()
+            .code,
+        generate(&export_json::<Quoting>().unwrap(), &o)
+            .unwrap()
+            .code
     );
 }
 

@@ -432,6 +432,40 @@ pub fn same_name(a: &str, b: &str) -> bool {
     a.eq_ignore_ascii_case(b)
 }
 
+/// The name of `names` nearest `wrong` (case-insensitively), if one is near: a typo or two,
+/// at most a third of its characters changed. For "did you mean" hints.
+#[cfg(feature = "std")]
+pub fn nearest<'a>(wrong: &str, names: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let wrong_lower = std::string::String::from(wrong).to_ascii_lowercase();
+    let limit = wrong.chars().count().div_ceil(3);
+    names
+        .into_iter()
+        .map(|n| (edit_distance(&wrong_lower, &n.to_ascii_lowercase()), n))
+        .filter(|&(d, _)| d <= limit)
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, n)| n)
+}
+
+/// Levenshtein distance of two short names, by characters.
+#[cfg(feature = "std")]
+fn edit_distance(a: &str, b: &str) -> usize {
+    use std::vec::Vec;
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let above = row[j + 1];
+            row[j + 1] = (above + 1)
+                .min(row[j] + 1)
+                .min(diagonal + usize::from(ca != *cb));
+            diagonal = above;
+        }
+    }
+    row[b.len()]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

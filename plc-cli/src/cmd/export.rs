@@ -8,9 +8,9 @@ use plc_io::shm::DynSegment;
 pub fn run(segment: &str, csv: bool) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
     if csv {
-        print!("{}", plc_io::import::descriptor_to_csv(seg.descriptor()));
+        print!("{}", plc_io::import::descriptor_to_csv(seg.descriptor())?);
     } else {
-        let json = plc_io::import::descriptor_to_json(seg.descriptor());
+        let json = plc_io::import::descriptor_to_json(seg.descriptor())?;
         println!("{}", serde_json::to_string_pretty(&json)?);
     }
     Ok(())

@@ -1,9 +1,21 @@
 //! Reading a CSV variable list: one row per variable under a header line naming the columns,
 //! RFC 4180 quoting. Each cell becomes the JSON value the same field has in a project file, so
 //! CSV goes through exactly the checks JSON does; this file only knows about rows and cells.
+//!
+//! Structure types take rows of their own (docs/variable-lists.md, "CSV"): a row of type
+//! `STRUCT` declares a type (`Axis,STRUCT`, its description in the description column), and
+//! rows named `<type>.<member>` declare its members (`Axis.pos,f64`), in any order; a variable
+//! of the type is a row like any other (`axes,Axis` with `dims` 3). A member row names its
+//! type rather than a variable's path, so one type used by many variables is declared once,
+//! and a sheet reads back as the JSON list's `types` section reads.
 
-use super::parse::Parsed;
+use super::parse::{Parsed, TypeDef};
 use serde_json::Value;
+use std::collections::HashMap;
+
+/// The `type` cell of a row declaring a structure type (IEC 61131-3 declares one as
+/// `TYPE Axis : STRUCT ... END_STRUCT END_TYPE`).
+pub const STRUCT: &str = "STRUCT";
 
 /// The CSV columns: first those of the tooling of the framework the JSON format comes from (`name` .. `initial`), then
 /// the rest of a variable's fields, so that nothing of a declaration is lost.
@@ -35,6 +47,47 @@ pub struct Table {
     pub duplicate_lines: Vec<u64>,
     /// Problems of single rows (an empty name, too many cells); the other rows are still read.
     pub row_errors: Vec<String>,
+    /// The line of each type's `STRUCT` row (same order as `parsed.types`).
+    pub type_lines: Vec<Option<u64>>,
+    /// The lines of each type's member rows, and of its members' second uses.
+    pub member_lines: Vec<(Vec<u64>, Vec<u64>)>,
+}
+
+impl Table {
+    /// The line of a variable (`ty` `None`) or of a type's member: the variables first, then
+    /// the second uses of a name, as the declaration holds them.
+    pub fn line_of(&self, ty: Option<usize>, var: usize) -> Option<u64> {
+        let (parsed, lines, duplicate_lines) = match ty {
+            None => (&self.parsed, &self.lines, &self.duplicate_lines),
+            Some(t) => {
+                let (l, d) = self.member_lines.get(t)?;
+                (&self.parsed.types.get(t)?.members, l, d)
+            }
+        };
+        match var.checked_sub(parsed.variables.len()) {
+            None => lines.get(var).copied(),
+            Some(k) => duplicate_lines.get(k).copied(),
+        }
+    }
+
+    /// The type a member row belongs to (by name, in any case), created at its first mention.
+    fn type_of(&mut self, name: &str, index: &mut HashMap<String, usize>) -> usize {
+        *index
+            .entry(name.to_ascii_lowercase())
+            .or_insert_with(|| self.new_type(name))
+    }
+
+    /// A type with no members and no declaring row yet; its index.
+    fn new_type(&mut self, name: &str) -> usize {
+        self.parsed.types.push(TypeDef {
+            name: name.to_string(),
+            fields: serde_json::Map::new(),
+            members: Parsed::new(),
+        });
+        self.type_lines.push(None);
+        self.member_lines.push((Vec::new(), Vec::new()));
+        self.parsed.types.len() - 1
+    }
 }
 
 const HEADER_HINT: &str =
@@ -235,7 +288,10 @@ pub fn parse(text: &str) -> Result<Table, Vec<String>> {
         lines: Vec::new(),
         duplicate_lines: Vec::new(),
         row_errors: Vec::new(),
+        type_lines: Vec::new(),
+        member_lines: Vec::new(),
     };
+    let mut type_index: HashMap<String, usize> = HashMap::new();
     let type_col = cols.iter().position(|c| *c == "type");
     let mut lines = LineCounter {
         text: text.as_bytes(),
@@ -273,11 +329,76 @@ pub fn parse(text: &str) -> Result<Table, Vec<String>> {
             ));
             continue;
         };
-        if table.parsed.push(name, Value::Object(fields)) {
+        if ty.trim().eq_ignore_ascii_case(STRUCT) {
+            struct_row(&mut table, &mut type_index, name, fields, line);
+        } else if let Some((type_name, member)) = name.split_once('.') {
+            if type_name.is_empty() || member.is_empty() || member.contains('.') {
+                table.row_errors.push(format!(
+                    "line {line}, column name: {name:?} is not a member: a member row is named \
+                     <type>.<member> (Axis.pos), with one dot"
+                ));
+                continue;
+            }
+            let t = table.type_of(type_name, &mut type_index);
+            let (lines, duplicates) = &mut table.member_lines[t];
+            let members = &mut table.parsed.types[t].members;
+            if members.push(member.to_string(), Value::Object(fields)) {
+                lines.push(line);
+            } else {
+                duplicates.push(line);
+            }
+        } else if table.parsed.push(name, Value::Object(fields)) {
             table.lines.push(line);
         } else {
             table.duplicate_lines.push(line);
         }
     }
+    for (t, def) in table.parsed.types.iter().enumerate() {
+        if table.type_lines[t].is_none() {
+            let line = table.member_lines[t].0.first().copied().unwrap_or(0);
+            table.row_errors.push(format!(
+                "line {line}, column name: {:?} is a member of the type {:?}, which no row \
+                 declares: add a row {},{STRUCT}",
+                format!(
+                    "{}.{}",
+                    def.name,
+                    def.members.variables.first().map_or("", |m| m.0.as_str())
+                ),
+                def.name,
+                def.name
+            ));
+        }
+    }
     Ok(table)
+}
+
+/// A `STRUCT` row: the type's description; its other cells are refused (a type has only
+/// members, given by their own rows).
+fn struct_row(
+    table: &mut Table,
+    index: &mut HashMap<String, usize>,
+    name: String,
+    mut fields: serde_json::Map<String, Value>,
+    line: u64,
+) {
+    fields.remove("type");
+    for col in fields.keys().filter(|c| *c != "description") {
+        table.row_errors.push(format!(
+            "line {line}, type {name}, column {col}: a {STRUCT} row declares a type by its \
+             name and description; give the members' {col} on their rows (<type>.<member>)"
+        ));
+    }
+    fields.retain(|c, _| c == "description");
+    let key = name.to_ascii_lowercase();
+    let t = match index.get(&key) {
+        // A type seen only in member rows so far: this row declares it.
+        Some(&t) if table.type_lines[t].is_none() => t,
+        // A second declaration: a type of its own, which the checks report as a duplicate.
+        Some(_) => table.new_type(&name),
+        None => table.type_of(&name, index),
+    };
+    table.type_lines[t] = Some(line);
+    // The declaring row spells the name (a member row may have used another case).
+    table.parsed.types[t].name = name;
+    table.parsed.types[t].fields = fields;
 }

@@ -2,7 +2,7 @@
 //! 4180 quoting (CRLF line ends, fields with commas, quotes or line breaks in double quotes).
 //! The cells are written so that reading them back gives the same JSON values.
 
-use super::csv_read::COLUMNS;
+use super::csv_read::{COLUMNS, STRUCT};
 use serde_json::Value;
 
 fn cell(col: &str, v: Option<&Value>) -> String {
@@ -15,20 +15,33 @@ fn cell(col: &str, v: Option<&Value>) -> String {
     }
 }
 
-/// The CSV text of `{ "variables": { name: { ... } } }`.
+/// The CSV text of `{ "types": { .. }, "variables": { name: { ... } } }`: each type as its
+/// `STRUCT` row and its members' `<type>.<member>` rows, then the variables.
 pub fn to_csv(list: &Value) -> String {
     let write = || -> Result<Vec<u8>, Box<dyn std::error::Error>> {
         let mut w = csv::WriterBuilder::new()
             .terminator(csv::Terminator::CRLF)
             .from_writer(Vec::new());
         w.write_record(COLUMNS)?;
-        if let Some(vars) = list["variables"].as_object() {
-            for (name, var) in vars {
-                w.write_record(COLUMNS.iter().map(|&col| match col {
-                    "name" => name.clone(),
-                    _ => cell(col, var.get(col)),
-                }))?;
+        let mut row = |name: &str, var: &Value| {
+            w.write_record(COLUMNS.iter().map(|&col| match col {
+                "name" => name.to_string(),
+                _ => cell(col, var.get(col)),
+            }))
+        };
+        for (ty, def) in list["types"].as_object().into_iter().flatten() {
+            let mut head = serde_json::Map::new();
+            head.insert("type".into(), STRUCT.into());
+            if let Some(d) = def.get("description") {
+                head.insert("description".into(), d.clone());
             }
+            row(ty, &Value::Object(head))?;
+            for (member, var) in def["variables"].as_object().into_iter().flatten() {
+                row(&format!("{ty}.{member}"), var)?;
+            }
+        }
+        for (name, var) in list["variables"].as_object().into_iter().flatten() {
+            row(name, var)?;
         }
         Ok(w.into_inner().map_err(|e| e.to_string())?)
     };

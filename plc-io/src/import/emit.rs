@@ -1,10 +1,11 @@
-//! Writing the checked variables as a Rust module: one `#[derive(GlobalMemory)]` struct, doc
+//! Writing the checked variables as a Rust module: one `#[derive(PlcStruct)]` struct per type
+//! of the list's `types`, in dependency order, then one `#[derive(GlobalMemory)]` struct; doc
 //! comments from descriptions, every declared property as a `#[plc(...)]` key, formatted as
 //! prettyplease formats it (short lines written directly, long ones by prettyplease).
 
-use super::validate::ListAt;
+use super::validate::{Checked, Group, ListAt};
 use plc_rules::IecType;
-use plc_rules::decl::{KnownType, Var};
+use plc_rules::decl::Var;
 
 /// Rust's keywords: a variable of one of these names becomes a raw identifier (`r#type`).
 const KEYWORDS: &[&str] = &[
@@ -28,7 +29,69 @@ fn ident(name: &str) -> String {
 
 /// Names the generated module defines or imports: a struct of one of these names would not
 /// compile (or would shadow what the module needs).
-const TAKEN: &[&str] = &["GlobalMemory", "FixedString", "Time", "Self", "_"];
+const TAKEN: &[&str] = &[
+    "GlobalMemory",
+    "FixedString",
+    "PlcStruct",
+    "Time",
+    "Self",
+    "_",
+];
+
+/// The Rust name of a structure type: its name made an upper camel case identifier (`axis_t`
+/// is `AxisT`, `AXIS` is `Axis`), as Rust names types; a part in capitals keeps only its first
+/// one, so the name passes clippy's acronym lint.
+pub fn rust_type_name(type_name: &str) -> String {
+    let mut out = String::with_capacity(type_name.len());
+    for part in type_name.split('_').filter(|p| !p.is_empty()) {
+        let all_caps = !part.chars().any(|c| c.is_ascii_lowercase());
+        for (i, c) in part.chars().enumerate() {
+            match (i, all_caps) {
+                (0, _) => out.push(c.to_ascii_uppercase()),
+                (_, true) => out.push(c.to_ascii_lowercase()),
+                (_, false) => out.push(c),
+            }
+        }
+    }
+    out
+}
+
+/// Whether the types' Rust names give code that compiles: each a name the module does not use
+/// itself (the program's struct, an import), and no two the same. Errors read `types.<name>:
+/// ...`, the placing of the caller's format.
+pub fn check_type_names(checked: &Checked, struct_name: &str) -> Vec<(usize, String)> {
+    let mut errors = Vec::new();
+    let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    for (t, ty) in checked
+        .types
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| !t.duplicate)
+    {
+        let rust = rust_type_name(&ty.name);
+        if rust == struct_name || TAKEN.contains(&rust.as_str()) || rust.is_empty() {
+            errors.push((
+                t,
+                format!(
+                    "the type's Rust name {rust:?} is a name the generated module uses \
+                     ({struct_name}, {}): rename the type",
+                    TAKEN[..4].join(", ")
+                ),
+            ));
+        } else if let Some(&first) = seen.get(&rust) {
+            errors.push((
+                t,
+                format!(
+                    "the type's Rust name {rust:?} is that of the type {:?} too: rename one",
+                    checked.types[first].name
+                ),
+            ));
+        } else {
+            seen.insert(rust, t);
+        }
+    }
+    errors
+}
 
 /// Whether the struct name gives code that compiles: an identifier, not a keyword, not a name
 /// the module imports.
@@ -70,24 +133,66 @@ fn one_line(text: &str) -> String {
     comment_line(text).replace(['\r', '\n'], " ")
 }
 
-/// The `use` line, the struct's doc and attributes and its opening line, formatted.
-fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
-    let uses =
-        |test: fn(&KnownType) -> bool| vars.iter().any(|v| v.ty.value.known().is_some_and(test));
-    let strings = uses(|k| k.capacity.is_some());
-    let times = uses(|k| k.iec == IecType::Ltime);
-    let imports = match (strings, times) {
-        (false, false) => "GlobalMemory",
-        (true, false) => "{FixedString, GlobalMemory}",
-        (false, true) => "{GlobalMemory, Time}",
-        (true, true) => "{FixedString, GlobalMemory, Time}",
+/// The `use` line of the module: what its structs need.
+fn use_line(checked: &Checked) -> String {
+    let groups = checked.types.iter().map(|t| &t.group).chain([&checked.top]);
+    let uses = |test: fn(&plc_rules::decl::KnownType) -> bool| {
+        groups
+            .clone()
+            .flat_map(|g| &g.decl.vars[..g.declared])
+            .any(|v| v.ty.value.known().is_some_and(test))
     };
-    let mut out = format!(
-        "use plc_core::{imports};\n\
-         /// The variables of {}.\n\
-         #[derive(GlobalMemory, Debug, Clone)]\n",
-        origin.trim_end()
-    );
+    let mut names = Vec::new();
+    if uses(|k| k.capacity.is_some()) {
+        names.push("FixedString");
+    }
+    names.push("GlobalMemory");
+    if !checked.types.is_empty() {
+        names.push("PlcStruct");
+    }
+    if uses(|k| k.iec == IecType::Ltime) {
+        names.push("Time");
+    }
+    match names.as_slice() {
+        [one] => format!("use plc_core::{one};\n"),
+        more => format!("use plc_core::{{{}}};\n", more.join(", ")),
+    }
+}
+
+/// What a struct is: the program's variables or a structure type.
+enum Kind<'a> {
+    /// The `GlobalMemory`, with the module's origin.
+    Program { origin: &'a str },
+    /// A `PlcStruct`: its type name and description.
+    Structure { name: &'a str, description: &'a str },
+}
+
+/// A struct's doc and attributes and its opening line, formatted.
+fn head(vars: &[Var<ListAt>], struct_name: &str, kind: &Kind) -> String {
+    let mut out = match kind {
+        Kind::Program { origin } => format!(
+            "/// The variables of {}.\n#[derive(GlobalMemory, Debug, Clone)]\n",
+            origin.trim_end()
+        ),
+        Kind::Structure { name, description } => {
+            let mut doc = String::new();
+            for line in description
+                .split(['\r', '\n'])
+                .map(comment_line)
+                .filter(|l| !l.trim().is_empty())
+            {
+                doc.push_str(&format!("/// {}\n", line.trim()));
+            }
+            if doc.is_empty() {
+                doc = format!("/// The structure {name}.\n");
+            }
+            doc.push_str("#[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]\n");
+            if *name != struct_name {
+                doc.push_str(&format!("#[plc(name = {name:?})]\n"));
+            }
+            doc
+        }
+    };
     if vars
         .iter()
         .any(|v| v.name.value.chars().any(|c| c.is_ascii_uppercase()))
@@ -100,14 +205,7 @@ fn head(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
 
 /// One field: doc comment, `#[plc(...)]`, declaration; formatted as prettyplease formats it
 /// when each line is short (longer lines are left to prettyplease, see [`emit`]).
-fn field(v: &Var<ListAt>, origin: &str) -> Result<String, String> {
-    // Every generated variable has a type: one without is an error before emission.
-    let k = v.ty.value.known().ok_or_else(|| {
-        format!(
-            "variable {:?} has no type but reached the code generator; please report this",
-            v.name.value
-        )
-    })?;
+fn field(v: &Var<ListAt>, rust_type: &str, origin: &str) -> String {
     let mut out = String::new();
     let description = v.description.trim();
     // A description rustc would refuse in a comment keeps its exact text in `description`,
@@ -170,12 +268,31 @@ fn field(v: &Var<ListAt>, origin: &str) -> Result<String, String> {
     if !keys.is_empty() {
         out.push_str(&format!("    #[plc({})]\n", keys.join(", ")));
     }
-    out.push_str(&format!(
-        "    pub {}: {},\n",
-        ident(&v.name.value),
-        k.rust_type()
-    ));
-    Ok(out)
+    out.push_str(&format!("    pub {}: {rust_type},\n", ident(&v.name.value)));
+    out
+}
+
+/// The Rust type of each variable of a group: a basic type as the model writes it, a
+/// structure by its type's Rust name, in arrays as dimensioned.
+fn rust_types(group: &Group, checked: &Checked) -> Result<Vec<String>, String> {
+    let vars = group.decl.vars.iter().zip(&group.structured);
+    vars.take(group.declared)
+        .map(|(v, s)| match (s, v.ty.value.known()) {
+            (Some(s), _) => Ok(s
+                .dims
+                .iter()
+                .rev()
+                .fold(rust_type_name(&checked.types[s.ty].name), |inner, d| {
+                    format!("[{inner}; {d}]")
+                })),
+            (None, Some(k)) => Ok(k.rust_type()),
+            // Every generated variable has a type: one without is an error before emission.
+            (None, None) => Err(format!(
+                "variable {:?} has no type but reached the code generator; please report this",
+                v.name.value
+            )),
+        })
+        .collect()
 }
 
 /// Lines up to this many bytes are printed by prettyplease as they are written here (its
@@ -196,24 +313,26 @@ fn field_by_prettyplease(text: &str) -> Result<String, String> {
     Ok(inner.to_string())
 }
 
-/// The module, formatted as prettyplease formats it. Writing it directly is ten times faster
-/// than parsing and printing 10,000 fields (BENCHMARKS.md, `import_10k_ms`); the fields that prettyplease would break
-/// across lines are still printed by it, and a test checks the whole against prettyplease.
-pub fn emit(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> Result<String, String> {
-    let origin = one_line(origin);
-    // A plain comment (not `//!`), so the module can also be `include!`d.
-    let mut out = format!(
-        "// Generated by `plc import` from {origin}: edit that file and import again.\n\n{}",
-        head(vars, struct_name, &origin)
-    );
+/// One struct, formatted as prettyplease formats it. Writing it directly is ten times faster
+/// than parsing and printing 10,000 fields (BENCHMARKS.md, `import_10k_ms`); the fields that
+/// prettyplease would break across lines are still printed by it, and a test checks the whole
+/// against prettyplease.
+fn emit_struct(
+    vars: &[Var<ListAt>],
+    types: &[String],
+    struct_name: &str,
+    kind: &Kind,
+    origin: &str,
+) -> Result<String, String> {
+    let mut out = head(vars, struct_name, kind);
     if vars.is_empty() {
         // prettyplease closes an empty struct on its opening line.
         out.truncate(out.len() - 1);
         out.push_str("}\n");
         return Ok(out);
     }
-    for v in vars {
-        let text = field(v, &origin)?;
+    for (v, ty) in vars.iter().zip(types) {
+        let text = field(v, ty, origin);
         let long = text
             .lines()
             .any(|l| l.len() > SHORT_LINE && !l.trim_start().starts_with("///"));
@@ -227,6 +346,44 @@ pub fn emit(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> Result<Str
     Ok(out)
 }
 
+/// The module: the `use` line, the structure types in dependency order, the program's struct.
+pub fn emit(checked: &Checked, struct_name: &str, origin: &str) -> Result<String, String> {
+    let origin = one_line(origin);
+    // A plain comment (not `//!`), so the module can also be `include!`d.
+    let mut out = format!(
+        "// Generated by `plc import` from {origin}: edit that file and import again.\n\n{}",
+        use_line(checked)
+    );
+    for &t in &checked.order {
+        let ty = &checked.types[t];
+        let kind = Kind::Structure {
+            name: &ty.name,
+            description: ty.description.trim(),
+        };
+        let g = &ty.group;
+        let types = rust_types(g, checked)?;
+        let rust = rust_type_name(&ty.name);
+        out.push_str(&emit_struct(
+            &g.decl.vars[..g.declared],
+            &types,
+            &rust,
+            &kind,
+            &origin,
+        )?);
+    }
+    let g = &checked.top;
+    let types = rust_types(g, checked)?;
+    let kind = Kind::Program { origin: &origin };
+    out.push_str(&emit_struct(
+        &g.decl.vars[..g.declared],
+        &types,
+        struct_name,
+        &kind,
+        &origin,
+    )?);
+    Ok(out)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -234,24 +391,39 @@ mod tests {
     use plc_rules::decl::{Initial, InitialValue, KnownType, Located};
     use proptest::prelude::*;
 
-    /// The whole module through syn and prettyplease, as the importer made it before: what
-    /// [`emit`] must equal.
-    fn by_prettyplease(vars: &[Var<ListAt>], struct_name: &str, origin: &str) -> String {
-        let origin = one_line(origin);
-        let mut text = head(vars, struct_name, &origin);
-        for v in vars {
-            text.push_str(&field(v, &origin).unwrap());
+    /// The whole struct through syn and prettyplease, as the importer made it before: what
+    /// [`emit_struct`] must equal.
+    fn by_prettyplease(
+        vars: &[Var<ListAt>],
+        types: &[String],
+        kind: &Kind,
+        origin: &str,
+    ) -> String {
+        let mut text = head(vars, "Gm", kind);
+        for (v, ty) in vars.iter().zip(types) {
+            text.push_str(&field(v, ty, origin));
         }
         text.push_str("}\n");
-        let file = syn::parse_file(&text).unwrap();
-        format!(
-            "// Generated by `plc import` from {origin}: edit that file and import again.\n\n{}",
-            prettyplease::unparse(&file)
-        )
+        prettyplease::unparse(&syn::parse_file(&text).unwrap())
+    }
+
+    #[test]
+    fn type_names_become_upper_camel_case() {
+        for (name, rust) in [
+            ("Axis", "Axis"),
+            ("axis_t", "AxisT"),
+            ("AXIS", "Axis"),
+            ("TON", "Ton"),
+            ("myAxis_2", "MyAxis2"),
+            ("_station", "Station"),
+        ] {
+            assert_eq!(rust_type_name(name), rust, "{name}");
+        }
     }
 
     fn at() -> ListAt {
         ListAt {
+            ty: None,
             var: 0,
             field: None,
         }
@@ -339,8 +511,19 @@ mod tests {
         fn direct_output_is_what_prettyplease_prints(
             vars in prop::collection::vec(var(), 0..6),
             origin in "\\PC{0,100}",
+            description in prop_oneof![Just(String::new()), "\\PC{0,60}", "[ a-z\r\n]{0,90}"],
+            structure in any::<bool>(),
         ) {
-            prop_assert_eq!(emit(&vars, "Gm", &origin).unwrap(), by_prettyplease(&vars, "Gm", &origin));
+            let origin = one_line(&origin);
+            let types: Vec<String> = vars.iter().map(|v| v.ty.value.known().unwrap().rust_type()).collect();
+            let kind = match structure {
+                true => Kind::Structure { name: "axis_t", description: description.trim() },
+                false => Kind::Program { origin: &origin },
+            };
+            prop_assert_eq!(
+                emit_struct(&vars, &types, "Gm", &kind, &origin).unwrap(),
+                by_prettyplease(&vars, &types, &kind, &origin)
+            );
         }
     }
 }

@@ -23,6 +23,19 @@
 //! let generated = plc_io::import::generate_csv(csv, &plc_io::import::Options::default()).unwrap();
 //! assert!(generated.code.contains("/// Test identifier, as printed"));
 //! ```
+//!
+//! Structure types come in the list's `types` section, each becoming a `#[derive(PlcStruct)]`
+//! struct (docs/variable-lists.md describes both formats):
+//!
+//! ```
+//! let json = r#"{
+//!     "types": { "Axis": { "variables": { "pos": { "type": "f64" }, "homed": { "type": "bool" } } } },
+//!     "variables": { "lift": { "type": "Axis" }, "axes": { "type": "Axis", "dims": [3] } }
+//! }"#;
+//! let generated = plc_io::import::generate(json, &plc_io::import::Options::default()).unwrap();
+//! assert!(generated.code.contains("pub struct Axis {"));
+//! assert!(generated.code.contains("pub axes: [Axis; 3],"));
+//! ```
 
 // The importer is feature `import`, the export feature `export`. The export writes the CSV
 // reader's columns, so the reader (and the parsed form it reads into) compile with either.
@@ -97,20 +110,33 @@ impl fmt::Display for ImportErrors {
 impl std::error::Error for ImportErrors {}
 
 #[cfg(feature = "import")]
-/// Checks a JSON variable list and generates the equivalent `#[derive(GlobalMemory)]` struct.
+/// Checks a JSON variable list and generates the equivalent `#[derive(GlobalMemory)]` struct,
+/// with a `#[derive(PlcStruct)]` struct for each type of its `types` section.
 ///
-/// Errors and warnings read `variables.<name>.<field>: <what is wrong>`.
+/// Errors and warnings read `variables.<name>.<field>: <what is wrong>`, or
+/// `types.<type>.variables.<member>.<field>: ...` for a member of a type.
 pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let parsed = parse::parse(json).map_err(|e| ImportErrors(vec![e]))?;
-    let checked = validate::check(&parsed, &|_| None);
+    let checked = validate::check(&parsed, &|_, _| None);
     let place = |p: &Problem| {
-        let name = &checked.decl.vars[p.at.var].name.value;
+        let name = checked.var_name(&p.at);
+        let group = match p.at.ty {
+            Some(t) => format!("types.{}.variables", checked.types[t].name),
+            None => "variables".into(),
+        };
         match &p.at.field {
-            Some(f) => format!("variables.{name}.{f}: {}", p.message),
-            None => format!("variables.{name}: {}", p.message),
+            Some(f) => format!("{group}.{name}.{f}: {}", p.message),
+            None => format!("{group}.{name}: {}", p.message),
         }
     };
-    let mut generated = finish(&checked, options, Vec::new(), place)?;
+    let place_type = |t: usize, field: Option<&str>, message: &str| {
+        let name = &checked.types[t].name;
+        match field {
+            Some(f) => format!("types.{name}.{f}: {message}"),
+            None => format!("types.{name}: {message}"),
+        }
+    };
+    let mut generated = finish(&checked, options, Vec::new(), place, place_type)?;
     if !parsed.has_variables {
         generated.warnings.insert(
             0,
@@ -124,27 +150,49 @@ pub fn generate(json: &str, options: &Options) -> Result<Generated, ImportErrors
 
 #[cfg(feature = "import")]
 /// Checks a CSV variable list ([`COLUMNS`]) and generates the equivalent struct, with the same
-/// rules as [`generate`].
+/// rules as [`generate`]. A structure type is declared by a row of type `STRUCT` (its
+/// description in the description column) and its members by rows named `<type>.<member>`
+/// (docs/variable-lists.md, "CSV").
 ///
-/// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`.
+/// Errors and warnings read `line <n>, variable <name>, column <column>: <what is wrong>`
+/// (`variable Axis.pos` for a member, `type Axis` for a type's own row).
 pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErrors> {
     let table = csv_read::parse(csv).map_err(ImportErrors)?;
-    let declared = table.parsed.variables.len();
-    // Variables first, then the second uses of a name, as the declaration holds them.
-    let line_of_var = |var: usize| match var.checked_sub(declared) {
-        None => table.lines.get(var).copied(),
-        Some(k) => table.duplicate_lines.get(k).copied(),
-    };
-    let checked = validate::check(&table.parsed, &line_of_var);
+    let lines = |ty: Option<usize>, var: usize| table.line_of(ty, var);
+    let checked = validate::check(&table.parsed, &lines);
     let place = |p: &Problem| {
-        let name = &checked.decl.vars[p.at.var].name.value;
-        let line = line_of_var(p.at.var).map_or_else(String::new, |l| format!("line {l}, "));
+        let name = checked.var_name(&p.at);
+        let name = match p.at.ty {
+            Some(t) => format!("{}.{name}", checked.types[t].name),
+            None => name.to_string(),
+        };
+        let line = lines(p.at.ty, p.at.var).map_or_else(String::new, |l| format!("line {l}, "));
         match &p.at.field {
             Some(f) => format!("{line}variable {name}, column {f}: {}", p.message),
             None => format!("{line}variable {name}: {}", p.message),
         }
     };
-    finish(&checked, options, table.row_errors.clone(), place).map_err(|mut e| {
+    let place_type = |t: usize, field: Option<&str>, message: &str| {
+        let name = &checked.types[t].name;
+        let line = table
+            .type_lines
+            .get(t)
+            .copied()
+            .flatten()
+            .map_or_else(String::new, |l| format!("line {l}, "));
+        match field {
+            Some(f) => format!("{line}type {name}, column {f}: {message}"),
+            None => format!("{line}type {name}: {message}"),
+        }
+    };
+    finish(
+        &checked,
+        options,
+        table.row_errors.clone(),
+        place,
+        place_type,
+    )
+    .map_err(|mut e| {
         // In the order of the file, as a user fixes them going down the sheet (the sort is
         // stable: one row's errors keep their column order).
         e.0.sort_by_key(|m| line_of(m));
@@ -164,34 +212,56 @@ fn line_of(message: &str) -> u64 {
 
 #[cfg(feature = "import")]
 /// The checks of the generated code itself, and emission, shared by the JSON and CSV front
-/// ends; `place` words a problem for the input's format.
+/// ends; `place` words a problem for the input's format, `place_type` one of a type as a whole.
 fn finish(
     checked: &validate::Checked,
     options: &Options,
     mut errors: Vec<String>,
     place: impl Fn(&Problem) -> String,
+    place_type: impl Fn(usize, Option<&str>, &str) -> String,
 ) -> Result<Generated, ImportErrors> {
+    for p in &checked.type_errors {
+        errors.push(place_type(p.ty, p.field.as_deref(), &p.message));
+    }
+    for (t, message) in emit::check_type_names(checked, &options.struct_name) {
+        errors.push(place_type(t, None, &message));
+    }
     errors.extend(checked.errors.iter().map(&place));
     if let Err(e) = emit::check_struct_name(&options.struct_name) {
         errors.push(e);
     }
-    let vars = &checked.decl.vars[..checked.declared];
-    for (i, v) in vars.iter().enumerate() {
-        if emit::UNUSABLE.contains(&v.name.value.as_str()) {
-            errors.push(place(&Problem {
-                at: ListAt {
-                    var: i,
-                    field: None,
-                },
-                message: "this name cannot be a Rust field; rename it".into(),
-                kind: None,
-            }));
+    let groups = checked
+        .types
+        .iter()
+        .enumerate()
+        .map(|(t, ty)| (Some(t), &ty.group))
+        .chain([(None, &checked.top)]);
+    for (ty, group) in groups {
+        for (i, v) in group.decl.vars[..group.declared].iter().enumerate() {
+            if emit::UNUSABLE.contains(&v.name.value.as_str()) {
+                errors.push(place(&Problem {
+                    at: ListAt {
+                        ty,
+                        var: i,
+                        field: None,
+                    },
+                    message: "this name cannot be a Rust field; rename it".into(),
+                    kind: None,
+                }));
+            }
         }
+    }
+    if checked.image_bytes >= plc_rules::capacity::MAX_IMAGE_BYTES {
+        errors.push(format!(
+            "the image of `{}` is 4 GiB or more: the variables must take less than 2^32 bytes \
+             (fewer or smaller array elements)",
+            options.struct_name
+        ));
     }
     if !errors.is_empty() {
         return Err(ImportErrors(errors));
     }
-    let code = emit::emit(vars, &options.struct_name, &options.origin)
+    let code = emit::emit(checked, &options.struct_name, &options.origin)
         .map_err(|e| ImportErrors(vec![e]))?;
     Ok(Generated {
         code,

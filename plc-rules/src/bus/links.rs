@@ -215,32 +215,8 @@ fn check_one<'l>(
 /// ` (did you mean `x`?)` for the name of `names` nearest `wrong`, if one is near (a typo or
 /// two), else nothing.
 fn did_you_mean(wrong: &str, names: &[&str]) -> String {
-    let wrong_lower = wrong.to_ascii_lowercase();
-    let limit = wrong.len().div_ceil(3);
-    names
-        .iter()
-        .map(|n| (edit_distance(&wrong_lower, &n.to_ascii_lowercase()), *n))
-        .filter(|&(d, _)| d <= limit)
-        .min_by_key(|&(d, _)| d)
-        .map_or_else(String::new, |(_, n)| format!(" (did you mean `{n}`?)"))
-}
-
-/// Levenshtein distance of two short names, by characters.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diagonal = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let above = row[j + 1];
-            row[j + 1] = (above + 1)
-                .min(row[j] + 1)
-                .min(diagonal + usize::from(ca != *cb));
-            diagonal = above;
-        }
-    }
-    row[b.len()]
+    crate::names::nearest(wrong, names.iter().copied())
+        .map_or_else(String::new, |n| format!(" (did you mean `{n}`?)"))
 }
 
 fn unique(names: &[String]) -> impl Iterator<Item = &str> {
@@ -276,7 +252,5 @@ mod tests {
             " (did you mean `digital_inputs`?)"
         );
         assert_eq!(did_you_mean("speed", &names), "");
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-        assert_eq!(edit_distance("", "abc"), 3);
     }
 }

@@ -13,8 +13,9 @@ struct Row {
     rule: &'static str,
     /// The struct, as a user writes it (without the derive attribute).
     rust: &'static str,
-    /// The members of the list's `variables` object, or `None` where the format cannot say
-    /// it (with the reason in `rule`).
+    /// The members of the list's `variables` object (of a type's `variables` in its `types`
+    /// section, `"Axis": { "variables": { .. } }`, for a row declaring a structure type), or
+    /// `None` where the format cannot say it (with the reason in `rule`).
     json: Option<&'static str>,
     /// The issue kinds both give (`IssueKind::name`).
     kinds: &'static [&'static str],
@@ -394,22 +395,34 @@ const ROWS: &[Row] = &[
         kinds: &[],
     },
     Row {
-        rule: "a link and an address inside a structure (the list's types section is not read yet)",
+        rule: "a link and an address inside a structure",
         rust: "#[derive(PlcStruct)] struct Axis { #[plc(link = \"ethercat.io.x\")] a: u16, #[plc(at = \"%IW4\")] b: i16 }",
-        json: None,
+        json: Some(r#""a": {"type": "u16", "link": "ethercat.io.x"}, "b": {"type": "i16", "at": "%IW4"}"#),
         kinds: &["IoInStructure", "IoInStructure"],
     },
     Row {
-        rule: "IN and OUT parameters and an internal member of a structure (the list's types section is not read yet)",
+        rule: "IN and OUT parameters and an internal member of a structure",
         rust: "#[derive(PlcStruct)] struct Axis { #[plc(direction = \"input\")] a: bool, #[plc(direction = \"output\")] b: bool, c: u8 }",
-        json: None,
+        json: Some(r#""a": {"type": "bool", "direction": "input"}, "b": {"type": "bool", "direction": "output"}, "c": {"type": "u8"}"#),
         kinds: &[],
     },
     Row {
-        rule: "a command and a status inside a structure (the list's types section is not read yet)",
+        rule: "a command and a status inside a structure",
         rust: "#[derive(PlcStruct)] struct Axis { #[plc(direction = \"command\")] a: bool, #[plc(direction = \"status\")] b: bool }",
-        json: None,
+        json: Some(r#""a": {"type": "bool", "direction": "command"}, "b": {"type": "bool", "direction": "status"}"#),
         kinds: &["DirectionInStructure", "DirectionInStructure"],
+    },
+    Row {
+        rule: "a name given twice within a structure, in another case",
+        rust: "#[derive(PlcStruct)] struct Axis { pos: f64, #[plc(name = \"POS\")] pos_2: f64 }",
+        json: Some(r#""pos": {"type": "f64"}, "POS": {"type": "f64"}"#),
+        kinds: &["DuplicateName"],
+    },
+    Row {
+        rule: "a bool mapped onto a member of the same structure, and an initial out of range there",
+        rust: "#[derive(PlcStruct)] struct Axis { state: u8, #[plc(source = \"state\", bit = 8)] homed: bool, #[plc(initial = 300)] count: u8 }",
+        json: Some(r#""state": {"type": "u8"}, "homed": {"type": "bool", "source": "state", "bit": 8}, "count": {"type": "u8", "initial": 300}"#),
+        kinds: &["BitOutOfRange", "InitialOutOfRange"],
     },
     Row {
         rule: "every mistake of a declaration at once",

@@ -157,7 +157,7 @@ fn own_rules<L: Clone>(v: &Var<L>, issues: &mut Vec<Issue<L>>) -> Option<IecAddr
 }
 
 /// The limits on a type: string capacity, dimensions, items.
-pub(crate) fn type_rules(k: &KnownType) -> Vec<IssueKind> {
+pub fn type_rules(k: &KnownType) -> Vec<IssueKind> {
     let mut kinds = Vec::new();
     if let Some(n) = k.capacity
         && !usize::try_from(n).is_ok_and(crate::capacity::is_valid_string_capacity)

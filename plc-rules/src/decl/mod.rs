@@ -33,7 +33,7 @@ mod check;
 mod issue;
 mod keys;
 
-pub use check::{Checked, Resolved, check, initial_misfit};
+pub use check::{Checked, Resolved, check, initial_misfit, type_rules};
 pub use issue::{Expected, Issue, IssueKind, KIND_NAMES, Wording};
 
 use crate::IecType;
