@@ -54,7 +54,10 @@ where
             None => None,
         };
         let shm = match &s.segment {
-            Some(name) => Some(SharedGlobalMemory::<T>::create(name).map_err(RuntimeError::Shm)?),
+            Some(name) => Some(
+                SharedGlobalMemory::<T>::create_with(name, &s.sharing)
+                    .map_err(RuntimeError::Shm)?,
+            ),
             None => None,
         };
         let image = Box::new(Aligned(gm.to_image()));
