@@ -30,7 +30,9 @@ impl Client {
     /// (the directory's owner), and returns the connection and the segment's descriptor.
     pub fn connect(name: &str, path: &Path, owner: u32) -> Result<(Client, OwnedFd), ShmError> {
         let fd = unix::connect(path).map_err(|e| match e.raw_os_error() {
-            Some(libc::ENOENT | libc::ECONNREFUSED) => ShmError::NotFound(name.to_string()),
+            Some(libc::ENOENT) => ShmError::NotFound(name.to_string()),
+            // A socket nobody listens on: its owner was killed and nobody removed it yet.
+            Some(libc::ECONNREFUSED) => ShmError::OwnerGone(name.to_string()),
             _ => super::rundir::open_error(name, path, "cannot connect to", e),
         })?;
         let os = |what: &str, e: std::io::Error| ShmError::Os {
@@ -158,7 +160,7 @@ impl Client {
             let Ok(got) = unix::receive(self.fd.as_raw_fd(), &mut buf, false) else {
                 return;
             };
-            if got.len == 0 {
+            if got.len == 0 && self.hung_up() {
                 return;
             }
             if let Ok(reply) = protocol::decode_reply(&buf[..got.len])

@@ -168,6 +168,14 @@ impl DynSegment {
         }])
     }
 
+    /// Test hook: the segment's descriptor as this tool received it, to try what a hostile
+    /// tool would do with it.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn segment_fd(&self) -> std::os::fd::BorrowedFd<'_> {
+        self.view.seg.fd()
+    }
+
     /// Test hook: sends any bytes as one message on the segment's socket.
     #[cfg(feature = "fault-injection")]
     #[doc(hidden)]

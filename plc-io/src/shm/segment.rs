@@ -190,6 +190,13 @@ impl Segment {
         self.client.as_ref().is_none_or(|c| !c.hung_up())
     }
 
+    /// The segment's descriptor.
+    #[cfg(feature = "fault-injection")]
+    pub fn fd(&self) -> std::os::fd::BorrowedFd<'_> {
+        use std::os::fd::AsFd;
+        self.mapping.fd().as_fd()
+    }
+
     /// Whether the mapping was cut short under this process.
     pub fn damaged(&self) -> bool {
         self.mapping.damaged()

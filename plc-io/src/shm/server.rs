@@ -201,6 +201,8 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
         .spawn(move || {
             normal_priority();
             serve(&s, &c, &peer);
+            // However it ended, the tool sees the connection closed, never a silent one.
+            unix::shutdown(c.fd.as_raw_fd());
             let mut reg = lock(&s.conns);
             if let Some(n) = reg.per_uid.get_mut(&peer.uid) {
                 *n = n.saturating_sub(1);
@@ -226,7 +228,8 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
             Err(_) => return,
         };
         // A descriptor a tool attached is closed here (`got.fd` drops): nothing of it is used.
-        if got.len == 0 && !got.truncated {
+        // An empty message reads as zero bytes too: only a hang-up ends the connection.
+        if got.len == 0 && !got.truncated && unix::hung_up(conn.fd.as_raw_fd()) {
             return; // closed, or shut down by `Server::drop`
         }
         if shared.stop.load(Relaxed) {
