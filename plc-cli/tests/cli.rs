@@ -132,7 +132,9 @@ fn list_shows_programs_and_their_variables() {
     assert_eq!(json["variables"].as_array().unwrap().len(), 8);
     let socket = plc_io::shm::runtime_dir().join(format!("{}.sock", owner.segment));
     assert!(
-        plc(&["list", &socket.display().to_string()]).status.success(),
+        plc(&["list", &socket.display().to_string()])
+            .status
+            .success(),
         "the socket's path works too"
     );
 }

@@ -225,23 +225,53 @@ fn a_tool_receives_a_segment_it_cannot_write_resize_or_map_writable() {
         if mapped {
             libc::munmap(p, len);
         }
-        assert!(!mapped && errno() == Some(libc::EPERM), "a writable shared mapping");
+        assert!(
+            !mapped && errno() == Some(libc::EPERM),
+            "a writable shared mapping"
+        );
         assert_eq!(libc::ftruncate(fd, 0), -1, "shrunk");
         assert_eq!(libc::ftruncate(fd, 1 << 30), -1, "grown");
-        assert_eq!(libc::pwrite(fd, b"x".as_ptr() as *const _, 1, 0), -1, "written");
         assert_eq!(
-            libc::fallocate(fd, libc::FALLOC_FL_PUNCH_HOLE | libc::FALLOC_FL_KEEP_SIZE, 0, 4096),
+            libc::pwrite(fd, b"x".as_ptr() as *const _, 1, 0),
+            -1,
+            "written"
+        );
+        assert_eq!(
+            libc::fallocate(
+                fd,
+                libc::FALLOC_FL_PUNCH_HOLE | libc::FALLOC_FL_KEEP_SIZE,
+                0,
+                4096
+            ),
             -1,
             "a hole punched"
         );
-        assert_eq!(libc::fcntl(fd, libc::F_ADD_SEALS, libc::F_SEAL_WRITE), -1, "sealed again");
+        assert_eq!(
+            libc::fcntl(fd, libc::F_ADD_SEALS, libc::F_SEAL_WRITE),
+            -1,
+            "sealed again"
+        );
         // A read-only mapping cannot be made writable either.
-        let r = libc::mmap(std::ptr::null_mut(), len, libc::PROT_READ, libc::MAP_SHARED, fd, 0);
+        let r = libc::mmap(
+            std::ptr::null_mut(),
+            len,
+            libc::PROT_READ,
+            libc::MAP_SHARED,
+            fd,
+            0,
+        );
         assert_ne!(r, libc::MAP_FAILED);
-        assert_eq!(libc::mprotect(r, len, libc::PROT_READ | libc::PROT_WRITE), -1);
+        assert_eq!(
+            libc::mprotect(r, len, libc::PROT_READ | libc::PROT_WRITE),
+            -1
+        );
         libc::munmap(r, len);
     }
-    assert_eq!(seg.read("count"), Ok(Value::UInt(5)), "the values are intact");
+    assert_eq!(
+        seg.read("count"),
+        Ok(Value::UInt(5)),
+        "the values are intact"
+    );
 }
 
 #[test]
@@ -320,7 +350,7 @@ fn another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes() {
             let mut owner = SharedGlobalMemory::<Plain>::create_with("shared", &sharing).unwrap();
             let mut gm = Plain::default();
             let start = Instant::now();
-            while gm.valve == false && start.elapsed() < Duration::from_secs(30) {
+            while !gm.valve && start.elapsed() < Duration::from_secs(30) {
                 owner.apply_mailbox(&mut gm);
                 gm.count += 1;
                 gm.valve = gm.setpoint == 99;
@@ -337,8 +367,13 @@ fn another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes() {
                 assert_eq!(libc::setgid(65534), 0);
                 assert_eq!(libc::setuid(65534), 0);
             }
-            let seg = wait_for(Duration::from_secs(20), || DynSegment::attach("shared").ok());
-            assert!(matches!(seg.read("count"), Ok(Value::UInt(_))), "the read group reads");
+            let seg = wait_for(Duration::from_secs(20), || {
+                DynSegment::attach("shared").ok()
+            });
+            assert!(
+                matches!(seg.read("count"), Ok(Value::UInt(_))),
+                "the read group reads"
+            );
             let written = seg.write("setpoint", Value::UInt(99));
             if std::env::var("SHARING").unwrap() == "read" {
                 let err = written.expect_err("refused");
@@ -685,7 +720,11 @@ fn try_to_change_the_segment(seg: &DynSegment, noise: &mut Noise) {
             0,
         );
         assert_eq!(p, libc::MAP_FAILED, "mapped writable");
-        assert_eq!(libc::ftruncate(fd, noise.below(1 << 20) as i64), -1, "resized");
+        assert_eq!(
+            libc::ftruncate(fd, noise.below(1 << 20) as i64),
+            -1,
+            "resized"
+        );
         let bytes: Vec<u8> = (0..64).map(|_| noise.next() as u8).collect();
         let at = noise.below(4096) as i64;
         assert_eq!(
@@ -742,11 +781,8 @@ fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_a
                         2 => Value::Real(f64::from_bits(noise.next())),
                         _ => Value::Bool(noise.next() & 1 == 1),
                     };
-                    let _ = seg.post_unchecked(
-                        noise.below(6) as usize,
-                        noise.below(3) as usize,
-                        value,
-                    );
+                    let _ =
+                        seg.post_unchecked(noise.below(6) as usize, noise.below(3) as usize, value);
                     let _ = seg.post_element("setpoint", 0, Value::UInt(noise.below(1000)));
                 }
                 // Hold connections open, as many as it is let have.
@@ -775,7 +811,10 @@ fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_a
         bounded("list", list_segments);
         calls += 1;
     }
-    assert!(attacker.wait().unwrap().success(), "an attempt on the segment succeeded");
+    assert!(
+        attacker.wait().unwrap().success(),
+        "an attempt on the segment succeeded"
+    );
     assert!(calls > 0);
     // Within moments of the end, the tools read the program's own values and writes arrive.
     let attack_over = Instant::now();
@@ -799,7 +838,10 @@ fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_a
         "{me:?}"
     );
     let status = seg.status();
-    assert!(status.writes_discarded > 0 && status.writes_rejected > 0, "{status:?}");
+    assert!(
+        status.writes_discarded > 0 && status.writes_rejected > 0,
+        "{status:?}"
+    );
     let recovered = attack_over.elapsed();
     // The owner cycled through it all: it is still the one process that owns the segment.
     assert!(owner.try_wait().unwrap().is_none(), "the owner died");

@@ -464,7 +464,10 @@ fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_pos
         })
         .collect();
     assert_eq!(owner.apply_mailbox(&mut gm), 0);
-    assert!(outcomes.iter().all(|o| *o == Outcome::Rejected), "{outcomes:?}");
+    assert!(
+        outcomes.iter().all(|o| *o == Outcome::Rejected),
+        "{outcomes:?}"
+    );
     // Each reason, as a writer that skips the checks hears it.
     let reason = |k: usize| {
         let (i, e, v) = forged[k];
@@ -473,7 +476,11 @@ fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_pos
             other => panic!("{other:?}"),
         }
     };
-    assert!(reason(0).contains("`serial` cannot be written: it is read-only"), "{}", reason(0));
+    assert!(
+        reason(0).contains("`serial` cannot be written: it is read-only"),
+        "{}",
+        reason(0)
+    );
     assert!(reason(1).contains("an input"));
     assert!(reason(2).contains("status"));
     assert!(reason(3).contains("out of range"));

@@ -221,7 +221,11 @@ impl Client {
 
 /// What a tool's write call returns for an answer: `Ok` once applied, else the owner's
 /// reason; `variables` are the request's variable names, in order.
-pub(crate) fn answer_result(name: &str, variables: &[String], reply: Reply) -> Result<(), ShmError> {
+pub(crate) fn answer_result(
+    name: &str,
+    variables: &[String],
+    reply: Reply,
+) -> Result<(), ShmError> {
     let variable = || {
         variables
             .get(usize::from(reply.which))

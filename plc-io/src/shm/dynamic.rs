@@ -160,7 +160,12 @@ impl DynSegment {
     /// owner's answer.
     #[cfg(feature = "fault-injection")]
     #[doc(hidden)]
-    pub fn write_unchecked(&self, index: usize, element: usize, value: Value) -> Result<(), ShmError> {
+    pub fn write_unchecked(
+        &self,
+        index: usize,
+        element: usize,
+        value: Value,
+    ) -> Result<(), ShmError> {
         self.view.send_and_wait(&[super::mailbox::Request {
             index,
             element,

@@ -71,7 +71,7 @@ pub enum Rejection {
         /// Why: read-only, input or status.
         reason: &'static str,
     },
-    /// The program's [`GlobalMemory::set`](plc_core::GlobalMemory::set) refused it (unknown
+    /// The program's [`GlobalMemory::set`] refused it (unknown
     /// index, element out of range, value that does not fit).
     Set(SetError),
 }
@@ -265,9 +265,7 @@ impl Inbox {
                     applied += batch.writes.len();
                     self.counters
                         .add(Count::Applied, batch.writes.len() as u64, base, off);
-                    batch
-                        .conn
-                        .answer(batch.id, Code::Applied, 0, String::new());
+                    batch.conn.answer(batch.id, Code::Applied, 0, String::new());
                 }
                 Err((k, why)) => {
                     self.counters

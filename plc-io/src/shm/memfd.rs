@@ -64,17 +64,17 @@ impl Mapping {
     /// A new segment of `len` bytes (zeroed), mapped writable for its owner and sealed.
     pub fn create(name: &str, len: usize) -> io::Result<Mapping> {
         if len == 0 {
-            return Err(io::Error::new(io::ErrorKind::InvalidInput, "an empty segment"));
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidInput,
+                "an empty segment",
+            ));
         }
         // The name is only what /proc/<pid>/fd shows; it need not be unique.
         let label = std::ffi::CString::new(format!("plc.{name}"))
             .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
         // SAFETY: a valid C string; the descriptor returned is ours.
         let raw = unsafe {
-            libc::memfd_create(
-                label.as_ptr(),
-                libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC,
-            )
+            libc::memfd_create(label.as_ptr(), libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC)
         };
         if raw < 0 {
             return Err(io::Error::last_os_error());
@@ -85,7 +85,11 @@ impl Mapping {
         if unsafe { libc::ftruncate(fd.as_raw_fd(), len as libc::off_t) } != 0 {
             return Err(io::Error::last_os_error());
         }
-        fcntl(&fd, libc::F_ADD_SEALS, libc::F_SEAL_SHRINK | libc::F_SEAL_GROW)?;
+        fcntl(
+            &fd,
+            libc::F_ADD_SEALS,
+            libc::F_SEAL_SHRINK | libc::F_SEAL_GROW,
+        )?;
         let ptr = map(&fd, len, libc::PROT_READ | libc::PROT_WRITE)?;
         // From here on no new writable mapping and no write(2): only the owner's mapping
         // above writes the segment.

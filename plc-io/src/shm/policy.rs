@@ -75,7 +75,15 @@ fn resolve(segment: &str, name: &str, role: &str) -> Result<Group, ShmError> {
     let mut result: *mut libc::group = std::ptr::null_mut();
     let mut buf = vec![0 as libc::c_char; 1 << 16];
     // SAFETY: valid pointers and the buffer's true length.
-    let r = unsafe { libc::getgrnam_r(c.as_ptr(), &mut group, buf.as_mut_ptr(), buf.len(), &mut result) };
+    let r = unsafe {
+        libc::getgrnam_r(
+            c.as_ptr(),
+            &mut group,
+            buf.as_mut_ptr(),
+            buf.len(),
+            &mut result,
+        )
+    };
     if r != 0 {
         return Err(unknown(std::io::Error::from_raw_os_error(r).to_string()));
     }
@@ -193,7 +201,10 @@ mod tests {
         assert!(!only_owner.may_write(&peer(1001, 5, &[])));
         let text = only_owner.refusal(&peer(1001, 5, &[]), "press");
         assert!(
-            text.starts_with("uid 1001 (group ") && text.contains("may not write `press`: only uid 1000 may; see RuntimeBuilder::write_group"),
+            text.starts_with("uid 1001 (group ")
+                && text.contains(
+                    "may not write `press`: only uid 1000 may; see RuntimeBuilder::write_group"
+                ),
             "{text}"
         );
         let with_group = Policy {

@@ -187,8 +187,8 @@ pub fn ensure_owner_dir(name: &str, group: Option<&Group>) -> Result<PathBuf, Sh
             ));
         }
     }
-    let meta = std::fs::symlink_metadata(&dir)
-        .map_err(|e| open_error(name, &dir, "cannot inspect", e))?;
+    let meta =
+        std::fs::symlink_metadata(&dir).map_err(|e| open_error(name, &dir, "cannot inspect", e))?;
     refuse_kind(name, &dir, &meta)?;
     let me = euid();
     if meta.uid() != me {
@@ -266,8 +266,8 @@ pub fn ensure_owner_dir(name: &str, group: Option<&Group>) -> Result<PathBuf, Sh
 /// Checks a directory a tool found a socket in: not a link, and nobody but its owner may
 /// change it (so the socket in it is the owner's). Returns its owner's uid.
 pub fn check_tool_dir(name: &str, dir: &Path) -> Result<u32, ShmError> {
-    let meta = std::fs::symlink_metadata(dir)
-        .map_err(|e| open_error(name, dir, "cannot inspect", e))?;
+    let meta =
+        std::fs::symlink_metadata(dir).map_err(|e| open_error(name, dir, "cannot inspect", e))?;
     refuse_kind(name, dir, &meta)?;
     let mode = meta.permissions().mode() & 0o7777;
     if mode & 0o022 != 0 {

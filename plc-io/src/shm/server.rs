@@ -178,7 +178,10 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
     let full = if reg.open.len() >= MAX_CONNECTIONS {
         Some(format!("it has {MAX_CONNECTIONS} connections already"))
     } else if mine >= MAX_PER_UID {
-        Some(format!("uid {} has {MAX_PER_UID} connections already", peer.uid))
+        Some(format!(
+            "uid {} has {MAX_PER_UID} connections already",
+            peer.uid
+        ))
     } else {
         None
     };
@@ -187,7 +190,12 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
         outstanding: Default::default(),
     });
     if let Some(why) = full {
-        conn.answer(0, Code::Busy, 0, format!("the program turned the connection away: {why}"));
+        conn.answer(
+            0,
+            Code::Busy,
+            0,
+            format!("the program turned the connection away: {why}"),
+        );
         return;
     }
     let greeting = protocol::encode_greeting(shared.policy.may_write(&peer));

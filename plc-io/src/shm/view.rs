@@ -1,10 +1,10 @@
 //! An attached segment, typed or not: header checks, seqlock snapshots, owner liveness and
 //! writes over the socket. `SharedGlobalMemory::attach` and `DynSegment::attach` both use it.
 
+use super::client::answer_result;
 use super::codec;
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
-use super::client::answer_result;
 use super::mailbox::{Outcome, Request, Ticket};
 use super::segment::{self, Segment};
 use super::status::{OwnerState, RunState, Status};
