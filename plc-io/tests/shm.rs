@@ -310,6 +310,20 @@ fn external_writes_reach_the_program_and_are_not_overwritten() {
     assert_eq!((seen.speed, seen.state, seen.table[2]), (42, 3, -5));
     assert_eq!(hmi.read("speed").unwrap(), Value::UInt(42));
     assert_eq!(hmi.read_element("table", 2).unwrap(), Value::Int(-5));
+    // Several writes as one request: applied together, or none of them.
+    let tool = DynSegment::attach(&name).unwrap();
+    with_cycles(&mut owner, &mut gm, || {
+        tool.write_all(&[("speed", 0, Value::UInt(9)), ("table", 1, Value::Int(4))])
+            .unwrap()
+    });
+    assert_eq!((gm.speed, gm.table[1]), (9, 4));
+    let refused = tool.write_all(&[("speed", 0, Value::UInt(1)), ("state", 0, Value::UInt(1))]);
+    assert!(
+        matches!(refused, Err(ShmError::NotWritable { .. })),
+        "{refused:?}"
+    );
+    owner.apply_mailbox(&mut gm);
+    assert_eq!(gm.speed, 9, "nothing of a refused request is written");
 }
 
 #[derive(GlobalMemory, Debug, Clone)]

@@ -4,7 +4,7 @@
 //! 0     header   magic, format version, layout hash, image size, generation, seqlock
 //!                sequence, descriptor offset and length            (8 x u64)
 //! 64    status   owner pid, state, period, cycle count, cycle times, overruns, bus state
-//!                and flags, heartbeat, mailbox counters, retain failures, the cycle's
+//!                and flags, heartbeat, write counters, retain failures, the cycle's
 //!                wall-clock time                                   (16 x u64)
 //! 192   image    T::Image, padded to 8 bytes
 //! ...   writes   counters of writes from outside: refused by the policy, malformed,

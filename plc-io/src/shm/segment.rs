@@ -68,9 +68,13 @@ impl Segment {
         }
         rundir::sweep(&dir, name);
         let Some(lock) = rundir::acquire_lock(&dir, name, Duration::from_millis(100))? else {
+            // Asked as a tool would: the live owner's pid, to name it.
+            let pid = Segment::open(name)
+                .map(|s| s.base.load(super::layout::S_PID))
+                .unwrap_or(0);
             return Err(ShmError::OwnerAlive {
                 name: name.to_string(),
-                pid: 0,
+                pid,
             });
         };
         let made = rundir::remove_old_socket(&dir, name).and_then(|()| {
