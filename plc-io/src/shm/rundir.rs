@@ -88,16 +88,18 @@ pub fn owner_dir() -> PathBuf {
     std::env::temp_dir().join(format!("plc-vars-{uid}"))
 }
 
-/// The directories a tool looks in: the environment's only, if set; else this user's own and
-/// root's (programs run as system services).
-pub fn tool_dirs() -> Vec<PathBuf> {
+/// The directories a tool looks in, each with the uid that must own it: the environment's
+/// only, if set (any owner: the user named it); else this user's own (this user's) and root's
+/// `/run/plc-vars` (root's, for programs run as system services). A directory of the expected
+/// name that another user made first is not trusted.
+pub fn tool_dirs() -> Vec<(PathBuf, Option<u32>)> {
     if let Some(dir) = env_dir() {
-        return vec![dir];
+        return vec![(dir, None)];
     }
-    let mut dirs = vec![owner_dir()];
+    let mut dirs = vec![(owner_dir(), Some(euid()))];
     let root = PathBuf::from("/run/plc-vars");
-    if !dirs.contains(&root) {
-        dirs.push(root);
+    if !dirs.iter().any(|(d, _)| *d == root) {
+        dirs.push((root, Some(0)));
     }
     dirs
 }
@@ -263,12 +265,27 @@ pub fn ensure_owner_dir(name: &str, group: Option<&Group>) -> Result<PathBuf, Sh
     Ok(dir)
 }
 
-/// Checks a directory a tool found a socket in: not a link, and nobody but its owner may
-/// change it (so the socket in it is the owner's). Returns its owner's uid.
-pub fn check_tool_dir(name: &str, dir: &Path) -> Result<u32, ShmError> {
+/// Checks a directory a tool found a socket in: not a link, of the `expected` owner if one is
+/// expected, and nobody but its owner may change it (so the socket in it is the owner's).
+/// Returns its owner's uid.
+pub fn check_tool_dir(name: &str, dir: &Path, expected: Option<u32>) -> Result<u32, ShmError> {
     let meta =
         std::fs::symlink_metadata(dir).map_err(|e| open_error(name, dir, "cannot inspect", e))?;
     refuse_kind(name, dir, &meta)?;
+    if let Some(uid) = expected
+        && meta.uid() != uid
+    {
+        return Err(refuse(
+            name,
+            dir,
+            format!("belongs to uid {}, not to uid {uid}", meta.uid()),
+            format!(
+                "remove it as its owner or root (`rm -r {}`): another user may have made it \
+                 to pass as a program",
+                dir.display()
+            ),
+        ));
+    }
     let mode = meta.permissions().mode() & 0o7777;
     if mode & 0o022 != 0 {
         return Err(refuse(
@@ -517,7 +534,10 @@ pub fn sweep(dir: &Path, except: &str) {
 /// (the first directory wins for a name found twice).
 pub fn names() -> Vec<(String, PathBuf)> {
     let mut out: Vec<(String, PathBuf)> = Vec::new();
-    for dir in tool_dirs() {
+    for (dir, expected) in tool_dirs() {
+        if check_tool_dir("", &dir, expected).is_err() {
+            continue;
+        }
         for name in entries(&dir, false) {
             if !out.iter().any(|(n, _)| *n == name) {
                 out.push((name, dir.clone()));

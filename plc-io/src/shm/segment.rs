@@ -137,9 +137,9 @@ impl Segment {
     /// Attaches to segment `name` as a tool: the first of the tool directories that has it.
     pub fn open(name: &str) -> Result<Segment, ShmError> {
         let mut first_error = None;
-        for dir in rundir::tool_dirs() {
+        for (dir, expected) in rundir::tool_dirs() {
             let path = rundir::socket_path(&dir, name);
-            let attempt = rundir::check_tool_dir(name, &dir).and_then(|owner| {
+            let attempt = rundir::check_tool_dir(name, &dir, expected).and_then(|owner| {
                 rundir::check_socket(name, &path, owner)?;
                 Client::connect(name, &path, owner)
             });
