@@ -35,7 +35,7 @@ struct Cli {
 enum Command {
     /// Running programs, or the variables of one program.
     List {
-        /// Segment name (as the program gave it, or its /dev/shm name).
+        /// Segment name (as the program gave it, or the path of its socket).
         segment: Option<String>,
         /// Machine-readable output: the layout descriptor as JSON.
         #[arg(long)]
@@ -49,7 +49,7 @@ enum Command {
         #[arg(required = true)]
         names: Vec<String>,
     },
-    /// Writes values through the program's mailbox; all are checked before any is written.
+    /// Writes values: all are checked first, then sent as one request the program applies in one cycle, all or none.
     Set {
         /// Segment name.
         segment: String,

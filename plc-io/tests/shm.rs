@@ -1,12 +1,11 @@
-//! Shared memory between real processes: no torn snapshots, every mailbox write applied once
-//! and in order, owner crashes, writer crashes, refusals, and damaged segments.
+//! Shared memory between real processes: no torn snapshots, every write applied once and in
+//! order, owner crashes, writer crashes, refusals, and damaged segments.
 
 mod common;
 
-use common::{kill9, role, spawn_role, unique, wait_for};
+use common::{kill9, role, runtime_file, spawn_role, unique, wait_for, with_cycles};
 use plc_core::{FixedString, GlobalMemory, Value};
 use plc_io::shm::{DynSegment, OwnerState, SharedGlobalMemory, ShmError};
-use std::os::unix::fs::FileExt;
 use std::time::Duration;
 
 /// Every word of `data` equals `seq` in a consistent image.
@@ -195,7 +194,8 @@ fn a_killed_owner_is_reported_gone_and_a_new_owner_takes_over() {
     assert!(owner.generation() > reader.generation());
     assert_eq!(
         reader.snapshot().unwrap_err(),
-        ShmError::Replaced(name.clone())
+        ShmError::OwnerGone(name.clone()),
+        "the old segment stays dead for its readers"
     );
     let again = SharedGlobalMemory::<Pattern>::attach(&name).unwrap();
     assert_eq!(again.generation(), owner.generation());
@@ -203,12 +203,16 @@ fn a_killed_owner_is_reported_gone_and_a_new_owner_takes_over() {
 }
 
 #[test]
-fn a_writer_killed_mid_write_does_not_stall_the_mailbox() {
-    if role().as_deref() == Some("stuck_writer") {
+fn a_writer_killed_with_writes_in_flight_does_not_stall_the_others() {
+    if role().as_deref() == Some("killed_writer") {
         let name = std::env::var("SEGMENT").unwrap();
         let seg = DynSegment::attach(&name).unwrap();
-        plc_io::shm::mailbox::STOP_AFTER_CLAIM.store(true, std::sync::atomic::Ordering::Relaxed);
-        let _ = seg.write("w0", Value::UInt(666)); // parks forever after claiming a slot
+        // Sent, and the process dies before the answers come.
+        for v in 0..16 {
+            seg.post_element("w0", 0, Value::UInt(v)).unwrap();
+        }
+        // SAFETY: ends this child process at once, as a crash would.
+        unsafe { libc::kill(libc::getpid(), libc::SIGKILL) };
         return;
     }
     if role().is_some() {
@@ -218,26 +222,17 @@ fn a_writer_killed_mid_write_does_not_stall_the_mailbox() {
     let mut owner = SharedGlobalMemory::<Counters>::create(&name).unwrap();
     let mut gm = Counters::default();
     let mut child = spawn_role(
-        "a_writer_killed_mid_write_does_not_stall_the_mailbox",
-        "stuck_writer",
+        "a_writer_killed_with_writes_in_flight_does_not_stall_the_others",
+        "killed_writer",
         &[("SEGMENT", name.clone())],
     );
-    // Kill it once its claim is visible in the mailbox, however slowly it started.
-    wait_for(Duration::from_secs(10), || {
-        (owner.status().writes_pending == 1).then_some(())
-    });
-    kill9(&mut child);
+    let _ = child.wait();
     let writer = DynSegment::attach(&name).unwrap();
-    writer.write("w1", Value::UInt(7)).unwrap();
-    wait_for(Duration::from_secs(5), || {
-        owner.apply_mailbox(&mut gm);
-        (gm.w1 == 7).then_some(())
+    with_cycles(&mut owner, &mut gm, || {
+        writer.write("w1", Value::UInt(7)).unwrap()
     });
-    assert_eq!(
-        gm.w0, 0,
-        "the half-written request was skipped, not applied"
-    );
-    assert_eq!(owner.status().writes_reclaimed, 1);
+    assert_eq!(gm.w1, 7);
+    assert_eq!(owner.status().writes_pending, 0);
 }
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -268,7 +263,11 @@ fn writes_are_refused_up_front_with_the_reason() {
         written.to_string()
     };
     assert_eq!(seg.check("speed", 0, Value::Int(7)), Ok(Value::UInt(7)));
-    assert_eq!(seg.status().writes_pending, 0, "a check sends nothing");
+    let sent = |s: &DynSegment| {
+        let st = s.status();
+        st.writes_pending + st.writes_applied + st.writes_rejected
+    };
+    assert_eq!(sent(&seg), 0, "a check sends nothing");
     assert!(refused("sensor", Value::UInt(1)).contains("an input"));
     assert!(refused("state", Value::UInt(1)).contains("status"));
     assert!(refused("serial", Value::UInt(1)).contains("read-only"));
@@ -281,13 +280,16 @@ fn writes_are_refused_up_front_with_the_reason() {
         seg.write_element("table", 4, Value::Int(1)),
         Err(ShmError::ElementOutOfRange { len: 4, .. })
     ));
+    assert_eq!(sent(&seg), 0, "refused before anything was sent");
+    // A program that takes no writes (stopped, as in a debugger): one connection's requests
+    // wait up to a bound, then are refused, never silently dropped.
     for _ in 0..64 {
-        seg.write("speed", Value::UInt(1)).unwrap();
+        seg.post_element("speed", 0, Value::UInt(1)).unwrap();
     }
     assert_eq!(
         seg.write("speed", Value::UInt(1)),
         Err(ShmError::MailboxFull(name.clone())),
-        "a full mailbox is an error, never a silent drop"
+        "too many waiting is an error, never a silent drop"
     );
 }
 
@@ -297,16 +299,31 @@ fn external_writes_reach_the_program_and_are_not_overwritten() {
     let mut owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
     let mut gm = Machine::default();
     let hmi = SharedGlobalMemory::<Machine>::attach(&name).unwrap();
-    hmi.write("SPEED", Value::UInt(42)).unwrap();
-    hmi.write_element("table", 2, Value::Int(-5)).unwrap();
-    // The program changes other variables in the same cycle; only the written ones change.
+    // The program changes other variables meanwhile; only the written ones change.
     gm.state = 3;
-    owner.apply_mailbox(&mut gm);
+    with_cycles(&mut owner, &mut gm, || {
+        hmi.write("SPEED", Value::UInt(42)).unwrap();
+        hmi.write_element("table", 2, Value::Int(-5)).unwrap();
+    });
     owner.publish(&gm).unwrap();
     let seen = hmi.snapshot().unwrap();
     assert_eq!((seen.speed, seen.state, seen.table[2]), (42, 3, -5));
     assert_eq!(hmi.read("speed").unwrap(), Value::UInt(42));
     assert_eq!(hmi.read_element("table", 2).unwrap(), Value::Int(-5));
+    // Several writes as one request: applied together, or none of them.
+    let tool = DynSegment::attach(&name).unwrap();
+    with_cycles(&mut owner, &mut gm, || {
+        tool.write_all(&[("speed", 0, Value::UInt(9)), ("table", 1, Value::Int(4))])
+            .unwrap()
+    });
+    assert_eq!((gm.speed, gm.table[1]), (9, 4));
+    let refused = tool.write_all(&[("speed", 0, Value::UInt(1)), ("state", 0, Value::UInt(1))]);
+    assert!(
+        matches!(refused, Err(ShmError::NotWritable { .. })),
+        "{refused:?}"
+    );
+    owner.apply_mailbox(&mut gm);
+    assert_eq!(gm.speed, 9, "nothing of a refused request is written");
 }
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -329,20 +346,20 @@ fn attaching_checks_name_layout_and_size() {
     let err = SharedGlobalMemory::<Other>::attach(&name).err().unwrap();
     assert!(matches!(err, ShmError::LayoutMismatch { .. }));
     assert!(err.to_string().contains("another variable layout"));
-    // The /dev/shm name works too, and the descriptor describes the program.
-    let seg = DynSegment::attach(&format!("/dev/shm/plc.{name}")).unwrap();
+    // The socket's path works too, and the descriptor describes the program.
+    let socket = runtime_file(&format!("{name}.sock"));
+    let seg = DynSegment::attach(&socket.display().to_string()).unwrap();
     assert_eq!(seg.descriptor().variables.len(), 6);
     assert_eq!(seg.descriptor().layout_hash, Machine::LAYOUT_HASH);
 
-    // A segment too small for its own header.
-    let small = unique("small");
-    let path = format!("/dev/shm/plc.{small}");
+    // A file that is not a socket where the socket would be.
+    let fake = unique("fake");
+    let path = runtime_file(&format!("{fake}.sock"));
     std::fs::write(&path, [0u8; 100]).unwrap();
-    std::fs::set_permissions(&path, std::os::unix::fs::PermissionsExt::from_mode(0o600)).unwrap();
-    let refused = DynSegment::attach(&small).err();
+    let refused = DynSegment::attach(&fake).err();
     std::fs::remove_file(&path).unwrap();
     assert!(
-        matches!(refused, Some(ShmError::TooSmall { .. })),
+        matches!(&refused, Some(ShmError::Unsafe { problem, .. }) if problem.contains("not a socket")),
         "{refused:?}"
     );
 }
@@ -355,12 +372,9 @@ fn invalid_utf8_written_from_outside_reads_as_the_valid_prefix() {
     gm.note.set("ok");
     owner.publish(&gm).unwrap();
     owner.apply_mailbox(&mut gm);
-    // Another process scribbles over the string's bytes.
+    // The string's bytes are not UTF-8 (an owner built from other code, or damaged).
     let note = &Machine::VARIABLES[4];
-    Raw::open(&name)
-        .0
-        .write_all_at(&[b'o', b'k', 0xFF, 0xFE, b'x'], 192 + note.offset as u64)
-        .unwrap();
+    owner.scribble(192 + note.offset, &[b'o', b'k', 0xFF, 0xFE, b'x']);
     let hmi = SharedGlobalMemory::<Machine>::attach(&name).unwrap();
     assert_eq!(hmi.snapshot().unwrap().note, "ok");
     assert_eq!(hmi.read("note").unwrap().to_string(), "ok");
@@ -407,8 +421,9 @@ fn after_a_clean_stop_readers_still_attached_get_an_error_even_once_a_new_owner_
     assert_eq!(reader.snapshot().unwrap_err(), closed);
     assert!(closed.to_string().contains("stopped"), "{closed}");
     assert!(
-        !std::path::Path::new(&format!("/dev/shm/plc.{name}.lock")).exists(),
-        "a clean stop leaves no lock file behind"
+        !runtime_file(&format!("{name}.lock")).exists()
+            && !runtime_file(&format!("{name}.sock")).exists(),
+        "a clean stop leaves no file behind"
     );
 
     // A new run of the program: the old mapping stays dead for the readers still holding it.
@@ -424,6 +439,7 @@ fn after_a_clean_stop_readers_still_attached_get_an_error_even_once_a_new_owner_
     owner.publish(&gm).unwrap();
     assert_eq!(reader.snapshot().unwrap_err(), closed);
     assert_eq!(reader.write("stop", Value::Bool(true)), Err(closed.clone()));
+    assert!(reader.owner_state() == OwnerState::Gone);
     assert_eq!(tool.read("seq").unwrap_err(), closed);
     assert_eq!(tool.owner_state(), OwnerState::Gone);
     let again = SharedGlobalMemory::<Pattern>::attach(&name).unwrap();
@@ -432,59 +448,8 @@ fn after_a_clean_stop_readers_still_attached_get_an_error_even_once_a_new_owner_
 }
 
 #[test]
-fn a_late_store_into_a_reclaimed_slot_is_discarded_never_applied() {
-    use plc_io::shm::mailbox::{Outcome, RECLAIM_AFTER, hooks};
-    use std::sync::mpsc;
-    let name = unique("late");
-    let mut owner = SharedGlobalMemory::<Counters>::create(&name).unwrap();
-    let mut gm = Counters::default();
-    let (claimed_tx, claimed_rx) = mpsc::channel::<()>();
-    let (resume_tx, resume_rx) = mpsc::channel::<()>();
-    let late_name = name.clone();
-    // A writer that stops between claiming its slot and storing into it (swapped out,
-    // SIGSTOPped), and resumes once the slot belongs to somebody else.
-    let late = std::thread::spawn(move || {
-        let seg = DynSegment::attach(&late_name).unwrap();
-        hooks::on_next_claim(move || {
-            claimed_tx.send(()).unwrap();
-            resume_rx.recv().unwrap();
-        });
-        seg.write("w0", Value::UInt(666))
-    });
-    claimed_rx.recv().unwrap();
-    owner.apply_mailbox(&mut gm);
-    std::thread::sleep(RECLAIM_AFTER + Duration::from_millis(50));
-    owner.apply_mailbox(&mut gm);
-    assert_eq!(owner.status().writes_reclaimed, 1);
-
-    // Once round the ring: the 64th write after the stalled one gets its slot.
-    let seg = DynSegment::attach(&name).unwrap();
-    for v in 1..64 {
-        seg.write("w1", Value::UInt(v)).unwrap();
-    }
-    owner.apply_mailbox(&mut gm);
-    assert_eq!(gm.w1, 63);
-    let victim = seg.post_element("w2", 0, Value::UInt(5)).unwrap();
-    resume_tx.send(()).unwrap();
-    assert_eq!(
-        late.join().unwrap(),
-        Err(ShmError::WriteReclaimed(name.clone())),
-        "the late writer is told its write was skipped"
-    );
-    owner.apply_mailbox(&mut gm);
-    assert_eq!(gm.w0, 0, "the skipped write is never applied");
-    assert_eq!(gm.w2, 0, "nor a mix of the two writes");
-    assert_eq!(owner.status().writes_discarded, 1);
-    assert_eq!(seg.outcome(victim), Outcome::Discarded);
-    // The mailbox works on.
-    let next = seg.post_element("w3", 0, Value::UInt(9)).unwrap();
-    owner.apply_mailbox(&mut gm);
-    assert_eq!((gm.w3, seg.outcome(next)), (9, Outcome::Applied));
-}
-
-#[test]
 fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_post() {
-    use plc_io::shm::mailbox::{Outcome, Rejection};
+    use plc_io::shm::mailbox::Outcome;
     let name = unique("distrust");
     let mut owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
     let mut gm = Machine::default();
@@ -503,66 +468,60 @@ fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_pos
         .iter()
         .map(|&(i, e, v)| seg.post_unchecked(i, e, v).unwrap())
         .collect();
-    let mut results = Vec::new();
-    owner.apply_mailbox_with(&mut gm, |_, r| results.push(*r));
-    assert!(matches!(
-        results[0],
-        Err(Rejection::NotWritable {
-            variable: "serial",
-            reason: "it is read-only"
+    // Refused by the owner's server thread, before the cycle sees them.
+    let outcomes: Vec<Outcome> = tickets
+        .iter()
+        .map(|&t| {
+            wait_for(Duration::from_secs(5), || {
+                Some(seg.outcome(t)).filter(|o| *o != Outcome::Pending)
+            })
         })
-    ));
-    assert!(results[1].unwrap_err().to_string().contains("an input"));
-    assert!(results[2].unwrap_err().to_string().contains("status"));
-    assert!(results[3].unwrap_err().to_string().contains("out of range"));
-    assert!(results[4].unwrap_err().to_string().contains("index 99"));
-    assert!(results[5].unwrap_err().to_string().contains("USINT"));
+        .collect();
+    assert_eq!(owner.apply_mailbox(&mut gm), 0);
+    assert!(
+        outcomes.iter().all(|o| *o == Outcome::Rejected),
+        "{outcomes:?}"
+    );
+    // Each reason, as a writer that skips the checks hears it.
+    let reason = |k: usize| {
+        let (i, e, v) = forged[k];
+        match seg.write_unchecked(i, e, v) {
+            Err(err @ ShmError::WriteRejected { .. }) => err.to_string(),
+            other => panic!("{other:?}"),
+        }
+    };
+    assert!(
+        reason(0).contains("`serial` cannot be written: it is read-only"),
+        "{}",
+        reason(0)
+    );
+    assert!(reason(1).contains("an input"));
+    assert!(reason(2).contains("status"));
+    assert!(reason(3).contains("out of range"));
+    assert!(reason(4).contains("no variable number 99"));
+    assert!(reason(5).contains("USINT"), "{}", reason(5));
     assert_eq!(
         (gm.serial, gm.sensor, gm.state, gm.table, gm.speed),
         (0, 0, 0, [0; 4], 0),
         "nothing changed"
     );
-    assert_eq!(owner.status().writes_rejected, 6);
-    for t in tickets {
-        assert_eq!(seg.outcome(t), Outcome::Rejected);
-    }
-}
-
-/// The segment's bytes through its file, as another (damaged or hostile) process could write
-/// them. Header words: 8 format version, 16 layout hash, 24 image size, 48 descriptor offset,
-/// 56 descriptor length; 152 heartbeat.
-struct Raw(std::fs::File);
-
-impl Raw {
-    fn open(name: &str) -> Raw {
-        let path = format!("/dev/shm/plc.{name}");
-        Raw(std::fs::OpenOptions::new()
-            .read(true)
-            .write(true)
-            .open(path)
-            .unwrap())
-    }
-    fn get(&self, at: u64) -> u64 {
-        let mut b = [0u8; 8];
-        self.0.read_exact_at(&mut b, at).unwrap();
-        u64::from_le_bytes(b)
-    }
-    fn set(&self, at: u64, v: u64) {
-        self.0.write_all_at(&v.to_le_bytes(), at).unwrap();
-    }
+    assert_eq!(owner.status().writes_rejected, 12);
 }
 
 #[test]
 fn a_damaged_header_or_descriptor_is_an_error_naming_the_damage_never_a_panic() {
     let name = unique("damaged");
-    let _owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
-    let raw = Raw::open(&name);
+    // Only the owner can write its sealed segment: a damaged or hostile owner is played
+    // through its own mapping. Header words: 8 format version, 16 layout hash, 24 image
+    // size, 48 descriptor offset, 56 descriptor length.
+    let owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
     let attach = || DynSegment::attach(&name).err().expect("refused");
-    let with = |at: u64, v: u64, check: &dyn Fn(ShmError)| {
-        let old = raw.get(at);
-        raw.set(at, v);
+    let set = |at: usize, v: u64| owner.scribble(at, &v.to_le_bytes());
+    let with = |at: usize, v: u64, check: &dyn Fn(ShmError)| {
+        let old = owner.word(at);
+        set(at, v);
         check(attach());
-        raw.set(at, old);
+        set(at, old);
     };
     with(8, 999, &|e| {
         assert!(matches!(e, ShmError::Format { .. }), "{e:?}");
@@ -588,7 +547,7 @@ fn a_damaged_header_or_descriptor_is_an_error_naming_the_damage_never_a_panic() 
     with(48, 200, &|e| {
         assert!(e.to_string().contains("descriptor at byte 200"), "{e}");
     });
-    let d_off = raw.get(48);
+    let d_off = owner.word(48) as usize;
     with(d_off, u64::from_le_bytes(*b"garbage!"), &|e| {
         assert!(e.to_string().contains("not valid JSON"), "{e}");
     });
@@ -600,9 +559,9 @@ fn a_damaged_header_or_descriptor_is_an_error_naming_the_damage_never_a_panic() 
     // Descriptors whose numbers overflow, with a matching layout hash (the hash is no
     // signature: anybody can recompute it).
     let good = DynSegment::attach(&name).unwrap().descriptor().clone();
-    let (d_len, hash) = (raw.get(56), raw.get(16));
-    let mut json_was = vec![0u8; d_len as usize];
-    raw.0.read_exact_at(&mut json_was, d_off).unwrap();
+    let (d_len, hash) = (owner.word(56), owner.word(16));
+    let json_was = serde_json::to_vec(&good).unwrap();
+    assert_eq!(json_was.len() as u64, d_len);
     let forge = |edit: &dyn Fn(&mut plc_io::shm::VarDescriptor)| {
         let mut d = good.clone();
         d.variables.truncate(1);
@@ -610,13 +569,13 @@ fn a_damaged_header_or_descriptor_is_an_error_naming_the_damage_never_a_panic() 
         d.layout_hash = d.computed_hash();
         let json = serde_json::to_vec(&d).unwrap();
         assert!(json.len() <= json_was.len());
-        raw.0.write_all_at(&json, d_off).unwrap();
-        raw.set(56, json.len() as u64);
-        raw.set(16, d.layout_hash);
+        owner.scribble(d_off, &json);
+        set(56, json.len() as u64);
+        set(16, d.layout_hash);
         let e = attach();
-        raw.0.write_all_at(&json_was, d_off).unwrap();
-        raw.set(56, d_len);
-        raw.set(16, hash);
+        owner.scribble(d_off, &json_was);
+        set(56, d_len);
+        set(16, hash);
         e
     };
     let e = forge(&|v| v.offset = usize::MAX);
@@ -648,7 +607,7 @@ fn the_heartbeat_is_on_the_monotonic_clock_every_process_shares() {
         0
     );
     let now = ts.tv_sec as u64 * 1_000_000_000 + ts.tv_nsec as u64;
-    let beat = Raw::open(&name).get(152);
+    let beat = owner.word(152);
     assert!(
         now >= beat && now - beat < 5_000_000_000,
         "heartbeat {beat} ns, CLOCK_MONOTONIC {now} ns: not the wall clock, which jumps"
@@ -661,7 +620,8 @@ fn a_tool_probing_liveness_does_not_make_a_new_owner_fail() {
     use std::os::fd::AsRawFd;
     let name = unique("probe");
     // The lock file a killed owner leaves (a clean stop removes it).
-    let path = format!("/dev/shm/plc.{name}.lock");
+    let path = runtime_file(&format!("{name}.lock"));
+    std::fs::create_dir_all(plc_io::shm::runtime_dir()).unwrap();
     std::fs::write(&path, b"").unwrap();
     std::fs::set_permissions(&path, std::os::unix::fs::PermissionsExt::from_mode(0o600)).unwrap();
     // What `owner_alive` does for a moment at every probe (`plc watch` probes each refresh):

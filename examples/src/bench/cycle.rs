@@ -94,7 +94,7 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
     }
 
     /// What `plc_io::Runtime` itself does around the tick: no snapshot in (inputs come from
-    /// the bus straight into the struct, tools' writes through the mailbox), so `unpack_bits`,
+    /// the bus straight into the struct, tools' writes over the socket), so `unpack_bits`,
     /// `pack_bits`, the image out and the publish.
     #[inline(never)]
     pub fn runtime_step(&mut self) {

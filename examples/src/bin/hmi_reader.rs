@@ -1,5 +1,5 @@
 //! An HMI in another process: attaches to a running program's segment by name, writes values
-//! through the mailbox, and prints live values, without the program's Rust types.
+//! over its socket, and prints live values, without the program's Rust types.
 //!
 //! ```sh
 //! cargo run --release -p examples --bin tensile_tester &        # the control program

@@ -170,7 +170,7 @@ fn snapshot_latency(segment: &str, seconds: u64) {
     let _ = child.kill();
     let _ = child.wait();
     drop(reader);
-    // Taking the killed publisher's segment over and dropping it removes it from /dev/shm.
+    // Taking the killed publisher's segment over and dropping it removes its socket and lock file.
     drop(SharedGlobalMemory::<Big64k>::create(&name));
     lat.sort();
     let p99 = lat[lat.len() * 99 / 100];

@@ -1,14 +1,15 @@
 //! `plc list [segment] [--json]`.
 
 use super::{Error, type_text};
-use plc_io::shm::{DynSegment, SegmentInfo, list_segments};
+use plc_io::shm::{DynSegment, OwnerState, SegmentInfo, ShmError, list_segments};
 
-/// The state column: the owner's, or `damaged` for a segment that cannot be read.
+/// The state column: the owner's, `gone` for a killed owner's leftover, or `damaged` for a
+/// segment that cannot be read.
 fn state(s: &SegmentInfo) -> &'static str {
-    if s.problem.is_some() {
-        "damaged"
-    } else {
-        s.state.name()
+    match &s.problem {
+        Some(ShmError::OwnerGone(_)) => OwnerState::Gone.name(),
+        Some(_) => "damaged",
+        None => s.state.name(),
     }
 }
 

@@ -353,7 +353,7 @@ impl Watch {
                     if let Some(name) = name {
                         let result =
                             set::check(&self.seg, &format!("{name}={input}")).and_then(|t| {
-                                t.post(&self.seg)?;
+                                self.seg.write_element(&t.name, t.element, t.value)?;
                                 Ok(t.value)
                             });
                         self.message = match result {

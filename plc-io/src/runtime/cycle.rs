@@ -56,7 +56,10 @@ where
             None => None,
         };
         let shm = match &s.segment {
-            Some(name) => Some(SharedGlobalMemory::<T>::create(name).map_err(RuntimeError::Shm)?),
+            Some(name) => Some(
+                SharedGlobalMemory::<T>::create_with(name, &s.sharing)
+                    .map_err(RuntimeError::Shm)?,
+            ),
             None => None,
         };
         let image = Box::new(Aligned(gm.to_image()));
@@ -100,7 +103,8 @@ where
         Ok(())
     }
 
-    /// One cycle: exchange, unpack bits, mailbox, tick, pack bits, publish, retain, report.
+    /// One cycle: exchange, unpack bits, writes from outside, tick, pack bits, publish, retain,
+    /// report.
     fn once(
         &mut self,
         backend: &mut (dyn IoBackend<T> + Send),
@@ -116,7 +120,7 @@ where
         ctx.bus_fault = io.bus_fault;
         ctx.bus_state = io.bus_state;
         ctx.gm.unpack_bits();
-        // The mailbox is applied under the same protection as the tick: whatever a write
+        // Writes from outside are applied under the same protection as the tick: whatever a write
         // does, a panic still zeroes the outputs and puts the bus in a safe state.
         let shm = &mut self.shm;
         let step = catch_unwind(AssertUnwindSafe(|| {

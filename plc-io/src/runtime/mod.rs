@@ -104,6 +104,7 @@ impl StopHandle {
 pub struct RuntimeBuilder<T> {
     period: Duration,
     segment: Option<String>,
+    sharing: crate::shm::Sharing,
     retain: Option<PathBuf>,
     retain_interval: Duration,
     backend: Box<dyn IoBackend<T> + Send>,
@@ -146,6 +147,7 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
         RuntimeBuilder {
             period: Duration::from_millis(10),
             segment: None,
+            sharing: crate::shm::Sharing::new(),
             retain: None,
             retain_interval: Duration::from_millis(1000),
             backend: Box::new(NoIo),
@@ -166,6 +168,36 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// Publishes the variables in shared-memory segment `name`.
     pub fn segment(mut self, name: impl Into<String>) -> Self {
         self.segment = Some(name.into());
+        self
+    }
+    /// Lets the members of system group `group` read the segment's variables (connect to its
+    /// socket; the runtime directory becomes mode 0750 and the socket 0660, of that group).
+    /// Without it only the program's own user (and root) reads. The name is resolved when
+    /// the runtime starts: an unknown group stops the start with an error naming it.
+    pub fn read_group(mut self, group: impl Into<String>) -> Self {
+        self.sharing = self.sharing.read_group(group);
+        self
+    }
+    /// Lets the members of system group `group` write the variables that may be written from
+    /// outside (commands, read-write internals). Without it only the program's own uid writes;
+    /// any other writer is refused with a message naming this rule. Members must be able to
+    /// connect too: without a [`read_group`](Self::read_group) this group is also the reading
+    /// group; with one, they must be in both.
+    ///
+    /// ```no_run
+    /// # use plc_core::GlobalMemory;
+    /// # #[derive(GlobalMemory, Debug, Clone)]
+    /// # struct Gm { #[plc(direction = "command")] speed: f32 }
+    /// plc_io::Runtime::<Gm>::builder()
+    ///     .segment("press")
+    ///     .read_group("plc-viewers")
+    ///     .write_group("plc-operators")
+    ///     .build()
+    ///     .run(|_| {})?;
+    /// # Ok::<(), plc_io::RuntimeError>(())
+    /// ```
+    pub fn write_group(mut self, group: impl Into<String>) -> Self {
+        self.sharing = self.sharing.write_group(group);
         self
     }
     /// Keeps nonvolatile variables in this file.

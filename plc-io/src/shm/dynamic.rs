@@ -23,7 +23,8 @@ pub struct DynSegment {
 }
 
 impl DynSegment {
-    /// Attaches to segment `name` (`press`, `plc.press` and `/dev/shm/plc.press` all work).
+    /// Attaches to segment `name` (`press`, `plc.press` and the path of its socket all work):
+    /// connects to the program's socket, receives its segment and maps it read-only.
     pub fn attach(name: &str) -> Result<Self, ShmError> {
         Ok(DynSegment {
             view: View::attach(name)?,
@@ -71,10 +72,12 @@ impl DynSegment {
         self.view.read_element(name, element)
     }
 
-    /// Posts a write, checked as the owner's `set` would check it (and refused for read-only,
-    /// input and status variables).
+    /// Writes a variable (element 0 of an array): checked here as the owner checks it, sent,
+    /// and applied by the owner at the start of its next cycle. Returns once the owner applied
+    /// it, or with its refusal (not writable, a value `set` refuses, a writer the program's
+    /// policy does not let write).
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, 0, value).map(drop)
+        self.view.write_all(&[(name, 0, value)])
     }
 
     /// Checks a write of one element as [`write_element`](Self::write_element) would (unknown
@@ -94,48 +97,50 @@ impl DynSegment {
             .map(|(_, v)| v)
     }
 
-    /// Posts a write of one array element.
+    /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, element, value).map(drop)
+        self.view.write_all(&[(name, element, value)])
     }
 
-    /// Posts a write of one element, checked as [`write_element`](Self::write_element) checks
-    /// it, and returns its ticket, to ask for its [`outcome`](Self::outcome) later.
+    /// Writes several variables or elements (name, element, value) as one request: checked
+    /// whole before anything is sent, applied by the owner in one cycle, all or none. At most
+    /// 64 writes.
+    ///
+    /// ```no_run
+    /// use plc_core::Value;
+    /// let seg = plc_io::shm::DynSegment::attach("tensile_tester")?;
+    /// seg.write_all(&[("speed_setpoint", 0, Value::Real(1.5)), ("start", 0, Value::Bool(true))])?;
+    /// # Ok::<(), plc_io::shm::ShmError>(())
+    /// ```
+    pub fn write_all(&self, writes: &[(&str, usize, Value)]) -> Result<(), ShmError> {
+        self.view.write_all(writes)
+    }
+
+    /// Sends a write of one element, checked as [`write_element`](Self::write_element) checks
+    /// it, without waiting: its ticket, to ask for its [`outcome`](Self::outcome) later.
     pub fn post_element(
         &self,
         name: &str,
         element: usize,
         value: Value,
     ) -> Result<Ticket, ShmError> {
-        self.view.write_element(name, element, value)
+        self.view.post_all(&[(name, element, value)])
     }
 
-    /// Posts a write to a value found by its path, checked as
-    /// [`check_location`](Self::check_location) checks it; its ticket, as
-    /// [`post_element`](Self::post_element) gives.
-    pub fn post_location(
-        &self,
-        at: &super::PathLocation,
-        value: Value,
-    ) -> Result<Ticket, ShmError> {
-        let value = self.check_location(at, value)?;
-        self.view.post(at.index, at.leaf, value)
-    }
-
-    /// What became of a posted write: pending, applied, rejected by the owner, discarded, or
-    /// unknown (taken long ago; its slot has been reused since).
+    /// What became of a posted write: pending, applied, rejected or refused by the owner, not
+    /// taken, or unknown (no answer can come any more).
     pub fn outcome(&self, ticket: Ticket) -> Outcome {
         self.view.outcome(ticket)
     }
 
-    /// Free mailbox slots just now: a batch of writes fits whole if it is no larger (unless
-    /// another process posts at the same moment).
-    pub fn mailbox_free(&self) -> usize {
-        self.view.mailbox_free()
+    /// Whether the program's policy lets this process write (from the owner's greeting; the
+    /// owner checks every request again).
+    pub fn may_write(&self) -> bool {
+        self.view.may_write()
     }
 
-    /// Test hook: posts a request without any of the writer's checks, as a misbehaving process
-    /// could, to test that the owner does not trust its mailbox.
+    /// Test hook: sends a request without any of the writer's checks, as a misbehaving process
+    /// could, to test that the owner does not trust its socket.
     #[cfg(feature = "fault-injection")]
     #[doc(hidden)]
     pub fn post_unchecked(
@@ -144,6 +149,42 @@ impl DynSegment {
         element: usize,
         value: Value,
     ) -> Result<Ticket, ShmError> {
-        self.view.post(index, element, value)
+        self.view.post(&[super::mailbox::Request {
+            index,
+            element,
+            value,
+        }])
+    }
+
+    /// Test hook: sends a request without any of the writer's checks and waits for the
+    /// owner's answer.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn write_unchecked(
+        &self,
+        index: usize,
+        element: usize,
+        value: Value,
+    ) -> Result<(), ShmError> {
+        self.view.send_and_wait(&[super::mailbox::Request {
+            index,
+            element,
+            value,
+        }])
+    }
+
+    /// Test hook: the segment's descriptor as this tool received it, to try what a hostile
+    /// tool would do with it.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn segment_fd(&self) -> std::os::fd::BorrowedFd<'_> {
+        self.view.seg.fd()
+    }
+
+    /// Test hook: sends any bytes as one message on the segment's socket.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn send_raw(&self, bytes: &[u8]) -> Result<(), ShmError> {
+        self.view.send_raw(bytes)
     }
 }

@@ -65,7 +65,7 @@ pub enum ShmError {
     /// A new owner took the segment over since this handle attached.
     Replaced(String),
     /// The owner stopped (cleanly, or after a fault) and removed the segment since this handle
-    /// attached: nothing is published into it or taken from its mailbox any more.
+    /// attached: nothing is published into it and no write is applied any more.
     Closed {
         /// Segment.
         name: String,
@@ -113,7 +113,7 @@ pub enum ShmError {
         /// Elements of the variable.
         len: usize,
     },
-    /// The mailbox is full: the owner has not applied earlier writes yet.
+    /// Too many writes wait for the owner already (it has not applied earlier ones yet).
     MailboxFull(String),
     /// The owner skipped this write because it was not committed in time.
     WriteReclaimed(String),
@@ -139,8 +139,39 @@ pub enum ShmError {
         fix: String,
     },
     /// The mailbox's shared words are damaged (another process wrote over them): a write could
-    /// not be posted.
+    /// not be posted. (No longer returned: writes travel over the segment's socket.)
     MailboxDamaged(String),
+    /// The program refused a write: its declaration (not writable from outside, element, value)
+    /// or its `set`. Nothing of the request was applied.
+    WriteRejected {
+        /// Segment.
+        name: String,
+        /// The variable of the refused write.
+        variable: String,
+        /// The program's reason.
+        reason: String,
+    },
+    /// The program's policy does not let this process write.
+    WriteRefused {
+        /// Segment.
+        name: String,
+        /// The rule, as the program states it (who may write, and where that is set).
+        rule: String,
+    },
+    /// The owner did not answer a write in time (it is stalled, or too busy).
+    NoAnswer {
+        /// Segment.
+        name: String,
+        /// How long the tool waited.
+        waited: std::time::Duration,
+    },
+    /// The owner sent something that is not the segment protocol.
+    Protocol {
+        /// Segment.
+        name: String,
+        /// What was wrong.
+        why: String,
+    },
 }
 
 impl ShmError {
@@ -261,8 +292,8 @@ impl fmt::Display for ShmError {
             ),
             ShmError::MailboxFull(n) => write!(
                 f,
-                "the mailbox of segment `{n}` is full: the program has not applied earlier \
-                 writes yet (is it running?); try again"
+                "segment `{n}`: too many writes wait for the program already (is it running? \
+                 `plc list` shows its state); try again"
             ),
             ShmError::WriteReclaimed(n) => write!(
                 f,
@@ -273,8 +304,8 @@ impl fmt::Display for ShmError {
             }
             ShmError::PermissionDenied { name, path } => write!(
                 f,
-                "segment `{name}`: permission denied opening {}: run this as the program's user \
-                 (or root)",
+                "segment `{name}`: permission denied opening {}: run this as the program's user, \
+                 root, or a member of its read group (RuntimeBuilder::read_group)",
                 path.display()
             ),
             ShmError::Unsafe {
@@ -291,6 +322,29 @@ impl fmt::Display for ShmError {
                 f,
                 "the mailbox of segment `{n}` is damaged (another process wrote over it): the \
                  write was not posted; restart the program that owns it"
+            ),
+            ShmError::WriteRejected {
+                name,
+                variable,
+                reason,
+            } => write!(
+                f,
+                "segment `{name}`: the program refused the write of `{variable}`: {reason}; \
+                 nothing of the request was written"
+            ),
+            ShmError::WriteRefused { name, rule } => {
+                write!(f, "segment `{name}`: write refused: {rule}")
+            }
+            ShmError::NoAnswer { name, waited } => write!(
+                f,
+                "segment `{name}`: the program did not answer the write within {:.1} s (is it \
+                 running? `plc list` shows its state); it may still apply it",
+                waited.as_secs_f64()
+            ),
+            ShmError::Protocol { name, why } => write!(
+                f,
+                "segment `{name}`: the program's socket does not speak this tool's protocol \
+                 ({why}); rebuild the tool and the program from the same plc-vars version"
             ),
         }
     }

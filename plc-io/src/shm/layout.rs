@@ -4,24 +4,23 @@
 //! 0     header   magic, format version, layout hash, image size, generation, seqlock
 //!                sequence, descriptor offset and length            (8 x u64)
 //! 64    status   owner pid, state, period, cycle count, cycle times, overruns, bus state
-//!                and flags, heartbeat, mailbox counters, retain failures, the cycle's
+//!                and flags, heartbeat, write counters, retain failures, the cycle's
 //!                wall-clock time                                   (16 x u64)
 //! 192   image    T::Image, padded to 8 bytes
-//! ...   mailbox  head, tail, reclaimed, discarded (4 x u64), then SLOTS slots
+//! ...   writes   counters of writes from outside: refused by the policy, malformed,
+//!                not taken (too many waiting), waiting now         (4 x u64)
 //! ...   descriptor, JSON
 //! ```
+//! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
 //! Every shared word is a naturally aligned `u64` used only through `AtomicU64`.
 
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// "PLCVARS1", little endian.
-pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS1");
-/// Written over the magic when a new owner replaces the segment: readers still mapping the old
-/// one learn to re-attach.
-pub const MAGIC_REPLACED: u64 = u64::from_le_bytes(*b"PLCGONE!");
-/// Written over the magic when the owner stops cleanly, before the segment is unlinked:
-/// readers still mapping it learn that nobody publishes into it or drains its mailbox any more,
-/// even after a new owner has created a new segment of the same name.
+/// "PLCVARS2", little endian (the segment of the socket transport, without a mailbox).
+pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS2");
+/// Written over the magic when the owner stops, before it closes its socket: readers still
+/// mapping it learn that nobody publishes into it or applies writes any more, even after a
+/// new owner has created a new segment of the same name.
 pub const MAGIC_CLOSED: u64 = u64::from_le_bytes(*b"PLCSTOP!");
 
 pub const H_MAGIC: usize = 0;
@@ -53,10 +52,8 @@ pub const S_CYCLE_UTC_NS: usize = STATUS + 120;
 
 pub const IMAGE: usize = 192;
 
-/// Mailbox slots per segment (part of the format).
-pub const SLOTS: usize = 64;
-/// Bytes of one slot: sequence, index and element, kind and checksum, number, text.
-pub const SLOT_SIZE: usize = 8 + 4 + 4 + 4 + 4 + 8 + 256;
+/// Bytes of the write counters after the image.
+const WRITES: usize = 32;
 
 pub const fn pad8(n: usize) -> usize {
     n.div_ceil(8) * 8
@@ -66,8 +63,7 @@ pub const fn pad8(n: usize) -> usize {
 #[derive(Clone, Copy, Debug)]
 pub struct Offsets {
     pub image_size: usize,
-    pub mailbox: usize,
-    pub slots: usize,
+    pub writes: usize,
     pub descriptor: usize,
 }
 
@@ -77,40 +73,32 @@ impl Offsets {
     pub const fn checked(image_size: usize) -> Option<Self> {
         // `new` adds a fixed amount to the padded image size: check that sum first.
         match image_size.checked_next_multiple_of(8) {
-            Some(padded) if padded <= usize::MAX - (IMAGE + 32 + SLOTS * SLOT_SIZE) => {
-                Some(Self::new(image_size))
-            }
+            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES) => Some(Self::new(image_size)),
             _ => None,
         }
     }
 
     /// The offsets for an image of `image_size` bytes (a compiled type's own image).
     pub const fn new(image_size: usize) -> Self {
-        let mailbox = IMAGE + pad8(image_size);
-        let slots = mailbox + 32;
-        let descriptor = slots + SLOTS * SLOT_SIZE;
+        let writes = IMAGE + pad8(image_size);
         Offsets {
             image_size,
-            mailbox,
-            slots,
-            descriptor,
+            writes,
+            descriptor: writes + WRITES,
         }
     }
 
-    pub const fn mb_head(&self) -> usize {
-        self.mailbox
+    pub const fn w_refused(&self) -> usize {
+        self.writes
     }
-    pub const fn mb_tail(&self) -> usize {
-        self.mailbox + 8
+    pub const fn w_malformed(&self) -> usize {
+        self.writes + 8
     }
-    pub const fn mb_reclaimed(&self) -> usize {
-        self.mailbox + 16
+    pub const fn w_busy(&self) -> usize {
+        self.writes + 16
     }
-    pub const fn mb_discarded(&self) -> usize {
-        self.mailbox + 24
-    }
-    pub const fn slot(&self, i: usize) -> usize {
-        self.slots + (i % SLOTS) * SLOT_SIZE
+    pub const fn w_pending(&self) -> usize {
+        self.writes + 24
     }
 }
 

@@ -5,29 +5,35 @@
 //! - [`DynSegment`]: tools without the Rust type, through the descriptor stored in the segment.
 //! - [`list_segments`]: what runs on this machine.
 //!
-//! A segment (`/dev/shm/plc.<name>`, mode 0600) holds a header (magic, format version,
-//! layout hash, image size, generation, seqlock sequence), a status block (owner pid, state,
-//! period, cycle count and times, overruns, bus state and flags, heartbeat, failed retain
-//! saves), the image, a mailbox of write requests, and the layout descriptor as JSON. The owner
-//! holds an exclusive `flock` on `/dev/shm/plc.<name>.lock` for its whole life: a second owner
-//! is refused while it lives, and after it dies (however it dies) a new owner takes the segment
-//! over with a new generation, which attached readers notice ([`ShmError::Replaced`]). An owner
-//! that stops cleanly marks its segment closed and removes both files, so readers still
-//! attached are told ([`ShmError::Closed`], saying whether it faulted) instead of reading a
-//! frozen image, also once the program runs again. What a killed owner leaves is removed by
-//! the next owner of the same user that starts, whatever its name.
+//! A segment is an anonymous memory file (`memfd_create`) holding a header (magic, format
+//! version, layout hash, image size, generation, seqlock sequence), a status block (owner pid,
+//! state, period, cycle count and times, overruns, bus state and flags, heartbeat, write
+//! counters, failed retain saves), the image, and the layout descriptor as JSON. It is sealed:
+//! nobody can shrink or grow it, and once the owner mapped it nobody can map it writable or
+//! write it. The owner serves it on a Unix socket, `<name>.sock` in its runtime directory
+//! (`$XDG_RUNTIME_DIR/plc-vars`, `/run/plc-vars` for root, or `$PLC_VARS_RUNTIME_DIR`): a tool
+//! connects, receives the segment's descriptor with the owner's greeting and maps it
+//! read-only. Writes travel over the same connection as messages; the owner learns each
+//! writer's uid and groups from the kernel, checks them against its policy ([`Sharing`];
+//! default: only its own uid writes), checks each request against its declaration on a server
+//! thread, and applies accepted ones at the start of its next cycle, in order, each request
+//! all or none, answering each writer.
 //!
-//! Neither file is opened through a symbolic link, and a file that is another user's or open
-//! to others is refused with a message naming it and the fix ([`ShmError::Unsafe`]). The owner
-//! trusts nothing another process wrote: its seqlock counter and mailbox position live in its
-//! own memory, header and descriptor numbers are checked (and capped) before a reader uses
-//! them, every loop over shared words is bounded, each mailbox request is checked again
-//! against the program's own declaration, and a segment truncated under a process reads as
-//! zeros instead of killing it with SIGBUS. The owner writes its header, descriptor and mailbox
-//! words again from its own memory every 100 ms, and replaces a truncated segment by a new one
-//! at its next cycle.
+//! The owner holds an exclusive `flock` on `<name>.lock` beside the socket for its whole life:
+//! a second owner is refused while it lives, and after it dies (however it dies) the next owner
+//! of the same user removes what it left. An owner that stops marks its segment closed and
+//! removes both files, so readers still attached are told ([`ShmError::Closed`], saying
+//! whether it faulted) instead of reading a frozen image; a killed owner's readers see its
+//! connection hang up ([`ShmError::OwnerGone`]).
+//!
+//! Neither the directory nor a file in it is used through a symbolic link, and one that is
+//! another user's or open to others is refused with a message naming it and the fix
+//! ([`ShmError::Unsafe`]). The owner trusts nothing another process sends: messages are
+//! bounded and decoded with every length checked, connections are bounded in number, and a
+//! tool that stops reading blocks nothing but its own connection.
 
 mod bytes;
+mod client;
 pub(crate) mod codec;
 mod descriptor;
 mod dynamic;
@@ -35,10 +41,16 @@ mod error;
 mod guard;
 mod layout;
 pub mod mailbox;
+mod memfd;
 mod owner;
 mod paths;
+mod policy;
+pub mod protocol;
+mod rundir;
 mod segment;
+mod server;
 mod status;
+mod unix;
 mod view;
 
 pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
@@ -46,7 +58,8 @@ pub use dynamic::DynSegment;
 pub use error::ShmError;
 pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
 pub use paths::{PathLocation, PathTarget};
-pub use segment::normalise as normalise_name;
+pub use policy::Sharing;
+pub use rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
 pub use status::{OwnerState, RunState, Status};
 
 /// A running (or left behind) segment, as `plc list` shows it.
@@ -70,13 +83,14 @@ pub struct SegmentInfo {
     pub problem: Option<ShmError>,
 }
 
-/// Every plc-vars segment on this machine. One that cannot be read is listed with its
-/// [`problem`](SegmentInfo::problem); one that disappears while being listed (its program
-/// stopped) is left out.
+/// Every running plc-vars program this process can see: the sockets in the runtime
+/// directories ([`runtime_dir`], and root's `/run/plc-vars`). One that cannot be read is
+/// listed with its [`problem`](SegmentInfo::problem); one that disappears while being listed
+/// (its program stopped) is left out.
 pub fn list_segments() -> Vec<SegmentInfo> {
     segment::names()
         .into_iter()
-        .filter_map(|name| match DynSegment::attach(&name) {
+        .filter_map(|(name, dir)| match DynSegment::attach(&name) {
             Ok(seg) => {
                 let status = seg.status();
                 Some(SegmentInfo {
@@ -92,7 +106,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
             Err(ShmError::NotFound(_) | ShmError::Closed { .. } | ShmError::Replaced(_)) => None,
             Err(problem) => Some(SegmentInfo {
                 pid: 0,
-                state: if segment::owner_alive(&name) {
+                state: if segment::owner_alive(&dir, &name) {
                     OwnerState::Running
                 } else {
                     OwnerState::Gone

@@ -3,10 +3,12 @@
 //! processes.
 
 use super::descriptor::LayoutDescriptor;
-use super::error::not_writable_reason;
 use super::layout::*;
-use super::mailbox::{self, Consumer, Rejection, Request};
+use super::mailbox::{Counters, Inbox, Rejection, Request};
+use super::policy::{Policy, Sharing};
+use super::protocol::Code;
 use super::segment::{self, Segment};
+use super::server::{QUEUE, Setup};
 use super::status::{OwnerState, RunState, Status, now_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
@@ -16,7 +18,7 @@ use std::cell::Cell;
 use std::marker::PhantomData;
 use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
-use std::time::{Duration, Instant};
+use std::sync::{Arc, Mutex};
 use zerocopy::{FromZeros, IntoBytes};
 
 /// The calls owners and readers share, on their `view`.
@@ -55,9 +57,12 @@ macro_rules! segment_accessors {
 /// The owner [`create`](Self::create)s it, getting a [`ShmOwner`] that
 /// [`publish`](ShmOwner::publish)es every cycle; other processes [`attach`](Self::attach),
 /// getting a [`ShmReader`] that takes consistent [`snapshot`](ShmReader::snapshot)s (a seqlock:
-/// never a torn image), reads single variables, and posts writes to the mailbox, which the
-/// owner applies at the start of its next cycle through [`GlobalMemory::set`]. Owner-only
-/// calls do not exist on a reader.
+/// never a torn image), reads single variables, and sends writes over the segment's socket,
+/// which the owner applies at the start of its next cycle through [`GlobalMemory::set`].
+/// Owner-only calls do not exist on a reader.
+///
+/// The segment is sealed memory that readers map read-only; the owner's socket and lock file
+/// are in its runtime directory (see the crate's README, "Security and failure model").
 ///
 /// ```
 /// use plc_core::GlobalMemory;
@@ -78,8 +83,11 @@ macro_rules! segment_accessors {
 ///
 /// let reader = SharedGlobalMemory::<Gm>::attach(&name)?; // usually another process
 /// assert_eq!(reader.snapshot()?.count, 7);
-/// reader.write("setpoint", plc_core::Value::Real(2.5))?;
-/// assert_eq!(owner.apply_mailbox(&mut gm), 1);
+/// // A write waits for the owner's next cycle: here another thread is the cycle.
+/// std::thread::scope(|s| {
+///     s.spawn(|| while owner.apply_mailbox(&mut gm) == 0 {});
+///     reader.write("setpoint", plc_core::Value::Real(2.5))
+/// })?;
 /// assert_eq!(gm.setpoint, 2.5);
 /// # Ok::<(), plc_io::shm::ShmError>(())
 /// ```
@@ -89,29 +97,42 @@ pub struct SharedGlobalMemory<T: GlobalMemory> {
 }
 
 impl<T: GlobalMemory> SharedGlobalMemory<T> {
-    /// Creates segment `name` as its owner (mode 0600). A segment left by a dead owner is taken
-    /// over with a new generation; one owned by a live process is refused.
+    /// Creates segment `name` as its owner, read and written by this process's user only. A
+    /// segment left by a dead owner is replaced (with a later generation); one owned by a live
+    /// process is refused.
     pub fn create(name: &str) -> Result<ShmOwner<T>, ShmError> {
+        Self::create_with(name, &Sharing::new())
+    }
+
+    /// Creates segment `name` as its owner, shared with the groups `sharing` names.
+    pub fn create_with(name: &str, sharing: &Sharing) -> Result<ShmOwner<T>, ShmError> {
         let name = segment::normalise(name)?;
+        let policy = Policy::resolve(&name, sharing)?;
         let desc = LayoutDescriptor::of::<T>();
         let json = serde_json::to_vec(&desc).map_err(|e| ShmError::Corrupt {
             name: name.clone(),
             why: e.to_string(),
         })?;
         let off = Offsets::new(size_of::<T::Image>());
-        let (seg, generation) = Segment::create(&name, off.descriptor + json.len())?;
+        let mut seg = Segment::create(&name, off.descriptor + json.len(), &policy)?;
         let base = seg.base();
-        let header = Header {
-            json,
-            hash: T::LAYOUT_HASH,
-            off,
-        };
-        header.write(&base, generation, RunState::Starting);
+        let generation = segment::next_generation(0);
+        write_header(&base, &json, T::LAYOUT_HASH, &off, generation);
         base.store(H_SEQ, 0);
         base.store(S_HEARTBEAT_NS, now_ns());
-        mailbox::init(&base, &off);
-        // Last, so an attaching reader sees either nothing or a complete segment.
         base.store(H_MAGIC, MAGIC);
+        let counters = Arc::new(Counters::default());
+        counters.publish(&base, &off);
+        let (queue, rx) = std::sync::mpsc::sync_channel(QUEUE);
+        // Last: tools connect only to a complete segment.
+        seg.serve(Setup {
+            name: name.clone(),
+            policy,
+            vars: T::VARIABLES,
+            off,
+            counters: counters.clone(),
+            queue,
+        })?;
         Ok(ShmOwner {
             view: View {
                 seg,
@@ -121,11 +142,12 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
                 generation,
                 checked_alive: Default::default(),
             },
-            consumer: Consumer::default(),
+            inbox: Inbox {
+                rx: Mutex::new(rx),
+                counters,
+            },
             seq: Cell::new(0),
-            header,
             run_state: Cell::new(RunState::Starting),
-            checked: Instant::now(),
             _t: PhantomData,
         })
     }
@@ -147,85 +169,33 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     }
 }
 
-/// The owner of a segment (the control program): publishes, applies the mailbox, reports.
+/// The owner of a segment (the control program): publishes, applies writes, reports.
 /// From [`SharedGlobalMemory::create`].
 pub struct ShmOwner<T: GlobalMemory> {
+    inbox: Inbox,
     view: View,
-    consumer: Consumer,
     /// The owner's seqlock counter, in its own memory: the shared word is only ever written
-    /// from it, never read back, so whatever another process stores there is overwritten at
-    /// the next publish instead of steering it.
+    /// from it, never read back.
     seq: Cell<u64>,
-    /// What the header and descriptor must say, kept to write them again.
-    header: Header,
-    /// The state it reports, kept here for the same reason.
+    /// The state it reports.
     run_state: Cell<RunState>,
-    /// When the shared words were last checked and repaired.
-    checked: Instant,
     _t: PhantomData<fn() -> T>,
 }
 
-/// How often the owner writes its header and descriptor again and checks the mailbox ring: a
-/// process that scribbled over them breaks the tools for at most this long.
-const REPAIR_EVERY: Duration = Duration::from_millis(100);
-
-/// The header and descriptor of a segment, in the owner's memory.
-struct Header {
-    json: Vec<u8>,
-    hash: u64,
-    off: Offsets,
-}
-
-impl Header {
-    fn write(&self, base: &Base, generation: u64, state: RunState) {
-        base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
-        base.store(H_LAYOUT_HASH, self.hash);
-        base.store(H_IMAGE_SIZE, self.off.image_size as u64);
-        base.store(H_GENERATION, generation);
-        base.store(H_DESC_OFFSET, self.off.descriptor as u64);
-        base.store(H_DESC_LEN, self.json.len() as u64);
-        base.store(S_PID, std::process::id() as u64);
-        base.store(S_STATE, state as u64);
-        bytes::store(base, self.off.descriptor, &self.json);
-    }
+/// Writes the header and the descriptor (the owner, once, before it serves the segment).
+fn write_header(base: &Base, json: &[u8], hash: u64, off: &Offsets, generation: u64) {
+    base.store(H_VERSION, plc_rules::layout::FORMAT_VERSION as u64);
+    base.store(H_LAYOUT_HASH, hash);
+    base.store(H_IMAGE_SIZE, off.image_size as u64);
+    base.store(H_GENERATION, generation);
+    base.store(H_DESC_OFFSET, off.descriptor as u64);
+    base.store(H_DESC_LEN, json.len() as u64);
+    base.store(S_PID, std::process::id() as u64);
+    base.store(S_STATE, RunState::Starting as u64);
+    bytes::store(base, off.descriptor, json);
 }
 
 impl<T: GlobalMemory> ShmOwner<T> {
-    /// Undoes what another process did to the segment: a truncated one is replaced by a new
-    /// segment (a new generation; readers attach again), and every [`REPAIR_EVERY`] the header,
-    /// the descriptor and the mailbox's words are written again from the owner's memory (a
-    /// ring whose words no longer fit together starts empty again; requests in it are lost).
-    /// Called at each [`apply_mailbox`](Self::apply_mailbox), so at every cycle.
-    fn repair(&mut self) {
-        if self.view.seg.damaged() {
-            let size = self.header.off.descriptor + self.header.json.len();
-            let Ok(base) = self.view.seg.renew(size) else {
-                return; // tried again at the next cycle
-            };
-            let generation = segment::next_generation(self.view.generation);
-            self.view.base = base;
-            self.view.generation = generation;
-            self.header.write(&base, generation, self.run_state.get());
-            self.seq.set(0);
-            base.store(H_SEQ, 0);
-            base.store(S_HEARTBEAT_NS, now_ns());
-            self.consumer.restart(&base, &self.header.off);
-            base.store(H_MAGIC, MAGIC);
-            self.checked = Instant::now();
-            return;
-        }
-        if self.checked.elapsed() < REPAIR_EVERY {
-            return;
-        }
-        self.checked = Instant::now();
-        let base = self.view.base;
-        base.store(H_MAGIC, MAGIC);
-        self.header
-            .write(&base, self.view.generation, self.run_state.get());
-        base.store(H_SEQ, self.seq.get());
-        self.consumer.repair(&base, &self.header.off);
-    }
-
     /// Whether this handle owns the segment (always).
     pub fn is_owner(&self) -> bool {
         true
@@ -255,41 +225,23 @@ impl<T: GlobalMemory> ShmOwner<T> {
         Ok(())
     }
 
-    /// Applies the mailbox's requests to `gm` in order. Returns
-    /// how many were taken. A request that is refused is counted, not applied: the owner checks
-    /// again that the variable may be written from outside and that `set` accepts the value,
-    /// since any process that maps the segment can post anything.
+    /// Applies the writes received since the last call to `gm`, in order, each request all
+    /// or none, and answers their writers. Returns how many writes were applied. The socket
+    /// server checked each one against `T`'s declaration already (writable from outside,
+    /// element, value); `set` decides last.
     pub fn apply_mailbox(&mut self, gm: &mut T) -> usize {
         self.apply_mailbox_with(gm, |_, _| {})
     }
 
-    /// Like [`apply_mailbox`](Self::apply_mailbox), calling `audit` with each request and the
+    /// Like [`apply_mailbox`](Self::apply_mailbox), calling `audit` with each write and the
     /// outcome of applying it (to log operator writes, for example).
     pub fn apply_mailbox_with(
         &mut self,
         gm: &mut T,
         mut audit: impl FnMut(&Request, &Result<(), Rejection>),
     ) -> usize {
-        self.repair();
-        let consumer = &mut self.consumer;
-        let base = self.view.base;
-        let (mut ok, mut bad) = (0u64, 0u64);
-        let n = consumer.drain(&base, &self.view.off, |r| {
-            let result = writable::<T>(r.index, r.element)
-                .and_then(|()| gm.set(r.index, r.element, r.value).map_err(Rejection::Set));
-            match result {
-                Ok(()) => ok += 1,
-                Err(_) => bad += 1,
-            }
-            audit(&r, &result);
-            result.is_ok()
-        });
-        // Counted here and stored: the shared words are for tools, never read back.
-        consumer.applied = consumer.applied.wrapping_add(ok);
-        consumer.rejected = consumer.rejected.wrapping_add(bad);
-        base.store(S_MB_APPLIED, consumer.applied);
-        base.store(S_MB_REJECTED, consumer.rejected);
-        n
+        self.inbox
+            .apply(gm, &self.view.base, &self.view.off, &mut audit)
     }
 
     /// A consistent copy of the image as readers see it, into `image` (for tests and
@@ -300,10 +252,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
             .consistent(|| bytes::load(&self.view.base, IMAGE, out))
     }
 
-    /// Whether another process truncated the segment while this handle maps it. The handle
-    /// keeps working (it reads zeros, and what it publishes reaches nobody) instead of the
-    /// process dying of SIGBUS, until the next [`apply_mailbox`](Self::apply_mailbox) replaces
-    /// the segment by a new one (a new generation, which tools attach to again).
+    /// Whether the segment was cut short under this handle. Its seals make that impossible
+    /// (no process can shrink it); the SIGBUS guard behind this stays as a second line.
     pub fn damaged(&self) -> bool {
         self.view.seg.damaged()
     }
@@ -311,6 +261,26 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// Publishes the figures of cycle `cycle_count` and a heartbeat.
     pub fn report(&self, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
         write_report(&self.view.base, cycle_count, stats, io);
+    }
+
+    /// Test hook: stores `data` at byte `offset` of the segment (8-aligned) through the
+    /// owner's own mapping, as a damaged or hostile owner would, to test a tool's checks (no
+    /// other process can write the sealed segment).
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn scribble(&self, offset: usize, data: &[u8]) {
+        let start = offset - offset % 8;
+        let mut region = vec![0u8; offset - start + data.len()];
+        bytes::load(&self.view.base, start, &mut region);
+        region[offset - start..].copy_from_slice(data);
+        bytes::store(&self.view.base, start, &region);
+    }
+
+    /// Test hook: the word at byte `offset` of the segment.
+    #[cfg(feature = "fault-injection")]
+    #[doc(hidden)]
+    pub fn word(&self, offset: usize) -> u64 {
+        self.view.base.load(offset)
     }
 
     /// Publishes how many saves of retained values failed so far.
@@ -326,7 +296,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
 }
 
 /// A typed reader of a segment (an HMI, a tool with the program's type): snapshots, reads and
-/// writes through the mailbox. From [`SharedGlobalMemory::attach`].
+/// writes over the segment's socket. From [`SharedGlobalMemory::attach`].
 ///
 /// A reader cannot publish: a second seqlock writer would let readers take torn images, so the
 /// call does not exist.
@@ -384,50 +354,17 @@ impl<T: GlobalMemory> ShmReader<T> {
         self.view.read_element(name, element)
     }
 
-    /// Posts a write to the mailbox; refused up front for unknown names, read-only, input and
-    /// status variables, wrong kinds, out-of-range values and over-long strings.
+    /// Writes a variable, checked here first (unknown names, read-only, input and status
+    /// variables, wrong kinds, out-of-range values, over-long strings), then applied by the
+    /// owner at its next cycle: returns once applied, or with the owner's refusal.
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, 0, value).map(drop)
+        self.view.write_all(&[(name, 0, value)])
     }
 
-    /// Posts a write of one array element.
+    /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        self.view.write_element(name, element, value).map(drop)
+        self.view.write_all(&[(name, element, value)])
     }
-}
-
-/// Whether element (leaf) `element` of variable `index` of `T` may be written from outside:
-/// its declaration decides, not the descriptor in the segment, which any process could have
-/// changed. Inside a structure, the member and every structure on the way must be writable.
-fn writable<T: GlobalMemory>(index: usize, element: usize) -> Result<(), Rejection> {
-    let Some(var) = T::VARIABLES.get(index) else {
-        return Err(Rejection::Set(plc_core::SetError::UnknownIndex { index }));
-    };
-    let Some(found) = plc_rules::path::leaf(T::VARIABLES, index, element) else {
-        return Err(Rejection::Set(plc_core::SetError::ElementOutOfRange {
-            name: var.name,
-            element,
-            len: var.leaves(),
-        }));
-    };
-    if found.writable {
-        return Ok(());
-    }
-    let leaf = found.node;
-    // The first thing on the way that is not writable says why.
-    let (read_only, direction, name) = if !var.writable_from_outside() {
-        (
-            var.access == plc_core::Access::ReadOnly,
-            var.direction,
-            var.name,
-        )
-    } else {
-        (true, leaf.direction, leaf.name)
-    };
-    Err(Rejection::NotWritable {
-        variable: name,
-        reason: not_writable_reason(read_only, direction),
-    })
 }
 
 impl<T: GlobalMemory> Drop for ShmOwner<T> {
@@ -435,6 +372,15 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         // A fault stays visible to readers still attached: only a running owner stops.
         if self.run_state.get() != RunState::Faulted {
             self.set_run_state(RunState::Stopped);
+        }
+        // Writes received and never applied are answered: their writers need not wait.
+        if let Ok(rx) = self.inbox.rx.lock() {
+            for _ in 0..QUEUE {
+                let Ok(batch) = rx.try_recv() else { break };
+                batch
+                    .conn
+                    .answer(batch.id, Code::Stopped, 0, "the program stopped".into());
+            }
         }
     }
 }

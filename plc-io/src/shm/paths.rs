@@ -111,6 +111,14 @@ impl DynSegment {
         codec::decode(image, &at.var, 0)
     }
 
+    /// Writes a value found by its path, checked as [`check_location`](Self::check_location)
+    /// checks it and then by the program; returns once the program applied it (or refused it).
+    pub fn write_location(&self, at: &PathLocation, value: Value) -> Result<(), ShmError> {
+        let value = self.check_location(at, value)?;
+        let name = &self.descriptor().variables[at.index].name;
+        self.write_element(name, at.leaf, value)
+    }
+
     /// Checks a write to a location as the owner would (writable, kind, range, capacity),
     /// without sending it; the value as it would be sent.
     pub fn check_location(&self, at: &PathLocation, value: Value) -> Result<Value, ShmError> {

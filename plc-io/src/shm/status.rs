@@ -87,16 +87,20 @@ pub struct Status {
     pub inputs_valid: bool,
     /// Time since the last heartbeat.
     pub heartbeat_age: Duration,
-    /// Mailbox writes applied.
+    /// Writes from outside applied (each variable element of a request counts).
     pub writes_applied: u64,
-    /// Mailbox writes refused by the program's `set`.
+    /// Writes refused by the program's declaration (not writable, element, value) or its
+    /// `set`; every write of a refused request counts.
     pub writes_rejected: u64,
-    /// Mailbox slots reclaimed from writers that never committed.
+    /// Requests not taken because too many were waiting (the writer was told to try again).
     pub writes_reclaimed: u64,
-    /// Mailbox requests discarded as damaged (a reclaimed writer stored into the slot late).
+    /// Messages on the socket that were not valid write requests, dropped.
     pub writes_discarded: u64,
-    /// Requests in the mailbox now: claimed by a writer, not yet taken by the owner.
+    /// Requests accepted and waiting for the start of the next cycle.
     pub writes_pending: u64,
+    /// Requests refused because the writer's uid and groups may not write (see
+    /// [`RuntimeBuilder::write_group`](crate::RuntimeBuilder::write_group)).
+    pub writes_refused: u64,
     /// Generation: increases with every new owner of the name (a restart or a takeover).
     pub generation: u64,
     /// Saves of retained values that failed so far (each is tried again; one that fails at
@@ -167,9 +171,10 @@ impl Status {
             heartbeat_age: Duration::from_nanos(now_ns().saturating_sub(base.load(S_HEARTBEAT_NS))),
             writes_applied: base.load(S_MB_APPLIED),
             writes_rejected: base.load(S_MB_REJECTED),
-            writes_reclaimed: base.load(off.mb_reclaimed()),
-            writes_discarded: base.load(off.mb_discarded()),
-            writes_pending: super::mailbox::pending(base, off),
+            writes_reclaimed: base.load(off.w_busy()),
+            writes_discarded: base.load(off.w_malformed()),
+            writes_pending: base.load(off.w_pending()),
+            writes_refused: base.load(off.w_refused()),
             generation: base.load(H_GENERATION),
             retain_failures: base.load(S_RETAIN_FAILED),
             cycle_utc_ns: base.load(S_CYCLE_UTC_NS),

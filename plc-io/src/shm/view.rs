@@ -1,10 +1,11 @@
 //! An attached segment, typed or not: header checks, seqlock snapshots, owner liveness and
-//! mailbox writes. `SharedGlobalMemory::attach` and `DynSegment::attach` both use it.
+//! writes over the socket. `SharedGlobalMemory::attach` and `DynSegment::attach` both use it.
 
+use super::client::answer_result;
 use super::codec;
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
-use super::mailbox::{self, Outcome, PostError, Request, Ticket};
+use super::mailbox::{Outcome, Request, Ticket};
 use super::segment::{self, Segment};
 use super::status::{OwnerState, RunState, Status};
 use super::{ShmError, bytes};
@@ -23,6 +24,9 @@ pub const MAX_DESCRIPTOR: usize = 64 << 20;
 pub const MAX_IMAGE: usize = 256 << 20;
 /// How often a reader re-checks that the owner is alive.
 const LIVENESS_EVERY: Duration = Duration::from_millis(20);
+/// How long a write waits for the owner's answer at least and at most: fifty of its cycles
+/// in between.
+const WRITE_PATIENCE: (Duration, Duration) = (Duration::from_secs(1), Duration::from_secs(10));
 
 pub(crate) struct View {
     pub seg: Segment,
@@ -45,18 +49,8 @@ impl View {
                 needed: IMAGE,
             });
         }
-        // A new owner writes the magic last: give it a moment.
-        let start = Instant::now();
-        let magic = loop {
-            let m = base.load(H_MAGIC);
-            if m != 0 || start.elapsed() > Duration::from_secs(1) {
-                break m;
-            }
-            std::thread::sleep(Duration::from_millis(2));
-        };
-        if magic == MAGIC_REPLACED {
-            return Err(ShmError::Replaced(name));
-        }
+        // The owner serves its segment only once its header is complete.
+        let magic = base.load(H_MAGIC);
         if magic == MAGIC_CLOSED {
             return Err(closed(&base, name));
         }
@@ -169,7 +163,12 @@ impl View {
         match self.base.load(H_MAGIC) {
             MAGIC if self.base.load(H_GENERATION) == self.generation => {}
             MAGIC_CLOSED => return Err(closed(&self.base, self.name().to_string())),
-            _ => return Err(ShmError::Replaced(self.name().to_string())),
+            _ => {
+                return Err(ShmError::Corrupt {
+                    name: self.name().to_string(),
+                    why: "its header changed under this tool".into(),
+                });
+            }
         }
         if self.seg.is_owner() {
             return Ok(());
@@ -179,7 +178,7 @@ impl View {
             .get()
             .is_some_and(|t| t.elapsed() < LIVENESS_EVERY);
         if !fresh {
-            if !segment::owner_alive(self.name()) {
+            if !self.seg.owner_alive() {
                 return Err(ShmError::OwnerGone(self.name().to_string()));
             }
             self.checked_alive.set(Some(Instant::now()));
@@ -262,54 +261,114 @@ impl View {
                 var.direction,
             ));
         }
-        if element >= var.elements() {
+        // The basic value numbered `element`: an array's element, or one inside a structure
+        // (its leaf), with the member's own access and type.
+        let Some(found) = plc_rules::path::leaf(&self.desc.variables, index, element) else {
             return Err(ShmError::ElementOutOfRange {
                 variable: var.name.clone(),
                 element,
-                len: var.elements(),
+                len: plc_rules::path::leaves(var),
             });
+        };
+        let (leaf, label) = if var.members.is_empty() {
+            (var, var.name.clone())
+        } else {
+            (found.node, format!("{}.{}", var.name, found.node.name))
+        };
+        if !found.writable {
+            return Err(ShmError::not_writable(&label, true, leaf.direction));
         }
         let value = value
-            .fit(var.iec_type, var.string_capacity())
+            .fit(leaf.iec_type, leaf.string_capacity())
             .map_err(|error| ShmError::Value {
-                variable: var.name.clone(),
+                variable: label,
                 error,
             })?;
         Ok((index, value))
     }
 
-    /// Checks a write as the owner would and posts it to the mailbox.
-    pub fn write_element(
-        &self,
-        name: &str,
-        element: usize,
-        value: Value,
-    ) -> Result<Ticket, ShmError> {
-        let (index, value) = self.check_element(name, element, value)?;
-        self.post(index, element, value)
+    /// Checks writes as the owner would: the requests to send.
+    fn check_all(&self, writes: &[(&str, usize, Value)]) -> Result<Vec<Request>, ShmError> {
+        writes
+            .iter()
+            .map(|&(name, element, value)| {
+                let (index, value) = self.check_element(name, element, value)?;
+                Ok(Request {
+                    index,
+                    element,
+                    value,
+                })
+            })
+            .collect()
     }
 
-    /// Posts a request as it is (the checks are the caller's).
-    pub fn post(&self, index: usize, element: usize, value: Value) -> Result<Ticket, ShmError> {
+    /// Checks writes as the owner would and sends them as one request: its ticket.
+    pub fn post_all(&self, writes: &[(&str, usize, Value)]) -> Result<Ticket, ShmError> {
+        let requests = self.check_all(writes)?;
+        self.post(&requests)
+    }
+
+    /// Sends `requests` as one request, as they are (the checks are the caller's).
+    pub fn post(&self, requests: &[Request]) -> Result<Ticket, ShmError> {
         self.check_owner()?;
-        let request = Request {
-            index,
-            element,
-            value,
-        };
-        mailbox::post(&self.base, &self.off, &request).map_err(|e| match e {
-            PostError::Full => ShmError::MailboxFull(self.name().to_string()),
-            PostError::Reclaimed => ShmError::WriteReclaimed(self.name().to_string()),
-            PostError::Damaged => ShmError::MailboxDamaged(self.name().to_string()),
-        })
+        if requests.is_empty() || requests.len() > super::protocol::MAX_WRITES {
+            return Err(ShmError::Os {
+                name: self.name().to_string(),
+                what: format!("cannot send {} writes as one request", requests.len()),
+                error: format!(
+                    "a request holds 1 to {} writes",
+                    super::protocol::MAX_WRITES
+                ),
+            });
+        }
+        self.client()?.post(requests)
+    }
+
+    fn client(&self) -> Result<&super::client::Client, ShmError> {
+        self.seg
+            .client()
+            .ok_or_else(|| ShmError::NotOwner(self.name().to_string()))
+    }
+
+    /// Checks writes as the owner would, sends them as one request and waits for the owner to
+    /// apply all of them or none.
+    pub fn write_all(&self, writes: &[(&str, usize, Value)]) -> Result<(), ShmError> {
+        let requests = self.check_all(writes)?;
+        self.send_and_wait(&requests)
+    }
+
+    /// Sends `requests` as one request, as they are, and waits for the owner's answer.
+    pub fn send_and_wait(&self, requests: &[Request]) -> Result<(), ShmError> {
+        let ticket = self.post(requests)?;
+        let period = self.status().stats.period;
+        let patience = (period * 50).clamp(WRITE_PATIENCE.0, WRITE_PATIENCE.1);
+        let reply = self.client()?.wait(ticket, patience)?;
+        let names: Vec<String> = requests
+            .iter()
+            .map(|r| {
+                self.desc
+                    .variables
+                    .get(r.index)
+                    .map_or_else(|| format!("#{}", r.index), |v| v.name.clone())
+            })
+            .collect();
+        answer_result(self.name(), &names, reply)
+    }
+
+    /// Sends raw bytes on the socket (test hook for hostile messages).
+    #[cfg(feature = "fault-injection")]
+    pub fn send_raw(&self, bytes: &[u8]) -> Result<(), ShmError> {
+        self.client()?.send_raw(bytes)
+    }
+
+    pub fn may_write(&self) -> bool {
+        self.seg.client().is_some_and(|c| c.may_write())
     }
 
     pub fn outcome(&self, ticket: Ticket) -> Outcome {
-        mailbox::outcome(&self.base, &self.off, ticket)
-    }
-
-    pub fn mailbox_free(&self) -> usize {
-        mailbox::free(&self.base, &self.off)
+        self.seg
+            .client()
+            .map_or(Outcome::Unknown, |c| c.outcome(ticket))
     }
 
     pub fn status(&self) -> Status {
@@ -317,7 +376,7 @@ impl View {
     }
 
     pub fn owner_state(&self) -> OwnerState {
-        let alive = self.seg.is_owner() || segment::owner_alive(self.name());
+        let alive = self.seg.owner_alive();
         if self.base.load(H_MAGIC) != MAGIC {
             return OwnerState::Gone;
         }

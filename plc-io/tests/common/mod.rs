@@ -47,3 +47,31 @@ pub fn kill9(child: &mut Child) {
     unsafe { libc::kill(child.id() as i32, libc::SIGKILL) };
     let _ = child.wait();
 }
+
+/// Runs `f` (which writes and waits for its writes to be applied) while another thread plays
+/// the owner's cycle, applying received writes to `gm`, as the runtime does at each cycle.
+pub fn with_cycles<T: plc_core::GlobalMemory + Send, R>(
+    owner: &mut plc_io::shm::ShmOwner<T>,
+    gm: &mut T,
+    f: impl FnOnce() -> R,
+) -> R {
+    use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+    let done = AtomicBool::new(false);
+    std::thread::scope(|s| {
+        s.spawn(|| {
+            while !done.load(Relaxed) {
+                owner.apply_mailbox(gm);
+                std::thread::sleep(Duration::from_micros(200));
+            }
+        });
+        let r = f();
+        done.store(true, Relaxed);
+        r
+    })
+}
+
+/// A file of this program's runtime directory (its socket `<name>.sock`, its lock file
+/// `<name>.lock`).
+pub fn runtime_file(file: &str) -> std::path::PathBuf {
+    plc_io::shm::runtime_dir().join(file)
+}

@@ -1,0 +1,437 @@
+//! The messages on a segment's socket, as bytes, and their decoders. The socket is
+//! `SOCK_SEQPACKET`: the kernel keeps each message whole, so a message is one datagram and
+//! nothing here reassembles a stream.
+//!
+//! Every number is little endian. The decoders read bytes from another process: they check
+//! every length before using it, never allocate more than the message they were given holds,
+//! and refuse anything left over, so that a message has exactly one meaning.
+//!
+//! ```text
+//! greeting (owner -> tool, with the segment's memfd attached):
+//!     "PLCW"  version u16  may_write u8
+//! write request (tool -> owner):
+//!     1u8  id u64  count u16 (1..=MAX_WRITES)  then count times:
+//!     index u32  element u32  kind u8  payload
+//!         kind 0 bool (u8 0/1), 1 int (i64), 2 uint (u64), 3 real (f64 bits),
+//!         4 text (len u8, then len bytes of UTF-8), 5 duration (i64 nanoseconds)
+//! reply (owner -> tool):
+//!     2u8  id u64  code u8  which u16  len u16  then len bytes of UTF-8 (the reason)
+//! ```
+
+use plc_core::{FixedString, Value};
+
+/// Protocol version, in the greeting: a tool and an owner of another version refuse each other.
+pub const VERSION: u16 = 1;
+/// The greeting's first bytes.
+const GREETING_MAGIC: &[u8; 4] = b"PLCW";
+/// Writes in one request (a request is checked whole and applied in one cycle).
+pub const MAX_WRITES: usize = 64;
+/// The largest message either side sends or reads: a request of [`MAX_WRITES`] texts of 255
+/// bytes fits.
+pub const MAX_MESSAGE: usize = 11 + MAX_WRITES * (4 + 4 + 1 + 1 + 255);
+/// The longest reason a reply carries.
+const MAX_REASON: usize = 1024;
+
+const TAG_WRITE: u8 = 1;
+const TAG_REPLY: u8 = 2;
+
+/// One write of a request: variable index, element, value.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Write {
+    /// Index of the variable in the program's declaration.
+    pub index: u32,
+    /// Element (row-major), 0 for a scalar.
+    pub element: u32,
+    /// The value.
+    pub value: Value,
+}
+
+/// A request: writes checked whole and applied in one cycle, all or none.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WriteRequest {
+    /// The writer's number for it, echoed in the reply.
+    pub id: u64,
+    /// The writes, in order.
+    pub writes: Vec<Write>,
+}
+
+/// What the owner did with a request.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Code {
+    /// Applied, every write of it, at the start of a cycle.
+    Applied = 0,
+    /// Refused by the program's declaration or its `set` (`which` write, and why): nothing of
+    /// the request was applied.
+    Rejected = 1,
+    /// The writer may not write this program (the policy's rule is the reason).
+    Refused = 2,
+    /// The message was not a valid request.
+    Malformed = 3,
+    /// Too many requests are waiting already: try again.
+    Busy = 4,
+    /// The owner stopped before it applied the request.
+    Stopped = 5,
+}
+
+impl Code {
+    fn from_byte(b: u8) -> Option<Code> {
+        Some(match b {
+            0 => Code::Applied,
+            1 => Code::Rejected,
+            2 => Code::Refused,
+            3 => Code::Malformed,
+            4 => Code::Busy,
+            5 => Code::Stopped,
+            _ => return None,
+        })
+    }
+}
+
+/// The owner's answer to a request.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Reply {
+    /// The request's id.
+    pub id: u64,
+    /// What became of it.
+    pub code: Code,
+    /// The write of the request the reason is about (0 if none).
+    pub which: u16,
+    /// Why, for every code but `Applied`.
+    pub reason: String,
+}
+
+/// The owner's greeting.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Greeting {
+    /// The protocol version.
+    pub version: u16,
+    /// Whether the policy lets this connection's process write.
+    pub may_write: bool,
+}
+
+/// Why a message could not be decoded.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DecodeError(pub String);
+
+impl std::fmt::Display for DecodeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+/// Reads a message front to back, every read checked.
+struct Reader<'a> {
+    rest: &'a [u8],
+}
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], DecodeError> {
+        if self.rest.len() < n {
+            return Err(DecodeError(format!(
+                "the message ends inside the {what} ({} bytes left, {n} needed)",
+                self.rest.len()
+            )));
+        }
+        let (head, rest) = self.rest.split_at(n);
+        self.rest = rest;
+        Ok(head)
+    }
+    fn array<const N: usize>(&mut self, what: &str) -> Result<[u8; N], DecodeError> {
+        let mut a = [0u8; N];
+        a.copy_from_slice(self.take(N, what)?);
+        Ok(a)
+    }
+    fn u8(&mut self, what: &str) -> Result<u8, DecodeError> {
+        Ok(self.array::<1>(what)?[0])
+    }
+    fn u16(&mut self, what: &str) -> Result<u16, DecodeError> {
+        Ok(u16::from_le_bytes(self.array(what)?))
+    }
+    fn u32(&mut self, what: &str) -> Result<u32, DecodeError> {
+        Ok(u32::from_le_bytes(self.array(what)?))
+    }
+    fn u64(&mut self, what: &str) -> Result<u64, DecodeError> {
+        Ok(u64::from_le_bytes(self.array(what)?))
+    }
+    fn utf8(&mut self, n: usize, what: &str) -> Result<&'a str, DecodeError> {
+        std::str::from_utf8(self.take(n, what)?)
+            .map_err(|e| DecodeError(format!("the {what} is not UTF-8: {e}")))
+    }
+    fn end(&self) -> Result<(), DecodeError> {
+        if self.rest.is_empty() {
+            Ok(())
+        } else {
+            Err(DecodeError(format!(
+                "{} bytes follow the end of the message",
+                self.rest.len()
+            )))
+        }
+    }
+}
+
+fn start(bytes: &[u8]) -> Result<Reader<'_>, DecodeError> {
+    if bytes.len() > MAX_MESSAGE {
+        return Err(DecodeError(format!(
+            "the message is {} bytes, more than the {MAX_MESSAGE} allowed",
+            bytes.len()
+        )));
+    }
+    Ok(Reader { rest: bytes })
+}
+
+/// The greeting's bytes.
+pub fn encode_greeting(may_write: bool) -> Vec<u8> {
+    let mut out = GREETING_MAGIC.to_vec();
+    out.extend_from_slice(&VERSION.to_le_bytes());
+    out.push(u8::from(may_write));
+    out
+}
+
+/// Decodes a greeting.
+pub fn decode_greeting(bytes: &[u8]) -> Result<Greeting, DecodeError> {
+    let mut r = start(bytes)?;
+    if r.take(4, "greeting")? != GREETING_MAGIC {
+        return Err(DecodeError("not a plc-vars greeting".into()));
+    }
+    let version = r.u16("version")?;
+    let may_write = match r.u8("write permission")? {
+        0 => false,
+        1 => true,
+        b => return Err(DecodeError(format!("write permission byte {b}"))),
+    };
+    r.end()?;
+    Ok(Greeting { version, may_write })
+}
+
+/// A request's bytes. The caller keeps to [`MAX_WRITES`].
+pub fn encode_request(request: &WriteRequest) -> Vec<u8> {
+    let mut out = vec![TAG_WRITE];
+    out.extend_from_slice(&request.id.to_le_bytes());
+    out.extend_from_slice(&(request.writes.len() as u16).to_le_bytes());
+    for w in &request.writes {
+        out.extend_from_slice(&w.index.to_le_bytes());
+        out.extend_from_slice(&w.element.to_le_bytes());
+        match w.value {
+            Value::Bool(b) => out.extend_from_slice(&[0, u8::from(b)]),
+            Value::Int(i) => {
+                out.push(1);
+                out.extend_from_slice(&i.to_le_bytes());
+            }
+            Value::UInt(u) => {
+                out.push(2);
+                out.extend_from_slice(&u.to_le_bytes());
+            }
+            Value::Real(f) => {
+                out.push(3);
+                out.extend_from_slice(&f.to_bits().to_le_bytes());
+            }
+            Value::Text(t) => {
+                let s = t.as_str().as_bytes();
+                out.extend_from_slice(&[4, s.len() as u8]);
+                out.extend_from_slice(s);
+            }
+            Value::Time(t) => {
+                out.push(5);
+                out.extend_from_slice(&t.as_nanos().to_le_bytes());
+            }
+        }
+    }
+    out
+}
+
+/// Decodes a request.
+pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
+    let mut r = start(bytes)?;
+    let tag = r.u8("tag")?;
+    if tag != TAG_WRITE {
+        return Err(DecodeError(format!("unknown message tag {tag}")));
+    }
+    let id = r.u64("request id")?;
+    let count = usize::from(r.u16("write count")?);
+    if count == 0 || count > MAX_WRITES {
+        return Err(DecodeError(format!(
+            "a request holds 1 to {MAX_WRITES} writes, not {count}"
+        )));
+    }
+    // Bounded by MAX_WRITES, whatever the message says.
+    let mut writes = Vec::with_capacity(count);
+    for _ in 0..count {
+        let index = r.u32("variable index")?;
+        let element = r.u32("element")?;
+        let value = match r.u8("value kind")? {
+            0 => match r.u8("bool")? {
+                0 => Value::Bool(false),
+                1 => Value::Bool(true),
+                b => return Err(DecodeError(format!("bool byte {b}"))),
+            },
+            1 => Value::Int(r.u64("int")? as i64),
+            2 => Value::UInt(r.u64("uint")?),
+            3 => Value::Real(f64::from_bits(r.u64("real")?)),
+            4 => {
+                let len = usize::from(r.u8("text length")?);
+                let text = r.utf8(len, "text")?;
+                if text.contains('\0') {
+                    return Err(DecodeError("a text holds a NUL character".into()));
+                }
+                Value::Text(FixedString::from_str_truncate(text))
+            }
+            5 => Value::Time(plc_core::Time::from_nanos(r.u64("duration")? as i64)),
+            k => return Err(DecodeError(format!("unknown value kind {k}"))),
+        };
+        writes.push(Write {
+            index,
+            element,
+            value,
+        });
+    }
+    r.end()?;
+    Ok(WriteRequest { id, writes })
+}
+
+/// A reply's bytes; a reason longer than the protocol carries is cut at a character boundary.
+pub fn encode_reply(reply: &Reply) -> Vec<u8> {
+    let mut end = reply.reason.len().min(MAX_REASON);
+    while !reply.reason.is_char_boundary(end) {
+        end -= 1;
+    }
+    let reason = &reply.reason.as_bytes()[..end];
+    let mut out = vec![TAG_REPLY];
+    out.extend_from_slice(&reply.id.to_le_bytes());
+    out.push(reply.code as u8);
+    out.extend_from_slice(&reply.which.to_le_bytes());
+    out.extend_from_slice(&(reason.len() as u16).to_le_bytes());
+    out.extend_from_slice(reason);
+    out
+}
+
+/// Decodes a reply.
+pub fn decode_reply(bytes: &[u8]) -> Result<Reply, DecodeError> {
+    let mut r = start(bytes)?;
+    let tag = r.u8("tag")?;
+    if tag != TAG_REPLY {
+        return Err(DecodeError(format!("unknown message tag {tag}")));
+    }
+    let id = r.u64("request id")?;
+    let code = r.u8("code")?;
+    let code = Code::from_byte(code).ok_or_else(|| DecodeError(format!("reply code {code}")))?;
+    let which = r.u16("write number")?;
+    let len = usize::from(r.u16("reason length")?);
+    if len > MAX_REASON {
+        return Err(DecodeError(format!("a reason of {len} bytes")));
+    }
+    let reason = r.utf8(len, "reason")?.to_string();
+    r.end()?;
+    Ok(Reply {
+        id,
+        code,
+        which,
+        reason,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn any_value() -> impl Strategy<Value = Value> {
+        prop_oneof![
+            any::<bool>().prop_map(Value::Bool),
+            any::<i64>().prop_map(Value::Int),
+            any::<u64>().prop_map(Value::UInt),
+            any::<u64>().prop_map(|b| Value::Real(f64::from_bits(b))),
+            "[^\\x00]{0,60}".prop_map(|s| Value::Text(FixedString::from_str_truncate(&s))),
+            any::<i64>().prop_map(|n| Value::Time(plc_core::Time::from_nanos(n))),
+        ]
+    }
+
+    fn same(a: &Value, b: &Value) -> bool {
+        match (a, b) {
+            // NaN payloads compare by bits.
+            (Value::Real(x), Value::Real(y)) => x.to_bits() == y.to_bits(),
+            _ => a == b,
+        }
+    }
+
+    proptest! {
+        /// Whatever bytes arrive, the decoders answer (a value or an error), never panic, and
+        /// what they accept encodes back to the same bytes: one meaning per message.
+        #[test]
+        fn arbitrary_bytes_decode_to_an_error_or_to_their_one_meaning(
+            bytes in proptest::collection::vec(any::<u8>(), 0..2048),
+            tag in 0u8..4,
+        ) {
+            let mut bytes = bytes;
+            if let Some(b) = bytes.first_mut() {
+                *b = tag; // reach past the tag check most of the time
+            }
+            if let Ok(request) = decode_request(&bytes) {
+                prop_assert_eq!(encode_request(&request), bytes.clone());
+            }
+            if let Ok(reply) = decode_reply(&bytes) {
+                prop_assert_eq!(encode_reply(&reply), bytes.clone());
+            }
+            let _ = decode_greeting(&bytes);
+        }
+
+        /// Every request a tool can send decodes to itself, and every truncation of it is an
+        /// error.
+        #[test]
+        fn requests_round_trip_and_their_truncations_are_refused(
+            id in any::<u64>(),
+            writes in proptest::collection::vec(
+                (any::<u32>(), any::<u32>(), any_value()), 1..=MAX_WRITES),
+            cut in any::<proptest::sample::Index>(),
+        ) {
+            let request = WriteRequest {
+                id,
+                writes: writes
+                    .into_iter()
+                    .map(|(index, element, value)| Write { index, element, value })
+                    .collect(),
+            };
+            let bytes = encode_request(&request);
+            prop_assert!(bytes.len() <= MAX_MESSAGE);
+            let back = decode_request(&bytes).unwrap();
+            prop_assert_eq!(back.id, request.id);
+            prop_assert_eq!(back.writes.len(), request.writes.len());
+            for (a, b) in back.writes.iter().zip(&request.writes) {
+                prop_assert!(a.index == b.index && a.element == b.element);
+                prop_assert!(same(&a.value, &b.value), "{:?} / {:?}", a.value, b.value);
+            }
+            let cut = cut.index(bytes.len());
+            prop_assert!(decode_request(&bytes[..cut]).is_err());
+        }
+    }
+
+    #[test]
+    fn a_request_with_no_or_too_many_writes_is_refused() {
+        let mut none = vec![TAG_WRITE];
+        none.extend_from_slice(&7u64.to_le_bytes());
+        none.extend_from_slice(&0u16.to_le_bytes());
+        assert!(decode_request(&none).unwrap_err().0.contains("not 0"));
+        let mut many = none.clone();
+        many[9..11].copy_from_slice(&u16::MAX.to_le_bytes());
+        assert!(decode_request(&many).unwrap_err().0.contains("not 65535"));
+    }
+
+    #[test]
+    fn a_long_reason_is_cut_at_a_character_boundary() {
+        let reply = Reply {
+            id: 1,
+            code: Code::Rejected,
+            which: 0,
+            reason: "é".repeat(MAX_REASON),
+        };
+        let back = decode_reply(&encode_reply(&reply)).unwrap();
+        assert_eq!(back.reason.len(), MAX_REASON);
+    }
+
+    #[test]
+    fn greetings_round_trip() {
+        for may_write in [false, true] {
+            let g = decode_greeting(&encode_greeting(may_write)).unwrap();
+            assert_eq!((g.version, g.may_write), (VERSION, may_write));
+        }
+    }
+}
