@@ -7,6 +7,7 @@ use super::mailbox::{Outcome, Ticket};
 use super::status::{OwnerState, Status};
 use super::view::View;
 use plc_core::Value;
+use std::time::{Duration, Instant};
 
 /// A segment attached through its stored descriptor (what `plc` uses).
 ///
@@ -97,6 +98,78 @@ impl DynSegment {
     /// Posts a write of one array element.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
         self.view.write_element(name, element, value).map(drop)
+    }
+
+    /// Writes a batch of elements as one request: every write is checked first (as
+    /// [`check`](Self::check) checks it) and nothing is posted if one is refused; the mailbox
+    /// must have room for the whole batch; then all are posted together and their outcomes
+    /// awaited (fifty of the owner's periods, at least one second, at most ten).
+    ///
+    /// The owner applies every request it finds in its mailbox at the start of a cycle, in
+    /// order, so a batch posted together is applied at one cycle start when it fits the mailbox
+    /// ([`mailbox_free`](Self::mailbox_free)); a cycle that starts while the batch is being
+    /// posted can split it (posting takes microseconds). An array written whole (`name`, `0..n`)
+    /// lands in one cycle this way.
+    ///
+    /// ```no_run
+    /// use plc_core::Value;
+    /// let seg = plc_io::shm::DynSegment::attach("tensile_tester")?;
+    /// seg.write_all(&[("speed_setpoint", 0, Value::Real(1.5)), ("auto_start", 0, Value::Bool(true))])?;
+    /// # Ok::<(), plc_io::shm::ShmError>(())
+    /// ```
+    pub fn write_all(&self, writes: &[(&str, usize, Value)]) -> Result<(), ShmError> {
+        let checked = writes
+            .iter()
+            .map(|&(name, element, value)| {
+                self.view
+                    .check_element(name, element, value)
+                    .map(|(index, value)| (index, element, value))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if checked.len() > self.mailbox_free() {
+            return Err(ShmError::MailboxFull(self.name().to_string()));
+        }
+        let tickets = checked
+            .iter()
+            .map(|&(index, element, value)| self.view.post(index, element, value))
+            .collect::<Result<Vec<_>, _>>()?;
+        let patience = (self.status().stats.period * 50)
+            .clamp(Duration::from_secs(1), Duration::from_secs(10));
+        let start = Instant::now();
+        loop {
+            let outcomes: Vec<Outcome> = tickets.iter().map(|&t| self.outcome(t)).collect();
+            for (&(index, _, _), outcome) in checked.iter().zip(&outcomes) {
+                let name = &self.view.desc.variables[index].name;
+                match outcome {
+                    Outcome::Rejected => {
+                        return Err(ShmError::NotWritable {
+                            variable: name.clone(),
+                            reason: "the program refused the value",
+                        });
+                    }
+                    Outcome::Discarded => {
+                        return Err(ShmError::WriteReclaimed(self.name().to_string()));
+                    }
+                    _ => {}
+                }
+            }
+            if !outcomes.contains(&Outcome::Pending) {
+                return Ok(());
+            }
+            self.view.check_owner()?;
+            if start.elapsed() > patience {
+                return Err(ShmError::Os {
+                    name: self.name().to_string(),
+                    what: "waiting for the program to take a batch of writes".into(),
+                    error: format!(
+                        "not taken within {:.1} s (is it running? `plc list` shows its state); \
+                         it is applied when the program takes it",
+                        patience.as_secs_f64()
+                    ),
+                });
+            }
+            std::thread::sleep(Duration::from_millis(1));
+        }
     }
 
     /// Posts a write of one element, checked as [`write_element`](Self::write_element) checks
