@@ -7,9 +7,7 @@
 use crate::mapping;
 use opcua::nodes::{ObjectBuilder, VariableBuilder};
 use opcua::server::address_space::AddressSpace;
-use opcua::types::{
-    LocalizedText, NodeId, ObjectId, ObjectTypeId, VariableTypeId,
-};
+use opcua::types::{LocalizedText, NodeId, ObjectId, ObjectTypeId, QualifiedName, VariableTypeId};
 use plc_io::shm::{LayoutDescriptor, VarDescriptor};
 use std::collections::HashMap;
 use std::time::Duration;
@@ -64,7 +62,7 @@ impl Layout {
     /// Adds the program object under Objects and a node per variable under it.
     pub fn insert_into(&self, space: &mut AddressSpace, segment: &str, period: Duration) {
         let program = self.program_node();
-        ObjectBuilder::new(&program, segment, segment)
+        ObjectBuilder::new(&program, QualifiedName::new(self.ns, segment), segment)
             .description(format!("The variables of the plc-vars program of segment `{segment}`"))
             .organized_by(ObjectId::ObjectsFolder)
             .has_type_definition(ObjectTypeId::BaseObjectType)
@@ -74,7 +72,8 @@ impl Layout {
             let id = mapping::variable_node_id(self.ns, &var.name);
             let level = mapping::access_level(var);
             let (rank, dims) = mapping::value_rank(var);
-            let mut builder = VariableBuilder::new(&id, var.name.as_str(), var.name.as_str())
+            let browse_name = QualifiedName::new(self.ns, var.name.as_str());
+            let mut builder = VariableBuilder::new(&id, browse_name, var.name.as_str())
                 .description(LocalizedText::from(var.description.as_str()))
                 .data_type(mapping::data_type(var.iec_type))
                 .value_rank(rank)

@@ -26,6 +26,9 @@ use std::time::{Duration, Instant};
 /// How often a lost segment is looked for again.
 const REATTACH_EVERY: Duration = Duration::from_millis(250);
 
+/// How often a segment without monitored items is looked at.
+const IDLE_POLL: Duration = Duration::from_millis(100);
+
 /// The sampler of one segment.
 pub struct Sampler {
     shared: Arc<Shared>,
@@ -77,8 +80,14 @@ impl Sampler {
             let now = Instant::now();
             if now >= next_poll {
                 self.poll();
-                // Skip missed polls rather than catch up: only the newest cycle matters.
-                next_poll = (next_poll + self.period).max(now);
+                // Without monitored items only the owner's state is followed, ten times a
+                // second; skip missed polls rather than catch up: only the newest cycle matters.
+                let every = if self.shared.monitored().is_empty() {
+                    self.period.max(IDLE_POLL)
+                } else {
+                    self.period
+                };
+                next_poll = (next_poll + every).max(now);
             }
             match reads.recv_timeout(next_poll.saturating_duration_since(Instant::now())) {
                 Ok(job) => self.read(job),

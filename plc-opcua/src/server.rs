@@ -9,7 +9,7 @@ use crate::users::Users;
 use crate::writer::Writer;
 use opcua::crypto::SecurityPolicy;
 use opcua::server::{ServerBuilder, ServerEndpoint, ANONYMOUS_USER_TOKEN_ID};
-use opcua::types::MessageSecurityMode;
+use opcua::types::{MessageSecurityMode, TypeLoaderCollection};
 use plc_io::shm::DynSegment;
 use std::fmt;
 use std::path::{Path, PathBuf};
@@ -125,6 +125,7 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
     }
     builder = builder.subscription_poll_interval_ms(fastest_ms as u64);
     let (server, handle) = builder.build().map_err(ServeError)?;
+    refuse_plain_text_passwords(&handle);
     protect_private_key(&options.pki)?;
     let stop = Arc::new(AtomicBool::new(false));
     let mut threads = Vec::new();
@@ -202,8 +203,19 @@ fn configure(options: &ServeOptions, users: Arc<Users>) -> Result<ServerBuilder,
             secure(MessageSecurityMode::SignAndEncrypt),
         )
         .with_authenticator(Arc::new(PlcAuth::new(users)))
-        .with_type_loader(Arc::new(RefusePlainTextPasswords))
         .diagnostics_enabled(false))
+}
+
+/// Puts [`RefusePlainTextPasswords`] ahead of every other type loader: async-opcua's own
+/// decoder of the core types has the highest priority there is, and a loader added the usual
+/// way is asked only after it.
+fn refuse_plain_text_passwords(handle: &opcua::server::ServerHandle) {
+    let mut loaders = TypeLoaderCollection::new_empty();
+    loaders.add(Arc::new(RefusePlainTextPasswords));
+    for loader in handle.info().type_loaders.read().iter() {
+        loaders.add(loader.clone());
+    }
+    *handle.info().type_loaders.write() = loaders;
 }
 
 /// The private key readable by its owner only (the store writes it with the default mode).
