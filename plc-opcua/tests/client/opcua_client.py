@@ -323,17 +323,23 @@ async def run_check(url, segment, plc_bin, pki, workdir, user, password):
 
 
 async def run_values(url, segment, expected):
+    """Waits (at most 15 s) until every value has the expected status."""
+    want = "Good" if expected == "good" else "BadNoCommunication"
+    deadline = time.time() + 15
     async with Client(url) as client:
         ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
-        program = client.get_node(ua.NodeId(1, ns))
         nodes = []
-        await browse_variables(program, nodes)
-        data = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
-            ua.ReadValueId(NodeId=n.nodeid, AttributeId=ua.AttributeIds.Value) for n in nodes]))
-        names = {dv.StatusCode.name for dv in data}
-        want = "Good" if expected == "good" else "BadNoCommunication"
-        check(names == {want}, f"expected every value {want}, got {names}")
-        ok(f"all {len(nodes)} values {want}")
+        await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
+        check(nodes, "no variables to read")
+        while True:
+            data = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
+                ua.ReadValueId(NodeId=n.nodeid, AttributeId=ua.AttributeIds.Value) for n in nodes]))
+            names = {dv.StatusCode.name for dv in data}
+            if names == {want}:
+                ok(f"all {len(nodes)} values {want}")
+                return
+            check(time.time() < deadline, f"expected every value {want}, still {names} after 15 s")
+            await asyncio.sleep(0.1)
 
 
 def main():
