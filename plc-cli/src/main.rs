@@ -180,12 +180,14 @@ fn main() -> ExitCode {
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
     // Whatever plc-io logs while a command runs, as plain lines on stderr; `RUST_LOG`
     // chooses other levels and crates.
-    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("plc_io=info,plc_opcua=info"))
-        .format(|out, record| {
-            use std::io::Write;
-            writeln!(out, "{}", record.args())
-        })
-        .init();
+    env_logger::Builder::from_env(
+        env_logger::Env::default().default_filter_or("plc_io=info,plc_opcua=info"),
+    )
+    .format(|out, record| {
+        use std::io::Write;
+        writeln!(out, "{}", record.args())
+    })
+    .init();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::List { segment, json } => cmd::list::run(segment.as_deref(), json),

@@ -89,7 +89,11 @@ fn client(dir: &Path, args: &[&str]) {
             .map(|e| {
                 let text = std::fs::read_to_string(e.path()).unwrap_or_default();
                 let tail: Vec<&str> = text.lines().rev().take(30).collect();
-                format!("--- {}\n{}\n", e.path().display(), tail.into_iter().rev().collect::<Vec<_>>().join("\n"))
+                format!(
+                    "--- {}\n{}\n",
+                    e.path().display(),
+                    tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+                )
             })
             .collect();
         panic!(
@@ -166,7 +170,16 @@ fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_res
     let pki_text = pki.to_str().expect("a UTF-8 temp dir");
     client(
         &dir,
-        &["check", &url, &segment, plc, pki_text, work, "operator", "pw of the operator"],
+        &[
+            "check",
+            &url,
+            &segment,
+            plc,
+            pki_text,
+            work,
+            "operator",
+            "pw of the operator",
+        ],
     );
 
     // The program killed: values Bad; started again (a takeover of its segment): Good again.

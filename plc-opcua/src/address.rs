@@ -63,7 +63,9 @@ impl Layout {
     pub fn insert_into(&self, space: &mut AddressSpace, segment: &str, period: Duration) {
         let program = self.program_node();
         ObjectBuilder::new(&program, QualifiedName::new(self.ns, segment), segment)
-            .description(format!("The variables of the plc-vars program of segment `{segment}`"))
+            .description(format!(
+                "The variables of the plc-vars program of segment `{segment}`"
+            ))
             .organized_by(ObjectId::ObjectsFolder)
             .has_type_definition(ObjectTypeId::BaseObjectType)
             .insert(space);

@@ -5,13 +5,13 @@
 
 use crate::mapping;
 use crate::users::Users;
-use opcua::server::authenticator::{AuthManager, Password, UserToken};
-use opcua::server::ServerEndpoint;
 use opcua::crypto::SecurityPolicy;
 use opcua::nodes::AccessLevel;
+use opcua::server::ServerEndpoint;
+use opcua::server::authenticator::{AuthManager, Password, UserToken};
 use opcua::types::{
-    BinaryDecodable, Context, DynEncodable, EncodingResult, Error, NodeId, ObjectId,
-    StatusCode, TypeLoader, TypeLoaderPriority, UAString, UserNameIdentityToken, UserTokenPolicy,
+    BinaryDecodable, Context, DynEncodable, EncodingResult, Error, NodeId, ObjectId, StatusCode,
+    TypeLoader, TypeLoaderPriority, UAString, UserNameIdentityToken, UserTokenPolicy,
     UserTokenType,
 };
 use std::io::Read;
@@ -59,7 +59,11 @@ impl AuthManager for PlcAuth {
             Ok(UserToken(username.to_string()))
         } else {
             // The name is logged only if it is one the file could hold: nothing forged.
-            let shown = if crate::users::valid_name(username) { username } else { "?" };
+            let shown = if crate::users::valid_name(username) {
+                username
+            } else {
+                "?"
+            };
             log::warn!("OPC UA sign-in refused for user `{shown}`: unknown user or wrong password");
             Err(Error::new(
                 StatusCode::BadUserAccessDenied,
@@ -122,20 +126,22 @@ impl TypeLoader for RefusePlainTextPasswords {
         if *node_id != encoding_id {
             return None;
         }
-        Some(UserNameIdentityToken::decode(stream, ctx).and_then(|token| {
-            if token.encryption_algorithm.is_empty() {
-                log::warn!(
-                    "OPC UA sign-in refused: a user name token with its password in plain text \
+        Some(
+            UserNameIdentityToken::decode(stream, ctx).and_then(|token| {
+                if token.encryption_algorithm.is_empty() {
+                    log::warn!(
+                        "OPC UA sign-in refused: a user name token with its password in plain text \
                      (the client must encrypt it with the server's certificate)"
-                );
-                Err(Error::new(
-                    StatusCode::BadIdentityTokenRejected,
-                    "the password of a user name token must be encrypted",
-                ))
-            } else {
-                Ok(Box::new(token) as Box<dyn DynEncodable>)
-            }
-        }))
+                    );
+                    Err(Error::new(
+                        StatusCode::BadIdentityTokenRejected,
+                        "the password of a user name token must be encrypted",
+                    ))
+                } else {
+                    Ok(Box::new(token) as Box<dyn DynEncodable>)
+                }
+            }),
+        )
     }
 
     fn priority(&self) -> TypeLoaderPriority {

@@ -51,5 +51,5 @@ pub mod writer;
 
 /// async-opcua, as this crate uses it (its types appear in this crate's API).
 pub use opcua;
-pub use server::{serve, ServeError, ServeOptions};
-pub use users::{add_user, Users, UsersError};
+pub use server::{ServeError, ServeOptions, serve};
+pub use users::{Users, UsersError, add_user};

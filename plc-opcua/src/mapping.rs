@@ -67,7 +67,10 @@ pub fn value_rank(var: &VarDescriptor) -> (i32, Option<Vec<u32>>) {
     if var.dims.is_empty() {
         (-1, None)
     } else {
-        let dims = var.dims.iter().map(|&d| u32::try_from(d).unwrap_or(u32::MAX));
+        let dims = var
+            .dims
+            .iter()
+            .map(|&d| u32::try_from(d).unwrap_or(u32::MAX));
         (var.dims.len() as i32, Some(dims.collect()))
     }
 }
@@ -186,9 +189,7 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
         ShmError::UnknownVariable { .. } => StatusCode::BadNodeIdUnknown,
         ShmError::ElementOutOfRange { .. } => StatusCode::BadIndexRangeNoData,
         ShmError::Value { error, .. } => match error {
-            ValueError::WrongKind { .. } | ValueError::Syntax { .. } => {
-                StatusCode::BadTypeMismatch
-            }
+            ValueError::WrongKind { .. } | ValueError::Syntax { .. } => StatusCode::BadTypeMismatch,
             ValueError::OutOfRange { .. } | ValueError::TooLong { .. } | ValueError::Nul { .. } => {
                 StatusCode::BadOutOfRange
             }
@@ -235,7 +236,9 @@ pub fn source_time(ns: u64) -> Option<DateTime> {
     if ns == 0 {
         return None;
     }
-    let ticks = i64::try_from(ns / 100).ok()?.checked_add(UNIX_EPOCH_TICKS)?;
+    let ticks = i64::try_from(ns / 100)
+        .ok()?
+        .checked_add(UNIX_EPOCH_TICKS)?;
     Some(DateTime::from(ticks))
 }
 

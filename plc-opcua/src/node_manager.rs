@@ -7,6 +7,7 @@ use crate::mapping;
 use crate::shared::{ReadJob, Shared, WriteJob};
 use crate::users::Users;
 use crate::writer::log_refusal;
+use opcua::server::CreateMonitoredItem;
 use opcua::server::address_space::AddressSpace;
 use opcua::server::diagnostics::NamespaceMetadata;
 use opcua::server::node_manager::memory::{
@@ -16,11 +17,8 @@ use opcua::server::node_manager::{
     MonitoredItemRef, NodeManagerBuilder, ParsedReadValueId, RequestContext, ServerContext,
     WriteNode,
 };
-use opcua::server::CreateMonitoredItem;
 use opcua::sync::RwLock;
-use opcua::types::{
-    AttributeId, DataValue, NumericRange, StatusCode, TimestampsToReturn,
-};
+use opcua::types::{AttributeId, DataValue, NumericRange, StatusCode, TimestampsToReturn};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::sync::oneshot;
@@ -44,24 +42,26 @@ pub fn builder(
     users: Arc<Users>,
     make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,
 ) -> impl NodeManagerBuilder {
-    InMemoryNodeManagerBuilder::new(
-        move |context: ServerContext, space: &mut AddressSpace| {
-            let uri = mapping::namespace_uri(&segment);
-            let ns = context.type_tree.write().namespaces_mut().add_namespace(&uri);
-            space.add_namespace(&uri, ns);
-            let layout = Layout::new(first, ns);
-            layout.insert_into(space, &segment, period);
-            SegmentNodes {
-                shared: make_shared(layout),
-                users,
-                namespace: NamespaceMetadata {
-                    namespace_uri: uri,
-                    namespace_index: ns,
-                    ..Default::default()
-                },
-            }
-        },
-    )
+    InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {
+        let uri = mapping::namespace_uri(&segment);
+        let ns = context
+            .type_tree
+            .write()
+            .namespaces_mut()
+            .add_namespace(&uri);
+        space.add_namespace(&uri, ns);
+        let layout = Layout::new(first, ns);
+        layout.insert_into(space, &segment, period);
+        SegmentNodes {
+            shared: make_shared(layout),
+            users,
+            namespace: NamespaceMetadata {
+                namespace_uri: uri,
+                namespace_index: ns,
+                ..Default::default()
+            },
+        }
+    })
 }
 
 impl SegmentNodes {
@@ -105,10 +105,16 @@ impl SegmentNodes {
         let target = format!("{}.{}", self.shared.segment, var.name);
         let refuse = |why: &str, status| log_refusal(&user, &target, &why, status);
         if value.attribute_id != AttributeId::Value {
-            return refuse("only the Value attribute can be written", StatusCode::BadNotWritable);
+            return refuse(
+                "only the Value attribute can be written",
+                StatusCode::BadNotWritable,
+            );
         }
         if !var.writable_from_outside() {
-            return refuse("the variable is read-only, an input or a status", StatusCode::BadNotWritable);
+            return refuse(
+                "the variable is read-only, an input or a status",
+                StatusCode::BadNotWritable,
+            );
         }
         if !crate::auth::may_write(&self.users, &context.token) {
             return refuse(
@@ -187,7 +193,10 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
         let mut values = self.values(wanted, timestamps).await.into_iter();
         results
             .into_iter()
-            .map(|r| r.or_else(|| values.next()).unwrap_or_else(|| mapping::status_only(StatusCode::BadInternalError)))
+            .map(|r| {
+                r.or_else(|| values.next())
+                    .unwrap_or_else(|| mapping::status_only(StatusCode::BadInternalError))
+            })
             .collect()
     }
 

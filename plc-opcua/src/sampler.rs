@@ -11,16 +11,16 @@
 use crate::address::Layout;
 use crate::mapping;
 use crate::shared::{ReadJob, Shared};
-use opcua::server::address_space::AddressSpace;
 use opcua::server::SubscriptionCache;
+use opcua::server::address_space::AddressSpace;
 use opcua::sync::RwLock;
 use opcua::types::{
     AttributeId, DataValue, DateTime, NodeId, NumericRange, StatusCode, TimestampsToReturn,
 };
 use plc_io::shm::{DynSegment, OwnerState};
+use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
-use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 /// How often a lost segment is looked for again.
@@ -133,8 +133,13 @@ impl Sampler {
         let state_changed = state != self.last_state || self.last_cycle.is_none();
         let previous = &self.last_image;
         let changed = monitored.iter().filter(|id| {
-            let Some((_, var)) = layout.var(id) else { return false };
-            let bytes = |img: &[u8]| img.get(var.offset..var.offset + var.size).map(<[u8]>::to_vec);
+            let Some((_, var)) = layout.var(id) else {
+                return false;
+            };
+            let bytes = |img: &[u8]| {
+                img.get(var.offset..var.offset + var.size)
+                    .map(<[u8]>::to_vec)
+            };
             state_changed || bytes(previous) != bytes(&image)
         });
         self.subscriptions.maybe_notify(
@@ -280,10 +285,16 @@ impl Snapshot<'_> {
             server_timestamp: Some(DateTime::now()),
             server_picoseconds: None,
         };
-        if matches!(timestamps, TimestampsToReturn::Server | TimestampsToReturn::Neither) {
+        if matches!(
+            timestamps,
+            TimestampsToReturn::Server | TimestampsToReturn::Neither
+        ) {
             dv.source_timestamp = None;
         }
-        if matches!(timestamps, TimestampsToReturn::Source | TimestampsToReturn::Neither) {
+        if matches!(
+            timestamps,
+            TimestampsToReturn::Source | TimestampsToReturn::Neither
+        ) {
             dv.server_timestamp = None;
         }
         dv

@@ -8,13 +8,13 @@ use crate::shared::Shared;
 use crate::users::Users;
 use crate::writer::Writer;
 use opcua::crypto::SecurityPolicy;
-use opcua::server::{ServerBuilder, ServerEndpoint, ANONYMOUS_USER_TOKEN_ID};
+use opcua::server::{ANONYMOUS_USER_TOKEN_ID, ServerBuilder, ServerEndpoint};
 use opcua::types::{MessageSecurityMode, TypeLoaderCollection};
 use plc_io::shm::DynSegment;
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{mpsc, Arc, Mutex};
+use std::sync::{Arc, Mutex, mpsc};
 use std::time::Duration;
 
 /// What `plc opcua serve` was asked for.
@@ -135,11 +135,18 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
             .lock()
             .unwrap_or_else(|e| e.into_inner())
             .take()
-            .ok_or_else(|| ServeError(format!("segment `{}`: its node manager was not built", p.name)))?;
+            .ok_or_else(|| {
+                ServeError(format!(
+                    "segment `{}`: its node manager was not built",
+                    p.name
+                ))
+            })?;
         let manager = handle
             .node_managers()
             .get_by_name::<SegmentManager>(&crate::mapping::namespace_uri(&p.name))
-            .ok_or_else(|| ServeError(format!("segment `{}`: its node manager is missing", p.name)))?;
+            .ok_or_else(|| {
+                ServeError(format!("segment `{}`: its node manager is missing", p.name))
+            })?;
         let space = manager.address_space().clone();
         let subscriptions = handle.subscriptions().clone();
         let (stop, reads, writes, period) = (stop.clone(), p.reads, p.writes, p.period);
@@ -148,7 +155,9 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
         threads.push(spawn(&format!("opcua-{}", p.name), move || {
             Sampler::new(for_sampler, period, space, subscriptions).run(reads, stop)
         })?);
-        spawn(&format!("opcua-w-{}", p.name), move || Writer::new(shared).run(writes))?;
+        spawn(&format!("opcua-w-{}", p.name), move || {
+            Writer::new(shared).run(writes)
+        })?;
     }
     log::info!(
         "OPC UA server on opc.tcp://{}:{}/ serving {} ({} users may write); certificates in {}",
@@ -160,7 +169,8 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
     );
     let cancel = handle.clone();
     tokio::spawn(async move {
-        let mut term = tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()).ok();
+        let mut term =
+            tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()).ok();
         tokio::select! {
             _ = tokio::signal::ctrl_c() => {}
             _ = async { match term.as_mut() { Some(t) => { t.recv().await; } None => std::future::pending().await } } => {}
@@ -221,7 +231,10 @@ fn refuse_plain_text_passwords(handle: &opcua::server::ServerHandle) {
 /// The private key readable by its owner only (the store writes it with the default mode).
 fn protect_private_key(pki: &Path) -> Result<(), ServeError> {
     use std::os::unix::fs::PermissionsExt;
-    for (path, mode) in [(pki.join("private"), 0o700), (pki.join("private/private.pem"), 0o600)] {
+    for (path, mode) in [
+        (pki.join("private"), 0o700),
+        (pki.join("private/private.pem"), 0o600),
+    ] {
         let meta = std::fs::symlink_metadata(&path)
             .map_err(|e| ServeError(format!("{}: {e}", path.display())))?;
         if meta.file_type().is_symlink() {
@@ -241,7 +254,11 @@ fn hostname() -> String {
     std::fs::read_to_string("/proc/sys/kernel/hostname")
         .map(|s| s.trim().to_string())
         .ok()
-        .filter(|s| !s.is_empty() && s.bytes().all(|b| b.is_ascii_alphanumeric() || b"-.".contains(&b)))
+        .filter(|s| {
+            !s.is_empty()
+                && s.bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b"-.".contains(&b))
+        })
         .unwrap_or_else(|| "localhost".to_string())
 }
 

@@ -2,8 +2,8 @@
 //! hash an argon2id PHC string (salted, slow); `#` starts a comment line. The file holds no
 //! password, and it is never followed through a symbolic link.
 
-use argon2::password_hash::{PasswordHash, PasswordHasher, PasswordVerifier, SaltString};
 use argon2::Argon2;
+use argon2::password_hash::{PasswordHash, PasswordHasher, PasswordVerifier, SaltString};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::io::{Read, Write};
@@ -56,7 +56,11 @@ impl Users {
             .read(true)
             .custom_flags(libc::O_NOFOLLOW)
             .open(path)
-            .map_err(|e| err(format!("cannot open it: {e} (a symbolic link is not followed)")))?;
+            .map_err(|e| {
+                err(format!(
+                    "cannot open it: {e} (a symbolic link is not followed)"
+                ))
+            })?;
         let mut text = String::new();
         file.take(MAX_FILE_BYTES + 1)
             .read_to_string(&mut text)
@@ -86,7 +90,9 @@ impl Users {
                 ));
             }
             PasswordHash::new(hash).map_err(|e| {
-                format!("line {at}: the hash of `{name}` is not a PHC string ({e}); add the user again")
+                format!(
+                    "line {at}: the hash of `{name}` is not a PHC string ({e}); add the user again"
+                )
             })?;
             if hashes.insert(name.to_string(), hash.to_string()).is_some() {
                 return Err(format!("line {at}: user `{name}` appears twice"));
@@ -115,8 +121,11 @@ impl Users {
         let Some(hash) = self.hashes.get(name) else {
             return false;
         };
-        PasswordHash::new(hash)
-            .is_ok_and(|h| Argon2::default().verify_password(password.as_bytes(), &h).is_ok())
+        PasswordHash::new(hash).is_ok_and(|h| {
+            Argon2::default()
+                .verify_password(password.as_bytes(), &h)
+                .is_ok()
+        })
     }
 
     /// Adds a user, or gives an existing one a new password: stores a fresh salted hash.
@@ -139,7 +148,8 @@ impl Users {
 
     /// The file's text.
     pub fn to_text(&self) -> String {
-        let mut text = String::from("# plc-vars OPC UA users: name:argon2 hash (`plc opcua user add`)\n");
+        let mut text =
+            String::from("# plc-vars OPC UA users: name:argon2 hash (`plc opcua user add`)\n");
         for (name, hash) in &self.hashes {
             text.push_str(&format!("{name}:{hash}\n"));
         }
@@ -184,10 +194,12 @@ pub fn add_user(path: &Path, name: &str, password: &str) -> Result<(), UsersErro
             });
         }
     };
-    users.set_password(name, password).map_err(|problem| UsersError {
-        path: path.to_path_buf(),
-        problem,
-    })?;
+    users
+        .set_password(name, password)
+        .map_err(|problem| UsersError {
+            path: path.to_path_buf(),
+            problem,
+        })?;
     users.save(path)
 }
 
@@ -213,7 +225,11 @@ mod tests {
         let text = a.to_text();
         assert!(!text.contains("s3cret"));
         assert!(text.contains("operator:$argon2id$"));
-        assert_ne!(text, b.to_text(), "two hashes of one password differ by their salt");
+        assert_ne!(
+            text,
+            b.to_text(),
+            "two hashes of one password differ by their salt"
+        );
         assert!(Users::parse(&text).unwrap().verify("operator", "s3cret"));
     }
 
@@ -223,7 +239,8 @@ mod tests {
         assert!(e.starts_with("line 3:"), "{e}");
         let e = Users::parse("bob:plain-password\n").unwrap_err();
         assert!(e.contains("not a PHC string"), "{e}");
-        let e = Users::parse("bo b:$argon2id$v=19$m=19456,t=2,p=1$c2FsdHNhbHQ$aGFzaA\n").unwrap_err();
+        let e =
+            Users::parse("bo b:$argon2id$v=19$m=19456,t=2,p=1$c2FsdHNhbHQ$aGFzaA\n").unwrap_err();
         assert!(e.contains("not a valid user name"), "{e}");
     }
 

@@ -11,8 +11,8 @@ use crate::shared::{Shared, WriteJob};
 use opcua::types::StatusCode;
 use plc_core::Value;
 use plc_io::shm::{DynSegment, ShmError};
-use std::sync::mpsc::Receiver;
 use std::sync::Arc;
+use std::sync::mpsc::Receiver;
 
 /// The writer of one segment.
 pub struct Writer {

@@ -14,7 +14,10 @@ pub fn serve(options: &plc_opcua::ServeOptions) -> Result<(), Error> {
 pub fn add_user(file: &Path, name: &str) -> Result<(), Error> {
     let password = read_password(name)?;
     plc_opcua::add_user(file, name, &password)?;
-    eprintln!("user `{name}` may now write through the OPC UA server ({})", file.display());
+    eprintln!(
+        "user `{name}` may now write through the OPC UA server ({})",
+        file.display()
+    );
     Ok(())
 }
 
