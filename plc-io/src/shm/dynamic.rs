@@ -107,9 +107,9 @@ impl DynSegment {
     ///
     /// The owner applies every request it finds in its mailbox at the start of a cycle, in
     /// order, so a batch posted together is applied at one cycle start when it fits the mailbox
-    /// ([`mailbox_free`](Self::mailbox_free)); a cycle that starts while the batch is being
-    /// posted can split it (posting takes microseconds). An array written whole (`name`, `0..n`)
-    /// lands in one cycle this way.
+    /// ([`mailbox_free`](Self::mailbox_free)) and no cycle starts while it is being posted
+    /// (posting takes microseconds; on this mailbox a cycle starting in between splits it over
+    /// two cycles). An array written whole (`name`, elements `0..n`) goes as one batch.
     ///
     /// ```no_run
     /// use plc_core::Value;
