@@ -103,6 +103,39 @@ fn client(dir: &Path, args: &[&str]) {
     }
 }
 
+/// `plc opcua serve SEGMENT` on localhost, its certificates in `dir/pki`, its output in
+/// `dir/server.log`; returns once it accepts connections.
+fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (Running, u16) {
+    let port = free_port();
+    let log = File::create(dir.join("server.log")).expect("log file");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_plc"));
+    command
+        .args(["opcua", "serve", segment, "--host", "127.0.0.1", "--port"])
+        .arg(port.to_string())
+        .arg("--pki")
+        .arg(dir.join("pki"))
+        .stdout(log.try_clone().expect("log file"))
+        .stderr(log);
+    if let Some(users) = users {
+        command.arg("--users").arg(users);
+    }
+    let server = Running(command.spawn().expect("plc opcua serve starts"));
+    wait_for("the OPC UA server", || {
+        std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
+    });
+    (server, port)
+}
+
+/// A fresh directory for one test's files.
+fn test_dir(what: &str) -> PathBuf {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos());
+    let dir = std::env::temp_dir().join(format!("plc-opcua-{what}-{}_{nanos}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("test directory");
+    dir
+}
+
 /// A TCP port free just now.
 fn free_port() -> u16 {
     let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
@@ -113,12 +146,7 @@ fn free_port() -> u16 {
 fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_restart() {
     // Fails at once, saying how to install the client, when it is not there.
     python();
-    let nanos = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.subsec_nanos());
-    let id = format!("{}_{nanos}", std::process::id());
-    let dir = std::env::temp_dir().join(format!("plc-opcua-test-{id}"));
-    std::fs::create_dir_all(&dir).expect("test directory");
+    let dir = test_dir("example");
     let segment = format!("opcua_test_{}", std::process::id());
     let mut program = start_program(&dir, &segment, 1);
 
@@ -141,25 +169,8 @@ fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_res
     let text = std::fs::read_to_string(&users).expect("users file");
     assert!(text.contains("operator:$argon2id$") && !text.contains("pw of the operator"));
 
-    let port = free_port();
     let pki = dir.join("pki");
-    let log = File::create(dir.join("server.log")).expect("log file");
-    let _server = Running(
-        Command::new(env!("CARGO_BIN_EXE_plc"))
-            .args(["opcua", "serve", &segment, "--host", "127.0.0.1", "--port"])
-            .arg(port.to_string())
-            .arg("--users")
-            .arg(&users)
-            .arg("--pki")
-            .arg(&pki)
-            .stdout(log.try_clone().expect("log file"))
-            .stderr(log)
-            .spawn()
-            .expect("plc opcua serve starts"),
-    );
-    wait_for("the OPC UA server", || {
-        std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
-    });
+    let (_server, port) = serve(&dir, &segment, Some(&users));
     assert!(
         pki.join("own/cert.der").is_file() && pki.join("private/private.pem").is_file(),
         "the server made its certificate in --pki"
@@ -195,5 +206,60 @@ fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_res
             && server_log.contains("test_speed_mm_s: "),
         "every write is logged with its user and old and new value:\n{server_log}"
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The first declaration of a program whose declaration changes.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct Before {
+    #[plc(direction = "status")]
+    count: u32,
+    #[plc(direction = "command")]
+    speed: f64,
+}
+
+/// Its next declaration: `speed` gone, `grid` new.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct After {
+    #[plc(direction = "status")]
+    count: u32,
+    grid: [i16; 6],
+}
+
+/// Runs an owner of `T` on `segment`, counting cycles every millisecond, until `stop`.
+fn run_owner<T: plc_core::GlobalMemory + Default + Clone + Send + 'static>(
+    segment: String,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+) -> std::thread::JoinHandle<()> {
+    std::thread::spawn(move || {
+        let owner = plc_io::shm::SharedGlobalMemory::<T>::create(&segment).expect("owner");
+        let gm = T::default();
+        while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+            owner.publish(&gm).expect("publish");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+    })
+}
+
+#[test]
+fn a_changed_declaration_rebuilds_the_namespace() {
+    python();
+    let dir = test_dir("layout");
+    let segment = format!("opcua_layout_{}", std::process::id());
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let owner = run_owner::<Before>(segment.clone(), stop.clone());
+    wait_for("the first owner", || {
+        plc_io::shm::DynSegment::attach(&segment).is_ok()
+    });
+    let (_server, port) = serve(&dir, &segment, None);
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    client(&dir, &["names", &url, &segment, "count,speed"]);
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    owner.join().expect("the first owner stops");
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let owner = run_owner::<After>(segment.clone(), stop.clone());
+    client(&dir, &["names", &url, &segment, "count,grid"]);
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    owner.join().expect("the second owner stops");
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -8,8 +8,8 @@ mod common;
 use common::{unique, wait_for};
 use plc_core::{GlobalMemory, Value};
 use plc_io::shm::{DynSegment, SharedGlobalMemory, ShmError};
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -43,15 +43,25 @@ fn an_array_written_whole_is_applied_whole_and_a_batch_with_a_refused_write_not_
         seg.write_all(&batch).unwrap();
         let image = seg.snapshot_bytes().unwrap();
         for e in 0..8 {
-            assert_eq!(seg.value_at(&image, 0, e), Some(Value::Int(round)), "step {e}");
+            assert_eq!(
+                seg.value_at(&image, 0, e),
+                Some(Value::Int(round)),
+                "step {e}"
+            );
         }
     }
     // One refused element: nothing of the batch is posted.
     let before = seg.status().writes_applied;
     let bad = [("steps", 0, Value::Int(99)), ("done", 0, Value::Int(1))];
-    assert!(matches!(seg.write_all(&bad), Err(ShmError::NotWritable { .. })));
+    assert!(matches!(
+        seg.write_all(&bad),
+        Err(ShmError::NotWritable { .. })
+    ));
     let bad = [("steps", 0, Value::Int(99)), ("steps", 8, Value::Int(1))];
-    assert!(matches!(seg.write_all(&bad), Err(ShmError::ElementOutOfRange { .. })));
+    assert!(matches!(
+        seg.write_all(&bad),
+        Err(ShmError::ElementOutOfRange { .. })
+    ));
     std::thread::sleep(Duration::from_millis(20));
     assert_eq!(seg.status().writes_applied, before);
     assert_eq!(seg.read_element("steps", 0).unwrap(), Value::Int(50));

@@ -5,6 +5,9 @@
         every variable and compare with `plc get`, subscribe, write as a user and see it in
         `plc get`, the refused writes and their status codes, a plain-text password refused,
         a SignAndEncrypt session (its client certificate trusted through the server's pki)
+    opcua_client.py names URL SEGMENT NAME,NAME...
+        the program's variables, once the namespace shows exactly these (after a new
+        declaration), each read Good, an array with its dimensions
     opcua_client.py values URL SEGMENT good|bad
         every variable's status: Good, or BadNoCommunication (the program is gone)
 
@@ -92,9 +95,10 @@ async def browse_variables(node, found, depth=0):
             await browse_variables(child, found, depth + 1)
 
 
-async def status_of(client, node_id):
+async def status_of(client, node_id, attribute=ua.AttributeIds.Value):
+    """The DataValue of an attribute, a bad status included (asyncua's own read raises)."""
     res = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
-        ua.ReadValueId(NodeId=node_id, AttributeId=ua.AttributeIds.Value)]))
+        ua.ReadValueId(NodeId=node_id, AttributeId=attribute)]))
     return res[0]
 
 
@@ -342,10 +346,40 @@ async def run_values(url, segment, expected):
             await asyncio.sleep(0.1)
 
 
+async def run_names(url, segment, expected):
+    """Waits (at most 15 s) until the program object holds exactly the variables `expected`."""
+    want = sorted(expected.split(","))
+    deadline = time.time() + 15
+    async with Client(url) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        while True:
+            nodes = []
+            await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
+            names = sorted([(await n.read_browse_name()).Name for n in nodes])
+            if names == want:
+                break
+            check(time.time() < deadline, f"expected the variables {want}, still {names} after 15 s")
+            await asyncio.sleep(0.1)
+        while True:
+            data = [await status_of(client, n.nodeid) for n in nodes]
+            if all(dv.StatusCode.is_good() for dv in data):
+                break
+            check(time.time() < deadline, f"values not Good: {[dv.StatusCode.name for dv in data]}")
+            await asyncio.sleep(0.1)
+        for node, dv in zip(nodes, data):
+            dims = await status_of(client, node.nodeid, ua.AttributeIds.ArrayDimensions)
+            if dims.StatusCode.is_good() and dims.Value.Value:
+                dims = dims.Value.Value
+                check(len(dv.Value.Value) == math.prod(dims), f"{node.nodeid}: {dv.Value}")
+        ok(f"the namespace holds {names}, every value Good")
+
+
 def main():
     try:
         if sys.argv[1] == "check":
             asyncio.run(run_check(*sys.argv[2:9]))
+        elif sys.argv[1] == "names":
+            asyncio.run(run_names(*sys.argv[2:5]))
         elif sys.argv[1] == "values":
             asyncio.run(run_values(*sys.argv[2:5]))
         else:
