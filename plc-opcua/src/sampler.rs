@@ -112,7 +112,11 @@ impl Sampler {
             return;
         }
         let status = seg.status();
-        if self.last_cycle == Some(status.cycle_count) && state == self.last_state {
+        let monitored = self.shared.monitored();
+        if monitored.is_empty()
+            || (self.last_cycle == Some(status.cycle_count) && state == self.last_state)
+        {
+            self.last_state = state;
             return;
         }
         let image = match seg.snapshot_bytes() {
@@ -129,7 +133,6 @@ impl Sampler {
             source: mapping::source_time(status.cycle_utc_ns),
         };
         let layout = self.shared.layout();
-        let monitored = self.shared.monitored();
         let state_changed = state != self.last_state || self.last_cycle.is_none();
         let previous = &self.last_image;
         let changed = monitored.iter().filter(|id| {

@@ -79,6 +79,7 @@ pub fn serve(options: &ServeOptions) -> Result<(), ServeError> {
 }
 
 async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError> {
+    prepare_private_dir(&options.pki)?;
     let mut builder = configure(options, users.clone())?;
     let mut pending = Vec::new();
     let mut fastest = Duration::from_secs(1);
@@ -226,6 +227,27 @@ fn refuse_plain_text_passwords(handle: &opcua::server::ServerHandle) {
         loaders.add(loader.clone());
     }
     *handle.info().type_loaders.write() = loaders;
+}
+
+/// `pki/private` made (or checked) mode 0700 before the store writes the private key into it.
+fn prepare_private_dir(pki: &Path) -> Result<(), ServeError> {
+    use std::os::unix::fs::{DirBuilderExt, PermissionsExt};
+    let private = pki.join("private");
+    std::fs::DirBuilder::new()
+        .recursive(true)
+        .mode(0o700)
+        .create(&private)
+        .map_err(|e| ServeError(format!("cannot create {}: {e}", private.display())))?;
+    let meta = std::fs::symlink_metadata(&private)
+        .map_err(|e| ServeError(format!("{}: {e}", private.display())))?;
+    if !meta.is_dir() {
+        return Err(ServeError(format!(
+            "{} is not a directory (a symbolic link is not followed): remove it",
+            private.display()
+        )));
+    }
+    std::fs::set_permissions(&private, std::fs::Permissions::from_mode(0o700))
+        .map_err(|e| ServeError(format!("cannot restrict {}: {e}", private.display())))
 }
 
 /// The private key readable by its owner only (the store writes it with the default mode).

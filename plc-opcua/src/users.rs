@@ -61,6 +61,21 @@ impl Users {
                     "cannot open it: {e} (a symbolic link is not followed)"
                 ))
             })?;
+        // Whoever may change the file may make himself a user: only its owner may write it.
+        use std::os::unix::fs::MetadataExt;
+        let meta = file
+            .metadata()
+            .map_err(|e| err(format!("cannot look at it: {e}")))?;
+        if !meta.is_file() {
+            return Err(err("it is not a regular file".into()));
+        }
+        if meta.mode() & 0o022 != 0 {
+            return Err(err(format!(
+                "other users may write it (mode {:o}): `chmod 600 {}`",
+                meta.mode() & 0o777,
+                path.display()
+            )));
+        }
         let mut text = String::new();
         file.take(MAX_FILE_BYTES + 1)
             .read_to_string(&mut text)
@@ -206,6 +221,32 @@ pub fn add_user(path: &Path, name: &str, password: &str) -> Result<(), UsersErro
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_users_file_others_may_write_is_refused_and_a_saved_one_is_private() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = std::env::temp_dir().join(format!("plc-opcua-users-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("users");
+        add_user(&path, "operator", "pw").unwrap();
+        let mode = std::fs::metadata(&path).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o600);
+        assert!(Users::load(&path).unwrap().verify("operator", "pw"));
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o666)).unwrap();
+        let e = Users::load(&path).unwrap_err().to_string();
+        assert!(
+            e.contains("other users may write it") && e.contains("chmod 600"),
+            "{e}"
+        );
+        let link = dir.join("link");
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(&path, &link).unwrap();
+        assert!(
+            Users::load(&link).is_err(),
+            "a symbolic link is not followed"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     #[test]
     fn a_set_password_verifies_and_no_other_does() {
