@@ -5,12 +5,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+as_root=()
+[[ $(id -u) == 0 ]] || as_root=(sudo -n)
 need=()
 command -v tmux >/dev/null 2>&1 || need+=(tmux)
 command -v ip >/dev/null 2>&1 || need+=(iproute2)
 if ((${#need[@]})); then
-  as_root=()
-  [[ $(id -u) == 0 ]] || as_root=(sudo -n)
   if command -v apt-get >/dev/null 2>&1 && { [[ $(id -u) == 0 ]] || sudo -n true 2>/dev/null; }; then
     echo "scripts/test.sh: installing ${need[*]}"
     "${as_root[@]}" apt-get update -qq >/dev/null || true
@@ -20,5 +20,21 @@ if ((${#need[@]})); then
     echo "scripts/test.sh: ${need[*]} missing and no way to install; the tests that need them will skip"
   fi
 fi
+
+# The OPC UA server is tested against an independent client, python asyncua, installed here into
+# a virtual environment under target/ (never into the system's python) and found by the test
+# through PLC_OPCUA_PYTHON.
+asyncua_version=2.1.0
+venv=target/opcua-venv
+if ! "$venv/bin/python" -c "import asyncua, sys; sys.exit(asyncua.__version__ != '$asyncua_version')" 2>/dev/null; then
+  echo "scripts/test.sh: installing python asyncua $asyncua_version into $venv"
+  if ! python3 -m venv "$venv" >/dev/null 2>&1; then
+    command -v apt-get >/dev/null 2>&1 && { [[ $(id -u) == 0 ]] || sudo -n true 2>/dev/null; } \
+      && "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null
+    python3 -m venv "$venv"
+  fi
+  "$venv/bin/pip" install -q --disable-pip-version-check "asyncua==$asyncua_version"
+fi
+export PLC_OPCUA_PYTHON="$PWD/$venv/bin/python"
 
 cargo test --workspace "$@"

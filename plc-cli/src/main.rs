@@ -14,6 +14,8 @@
 //! plc bus show bus/machine.toml     # the process image of a bus description
 //! plc bus scan --interface eth0 --out bus/machine.toml   # a description from the devices
 //! plc bus scan --sim EK1100,EL1004,EL2889                # the same on the simulated bus
+//! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
+//! plc opcua user add users.txt operator              # password from standard input
 //! ```
 
 mod cmd;
@@ -115,6 +117,53 @@ enum Command {
         #[command(subcommand)]
         command: BusCommand,
     },
+    /// The OPC UA server for running programs, and its users.
+    Opcua {
+        #[command(subcommand)]
+        command: OpcuaCommand,
+    },
+}
+
+#[derive(Subcommand)]
+enum OpcuaCommand {
+    /// Serves running programs' variables over OPC UA until Ctrl-C: a namespace
+    /// `urn:plc-vars:<segment>` per segment; anonymous sessions browse and read, users of
+    /// --users also write.
+    Serve {
+        /// Segment names of running programs.
+        #[arg(required = true)]
+        segments: Vec<String>,
+        /// TCP port.
+        #[arg(long, default_value_t = 4840)]
+        port: u16,
+        /// Address to listen on and to announce in the endpoints.
+        #[arg(long, default_value = "0.0.0.0")]
+        host: String,
+        /// The users who may write (`plc opcua user add`); without it nobody writes.
+        #[arg(long)]
+        users: Option<PathBuf>,
+        /// Certificate store: the server's self-signed certificate is made here on first start;
+        /// client certificates go in its trusted/ directory.
+        #[arg(long, default_value = "pki")]
+        pki: PathBuf,
+    },
+    /// Users of the OPC UA server.
+    User {
+        #[command(subcommand)]
+        command: OpcuaUserCommand,
+    },
+}
+
+#[derive(Subcommand)]
+enum OpcuaUserCommand {
+    /// Adds a user (or sets a new password): the password is read from standard input and
+    /// stored as a salted argon2 hash, never as itself.
+    Add {
+        /// The users file (created, mode 0600, if missing).
+        file: PathBuf,
+        /// User name: letters, digits, `_`, `-`, `.`, `@`.
+        name: String,
+    },
 }
 
 #[derive(Subcommand)]
@@ -148,12 +197,14 @@ fn main() -> ExitCode {
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
     // Whatever plc-io logs while a command runs, as plain lines on stderr; `RUST_LOG`
     // chooses other levels and crates.
-    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("plc_io=info"))
-        .format(|out, record| {
-            use std::io::Write;
-            writeln!(out, "{}", record.args())
-        })
-        .init();
+    env_logger::Builder::from_env(
+        env_logger::Env::default().default_filter_or("plc_io=info,plc_opcua=info"),
+    )
+    .format(|out, record| {
+        use std::io::Write;
+        writeln!(out, "{}", record.args())
+    })
+    .init();
     let cli = Cli::parse();
     let result = match cli.command {
         Command::List { segment, json } => cmd::list::run(segment.as_deref(), json),
@@ -192,6 +243,28 @@ fn main() -> ExitCode {
                     out,
                 },
         } => cmd::bus::scan(interface, &sim, out.as_deref()),
+        Command::Opcua {
+            command:
+                OpcuaCommand::Serve {
+                    segments,
+                    port,
+                    host,
+                    users,
+                    pki,
+                },
+        } => cmd::opcua::serve(&plc_opcua::ServeOptions {
+            segments,
+            host,
+            port,
+            users,
+            pki,
+        }),
+        Command::Opcua {
+            command:
+                OpcuaCommand::User {
+                    command: OpcuaUserCommand::Add { file, name },
+                },
+        } => cmd::opcua::add_user(&file, &name),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

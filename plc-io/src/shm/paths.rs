@@ -106,6 +106,13 @@ impl DynSegment {
         })
     }
 
+    /// Element `element` of a variable or member described by `var` (its offset absolute in
+    /// the image, as tools that walk the structures hold it) in an image from
+    /// [`snapshot_bytes`](Self::snapshot_bytes).
+    pub fn value_of(&self, image: &[u8], var: &VarDescriptor, element: usize) -> Option<Value> {
+        codec::decode(image, var, element)
+    }
+
     /// The value at a location in an image from [`snapshot_bytes`](Self::snapshot_bytes).
     pub fn value_at_location(&self, image: &[u8], at: &PathLocation) -> Option<Value> {
         codec::decode(image, &at.var, 0)

@@ -1,0 +1,265 @@
+//! `plc opcua serve` against the running main example, checked by an independent OPC UA
+//! client: python asyncua, which `scripts/test.sh` installs into a virtual environment under
+//! `target/` and names in `PLC_OPCUA_PYTHON`. The client's script is
+//! `plc-opcua/tests/client/opcua_client.py`; what it checks is listed at its top.
+
+use std::fs::File;
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// A child process, killed when the test ends however it ends.
+struct Running(Child);
+
+impl Drop for Running {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// The venv's python, which has asyncua.
+fn python() -> PathBuf {
+    match std::env::var_os("PLC_OPCUA_PYTHON") {
+        Some(p) if !p.is_empty() => PathBuf::from(p),
+        _ => panic!(
+            "PLC_OPCUA_PYTHON is not set: run the tests with scripts/test.sh, which installs the \
+             OPC UA test client (python asyncua) into target/opcua-venv and sets it"
+        ),
+    }
+}
+
+/// The main example's binary, built beside `plc` by `cargo test --workspace`.
+fn tensile_tester() -> PathBuf {
+    let path = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name("tensile_tester");
+    assert!(
+        path.is_file(),
+        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p examples --bin \
+         tensile_tester` first)",
+        path.display()
+    );
+    path
+}
+
+fn start_program(dir: &Path, segment: &str, n: usize) -> Running {
+    let log = File::create(dir.join(format!("tensile_tester-{n}.log"))).expect("log file");
+    let child = Command::new(tensile_tester())
+        .args(["--segment", segment])
+        .arg("--retain")
+        .arg(dir.join("retain"))
+        .stdout(log.try_clone().expect("log file"))
+        .stderr(log)
+        .spawn()
+        .expect("tensile_tester starts");
+    wait_for(&format!("segment {segment}"), || {
+        Command::new(env!("CARGO_BIN_EXE_plc"))
+            .args(["get", segment, "state_cycles"])
+            .output()
+            .is_ok_and(|o| o.status.success())
+    });
+    Running(child)
+}
+
+fn wait_for(what: &str, mut ready: impl FnMut() -> bool) {
+    // Generous: a debug build on a busy machine makes its RSA key and brings its bus up slowly.
+    let deadline = Instant::now() + Duration::from_secs(120);
+    while !ready() {
+        assert!(Instant::now() < deadline, "{what} never came up");
+        std::thread::sleep(Duration::from_millis(100));
+    }
+}
+
+/// Runs the client script; panics with its output unless it succeeds.
+fn client(dir: &Path, args: &[&str]) {
+    let script =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../plc-opcua/tests/client/opcua_client.py");
+    let out = Command::new(python())
+        .arg(script)
+        .args(args)
+        .output()
+        .expect("python starts");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    print!("{stdout}");
+    if !out.status.success() {
+        let logs: String = std::fs::read_dir(dir)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .filter(|e| e.path().extension().is_some_and(|x| x == "log"))
+            .map(|e| {
+                let text = std::fs::read_to_string(e.path()).unwrap_or_default();
+                let tail: Vec<&str> = text.lines().rev().take(30).collect();
+                format!(
+                    "--- {}\n{}\n",
+                    e.path().display(),
+                    tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+                )
+            })
+            .collect();
+        panic!(
+            "the OPC UA client failed:\n{stdout}\n{}\n{logs}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+}
+
+/// `plc opcua serve SEGMENT` on localhost, its certificates in `dir/pki`, its output in
+/// `dir/server.log`; returns once it accepts connections.
+fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (Running, u16) {
+    let port = free_port();
+    let log = File::create(dir.join("server.log")).expect("log file");
+    let mut command = Command::new(env!("CARGO_BIN_EXE_plc"));
+    command
+        .args(["opcua", "serve", segment, "--host", "127.0.0.1", "--port"])
+        .arg(port.to_string())
+        .arg("--pki")
+        .arg(dir.join("pki"))
+        .stdout(log.try_clone().expect("log file"))
+        .stderr(log);
+    if let Some(users) = users {
+        command.arg("--users").arg(users);
+    }
+    let server = Running(command.spawn().expect("plc opcua serve starts"));
+    wait_for("the OPC UA server", || {
+        std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
+    });
+    (server, port)
+}
+
+/// A fresh directory for one test's files.
+fn test_dir(what: &str) -> PathBuf {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.subsec_nanos());
+    let dir = std::env::temp_dir().join(format!("plc-opcua-{what}-{}_{nanos}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("test directory");
+    dir
+}
+
+/// A TCP port free just now.
+fn free_port() -> u16 {
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
+    listener.local_addr().expect("its address").port()
+}
+
+#[test]
+fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_restart() {
+    // Fails at once, saying how to install the client, when it is not there.
+    python();
+    let dir = test_dir("example");
+    let segment = format!("opcua_test_{}", std::process::id());
+    let mut program = start_program(&dir, &segment, 1);
+
+    // A user who may write, the password on standard input.
+    let users = dir.join("users");
+    let mut add = Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["opcua", "user", "add"])
+        .arg(&users)
+        .arg("operator")
+        .stdin(Stdio::piped())
+        .spawn()
+        .expect("plc opcua user add starts");
+    use std::io::Write;
+    add.stdin
+        .take()
+        .expect("stdin")
+        .write_all(b"pw of the operator\n")
+        .expect("password written");
+    assert!(add.wait().expect("user add ends").success());
+    let text = std::fs::read_to_string(&users).expect("users file");
+    assert!(text.contains("operator:$argon2id$") && !text.contains("pw of the operator"));
+
+    let pki = dir.join("pki");
+    let (_server, port) = serve(&dir, &segment, Some(&users));
+    assert!(
+        pki.join("own/cert.der").is_file() && pki.join("private/private.pem").is_file(),
+        "the server made its certificate in --pki"
+    );
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    let plc = env!("CARGO_BIN_EXE_plc");
+    let work = dir.to_str().expect("a UTF-8 temp dir");
+    let pki_text = pki.to_str().expect("a UTF-8 temp dir");
+    client(
+        &dir,
+        &[
+            "check",
+            &url,
+            &segment,
+            plc,
+            pki_text,
+            work,
+            "operator",
+            "pw of the operator",
+        ],
+    );
+
+    // The program killed: values Bad; started again (a takeover of its segment): Good again.
+    let _ = program.0.kill();
+    let _ = program.0.wait();
+    client(&dir, &["values", &url, &segment, "bad"]);
+    program = start_program(&dir, &segment, 2);
+    client(&dir, &["values", &url, &segment, "good"]);
+    drop(program);
+    let server_log = std::fs::read_to_string(dir.join("server.log")).unwrap_or_default();
+    assert!(
+        server_log.contains("OPC UA write by `operator`: ")
+            && server_log.contains("test_speed_mm_s: "),
+        "every write is logged with its user and old and new value:\n{server_log}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The first declaration of a program whose declaration changes.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct Before {
+    #[plc(direction = "status")]
+    count: u32,
+    #[plc(direction = "command")]
+    speed: f64,
+}
+
+/// Its next declaration: `speed` gone, `grid` new.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct After {
+    #[plc(direction = "status")]
+    count: u32,
+    grid: [i16; 6],
+}
+
+/// Runs an owner of `T` on `segment`, counting cycles every millisecond, until `stop`.
+fn run_owner<T: plc_core::GlobalMemory + Default + Clone + Send + 'static>(
+    segment: String,
+    stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
+) -> std::thread::JoinHandle<()> {
+    std::thread::spawn(move || {
+        let owner = plc_io::shm::SharedGlobalMemory::<T>::create(&segment).expect("owner");
+        let gm = T::default();
+        while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+            owner.publish(&gm).expect("publish");
+            std::thread::sleep(Duration::from_millis(1));
+        }
+    })
+}
+
+#[test]
+fn a_changed_declaration_rebuilds_the_namespace() {
+    python();
+    let dir = test_dir("layout");
+    let segment = format!("opcua_layout_{}", std::process::id());
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let owner = run_owner::<Before>(segment.clone(), stop.clone());
+    wait_for("the first owner", || {
+        plc_io::shm::DynSegment::attach(&segment).is_ok()
+    });
+    let (_server, port) = serve(&dir, &segment, None);
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    client(&dir, &["names", &url, &segment, "count,speed"]);
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    owner.join().expect("the first owner stops");
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let owner = run_owner::<After>(segment.clone(), stop.clone());
+    client(&dir, &["names", &url, &segment, "count,grid"]);
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    owner.join().expect("the second owner stops");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,150 @@
+//! Who may do what: anonymous sessions browse and read; users of the users file also write.
+//! A user name token must carry its password encrypted with the server's certificate (OPC UA
+//! Part 4, 7.41): one sent in plain text is refused while the request is decoded, before the
+//! password is looked at.
+
+use crate::mapping;
+use crate::users::Users;
+use opcua::crypto::SecurityPolicy;
+use opcua::nodes::AccessLevel;
+use opcua::server::ServerEndpoint;
+use opcua::server::authenticator::{AuthManager, Password, UserToken};
+use opcua::types::{
+    BinaryDecodable, Context, DynEncodable, EncodingResult, Error, NodeId, ObjectId, StatusCode,
+    TypeLoader, TypeLoaderPriority, UAString, UserNameIdentityToken, UserTokenPolicy,
+    UserTokenType,
+};
+use std::io::Read;
+use std::sync::Arc;
+
+/// The policy id of the anonymous token (the one async-opcua checks).
+const POLICY_ANONYMOUS: &str = "anonymous";
+/// The policy id async-opcua expects of a user name token whose password is encrypted with
+/// RSA-OAEP (Basic256Sha256's asymmetric encryption).
+const POLICY_USER_NAME: &str = "userpass_rsa_oaep";
+
+/// The server's authenticator.
+pub struct PlcAuth {
+    users: Arc<Users>,
+}
+
+impl PlcAuth {
+    /// An authenticator for these users.
+    pub fn new(users: Arc<Users>) -> PlcAuth {
+        PlcAuth { users }
+    }
+}
+
+#[async_trait::async_trait]
+impl AuthManager for PlcAuth {
+    async fn authenticate_anonymous_token(&self, _endpoint: &ServerEndpoint) -> Result<(), Error> {
+        Ok(())
+    }
+
+    async fn authenticate_username_identity_token(
+        &self,
+        _endpoint: &ServerEndpoint,
+        username: &str,
+        password: &Password,
+    ) -> Result<UserToken, Error> {
+        let users = self.users.clone();
+        let name = username.to_string();
+        let password = password.get().to_string();
+        // argon2 takes tens of milliseconds on purpose: not on the async threads.
+        let ok = tokio::task::spawn_blocking(move || users.verify(&name, &password))
+            .await
+            .unwrap_or(false);
+        if ok {
+            log::info!("OPC UA user `{username}` signed in");
+            Ok(UserToken(username.to_string()))
+        } else {
+            // The name is logged only if it is one the file could hold: nothing forged.
+            let shown = if crate::users::valid_name(username) {
+                username
+            } else {
+                "?"
+            };
+            log::warn!("OPC UA sign-in refused for user `{shown}`: unknown user or wrong password");
+            Err(Error::new(
+                StatusCode::BadUserAccessDenied,
+                "unknown user or wrong password",
+            ))
+        }
+    }
+
+    fn effective_user_access_level(
+        &self,
+        token: &UserToken,
+        user_access_level: AccessLevel,
+        _node_id: &NodeId,
+    ) -> AccessLevel {
+        mapping::user_access_level(user_access_level, !may_write(&self.users, token))
+    }
+
+    fn user_token_policies(&self, _endpoint: &ServerEndpoint) -> Vec<UserTokenPolicy> {
+        let mut policies = vec![UserTokenPolicy {
+            policy_id: UAString::from(POLICY_ANONYMOUS),
+            token_type: UserTokenType::Anonymous,
+            issued_token_type: UAString::null(),
+            issuer_endpoint_url: UAString::null(),
+            security_policy_uri: UAString::null(),
+        }];
+        if !self.users.is_empty() {
+            // On every endpoint, None included, the password travels encrypted with the
+            // server's certificate under Basic256Sha256.
+            policies.push(UserTokenPolicy {
+                policy_id: UAString::from(POLICY_USER_NAME),
+                token_type: UserTokenType::UserName,
+                issued_token_type: UAString::null(),
+                issuer_endpoint_url: UAString::null(),
+                security_policy_uri: UAString::from(SecurityPolicy::Basic256Sha256.to_uri()),
+            });
+        }
+        policies
+    }
+}
+
+/// Whether the session of `token` may write: a user of the users file, not an anonymous one.
+pub fn may_write(users: &Users, token: &UserToken) -> bool {
+    !token.is_anonymous() && users.contains(&token.0)
+}
+
+/// Decodes user name tokens ahead of the generated decoder and refuses one whose password is
+/// not encrypted: async-opcua would otherwise accept it as it came.
+#[derive(Debug)]
+pub struct RefusePlainTextPasswords;
+
+impl TypeLoader for RefusePlainTextPasswords {
+    fn load_from_binary(
+        &self,
+        node_id: &NodeId,
+        stream: &mut dyn Read,
+        ctx: &Context<'_>,
+        _length: Option<usize>,
+    ) -> Option<EncodingResult<Box<dyn DynEncodable>>> {
+        let encoding_id: NodeId = ObjectId::UserNameIdentityToken_Encoding_DefaultBinary.into();
+        if *node_id != encoding_id {
+            return None;
+        }
+        Some(
+            UserNameIdentityToken::decode(stream, ctx).and_then(|token| {
+                if token.encryption_algorithm.is_empty() {
+                    log::warn!(
+                        "OPC UA sign-in refused: a user name token with its password in plain text \
+                     (the client must encrypt it with the server's certificate)"
+                    );
+                    Err(Error::new(
+                        StatusCode::BadIdentityTokenRejected,
+                        "the password of a user name token must be encrypted",
+                    ))
+                } else {
+                    Ok(Box::new(token) as Box<dyn DynEncodable>)
+                }
+            }),
+        )
+    }
+
+    fn priority(&self) -> TypeLoaderPriority {
+        TypeLoaderPriority::Core
+    }
+}

@@ -1,0 +1,55 @@
+//! An OPC UA server for the variables of running plc-vars programs (OPC UA, IEC 62541), on
+//! async-opcua's server.
+//!
+//! The server is a tool like `plc`: it attaches to the shared-memory segments of running
+//! programs, reads seqlock snapshots and writes through the program's own write path; a control
+//! program does not link it, and however slow a client is, the program's cycle never waits for
+//! it. `plc opcua serve SEGMENT...` runs it; `plc opcua user add FILE NAME` adds a user who may
+//! write.
+//!
+//! # Address space
+//!
+//! | OPC UA | plc-vars |
+//! | --- | --- |
+//! | namespace `urn:plc-vars:<segment>` | a segment |
+//! | object `<segment>` under Objects (NodeId `i=1` in its namespace) | the program |
+//! | variable `ns=<ns>;s=<path>` under it | a variable, by the path `plc get` takes |
+//! | BrowseName, DisplayName | the symbol name as declared |
+//! | Description | the description (doc comment) |
+//! | DataType | BOOL Boolean, SINT SByte, USINT/BYTE Byte, INT Int16, UINT/WORD UInt16, DINT Int32, UDINT/DWORD UInt32, LINT Int64, ULINT/LWORD UInt64, REAL Float, LREAL Double, STRING String |
+//! | ValueRank, ArrayDimensions | an array's dimensions; the array is one value |
+//! | AccessLevel | CurrentRead, plus CurrentWrite where a tool may write (read-write, neither input nor status) |
+//! | UserAccessLevel | the AccessLevel for users of the users file; CurrentRead only for anonymous sessions |
+//! | SourceTimestamp | the UTC time the owner stamped the cycle that produced the value |
+//! | StatusCode | Good while the owner runs; UncertainLastUsableValue while it is stalled; BadNoCommunication once it is gone, stopped or faulted |
+//!
+//! Writes are refused with BadNotWritable (input, status, read-only), BadUserAccessDenied
+//! (anonymous session), BadOutOfRange (out of range, NaN, text too long) and BadTypeMismatch
+//! (another kind, an array of other dimensions); an array written whole is applied in one
+//! cycle. Every write is logged with its user and the old and new value.
+//!
+//! # Security
+//!
+//! Endpoints: security policy None (anonymous sessions may browse and read) and Basic256Sha256
+//! with Sign and with SignAndEncrypt. A user name token must carry its password encrypted with
+//! the server's certificate, on every endpoint: one in plain text is refused. The server makes
+//! a self-signed certificate in its certificate store on first start; a client's certificate
+//! must be in the store's `trusted/` directory for Sign and SignAndEncrypt (a refused one is
+//! put in `rejected/`: move it to `trusted/` to allow that client).
+
+#![deny(missing_docs)]
+
+pub mod address;
+pub mod auth;
+pub mod mapping;
+pub mod node_manager;
+pub mod sampler;
+pub mod server;
+pub mod shared;
+pub mod users;
+pub mod writer;
+
+/// async-opcua, as this crate uses it (its types appear in this crate's API).
+pub use opcua;
+pub use server::{ServeError, ServeOptions, serve};
+pub use users::{Users, UsersError, add_user};

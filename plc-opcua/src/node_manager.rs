@@ -1,0 +1,249 @@
+//! A segment's node manager: async-opcua's in-memory node manager keeps the nodes and answers
+//! Browse and every attribute but Value; Value reads, monitored items and writes come here and
+//! go to the segment's threads, which alone touch its shared memory.
+
+use crate::address::Layout;
+use crate::mapping;
+use crate::shared::{ReadJob, Shared, WriteJob};
+use crate::users::Users;
+use crate::writer::log_refusal;
+use opcua::server::CreateMonitoredItem;
+use opcua::server::address_space::AddressSpace;
+use opcua::server::diagnostics::NamespaceMetadata;
+use opcua::server::node_manager::memory::{
+    InMemoryNodeManager, InMemoryNodeManagerBuilder, InMemoryNodeManagerImpl,
+};
+use opcua::server::node_manager::{
+    MonitoredItemRef, NodeManagerBuilder, ParsedReadValueId, RequestContext, ServerContext,
+    WriteNode,
+};
+use opcua::sync::RwLock;
+use opcua::types::{AttributeId, DataValue, NumericRange, StatusCode, TimestampsToReturn};
+use std::sync::Arc;
+use std::time::Duration;
+use tokio::sync::oneshot;
+
+/// The node manager type async-opcua builds for a segment.
+pub type SegmentManager = InMemoryNodeManager<SegmentNodes>;
+
+/// The part of a segment's node manager that plc-opcua writes.
+pub struct SegmentNodes {
+    shared: Arc<Shared>,
+    users: Arc<Users>,
+    namespace: NamespaceMetadata,
+}
+
+/// The builder of a segment's node manager: registers the namespace `urn:plc-vars:<segment>`
+/// and inserts the nodes of the segment's first layout. `ns` receives the namespace index.
+pub fn builder(
+    segment: String,
+    first: plc_io::shm::LayoutDescriptor,
+    period: Duration,
+    users: Arc<Users>,
+    make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,
+) -> impl NodeManagerBuilder {
+    InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {
+        let uri = mapping::namespace_uri(&segment);
+        let ns = context
+            .type_tree
+            .write()
+            .namespaces_mut()
+            .add_namespace(&uri);
+        space.add_namespace(&uri, ns);
+        let layout = Layout::new(first, ns);
+        layout.insert_into(space, &segment, period);
+        SegmentNodes {
+            shared: make_shared(layout),
+            users,
+            namespace: NamespaceMetadata {
+                namespace_uri: uri,
+                namespace_index: ns,
+                ..Default::default()
+            },
+        }
+    })
+}
+
+impl SegmentNodes {
+    /// The shared state, for the segment's threads.
+    pub fn shared(&self) -> &Arc<Shared> {
+        &self.shared
+    }
+
+    /// Values of nodes already validated, from the sampler.
+    async fn values(
+        &self,
+        items: Vec<(opcua::types::NodeId, NumericRange)>,
+        timestamps: TimestampsToReturn,
+    ) -> Vec<DataValue> {
+        let n = items.len();
+        let (reply, answer) = oneshot::channel();
+        let sent = self.shared.send_read(ReadJob {
+            items,
+            timestamps,
+            reply,
+        });
+        match sent {
+            Some(()) => answer.await.ok(),
+            None => None,
+        }
+        .unwrap_or_else(|| vec![mapping::status_only(StatusCode::BadServerHalted); n])
+    }
+
+    /// The status of one Write of a Value attribute.
+    async fn write_one(&self, context: &RequestContext, write: &WriteNode) -> StatusCode {
+        let value = write.value();
+        let layout = self.shared.layout();
+        let user = if context.token.is_anonymous() {
+            "anonymous".to_string()
+        } else {
+            context.token.0.clone()
+        };
+        let Some(node) = layout.var(&value.node_id) else {
+            return StatusCode::BadNodeIdUnknown;
+        };
+        let var = &node.var;
+        let target = format!("{}.{}", self.shared.segment, node.path);
+        let refuse = |why: &str, status| log_refusal(&user, &target, &why, status);
+        if value.attribute_id != AttributeId::Value {
+            return refuse(
+                "only the Value attribute can be written",
+                StatusCode::BadNotWritable,
+            );
+        }
+        if !node.writable {
+            return refuse(
+                "the variable is read-only, an input or a status",
+                StatusCode::BadNotWritable,
+            );
+        }
+        if !crate::auth::may_write(&self.users, &context.token) {
+            return refuse(
+                "only users of the server's users file may write",
+                StatusCode::BadUserAccessDenied,
+            );
+        }
+        let Some(variant) = value.value.value.as_ref() else {
+            return refuse("the write carries no value", StatusCode::BadTypeMismatch);
+        };
+        let elements = match &value.index_range {
+            NumericRange::None => mapping::written_elements(var, variant)
+                .map(|values| values.into_iter().enumerate().collect()),
+            NumericRange::Index(i) if !var.dims.is_empty() => {
+                // One element written as a one-element array (Part 4, 7.22) or a scalar.
+                let one = match variant {
+                    opcua::types::Variant::Array(a) if a.values.len() == 1 => &a.values[0],
+                    v => v,
+                };
+                mapping::written_element(var, one).map(|v| vec![(*i as usize, v)])
+            }
+            _ => Err(StatusCode::BadIndexRangeInvalid),
+        };
+        let elements = match elements {
+            Ok(e) => e,
+            Err(status) => return refuse("the value does not fit the variable", status),
+        };
+        let (reply, answer) = oneshot::channel();
+        let sent = self.shared.send_write(WriteJob {
+            node: value.node_id.clone(),
+            elements,
+            user,
+            reply,
+        });
+        match sent {
+            Some(()) => answer.await.unwrap_or(StatusCode::BadServerHalted),
+            None => StatusCode::BadServerHalted,
+        }
+    }
+}
+
+#[async_trait::async_trait]
+impl InMemoryNodeManagerImpl for SegmentNodes {
+    async fn init(&self, _space: &mut AddressSpace, _context: ServerContext) {}
+
+    fn name(&self) -> &str {
+        &self.namespace.namespace_uri
+    }
+
+    fn namespaces(&self) -> Vec<NamespaceMetadata> {
+        vec![self.namespace.clone()]
+    }
+
+    async fn read_values(
+        &self,
+        context: &RequestContext,
+        space: &RwLock<AddressSpace>,
+        nodes: &[&ParsedReadValueId],
+        _max_age: f64,
+        timestamps: TimestampsToReturn,
+    ) -> Vec<DataValue> {
+        let mut results: Vec<Option<DataValue>> = Vec::with_capacity(nodes.len());
+        let mut wanted = Vec::new();
+        {
+            let space = space.read();
+            for node in nodes {
+                match space.validate_node_read(context, node) {
+                    Ok(_) => {
+                        wanted.push((node.node_id.clone(), node.index_range.clone()));
+                        results.push(None);
+                    }
+                    Err(status) => results.push(Some(mapping::status_only(status))),
+                }
+            }
+        }
+        let mut values = self.values(wanted, timestamps).await.into_iter();
+        results
+            .into_iter()
+            .map(|r| {
+                r.or_else(|| values.next())
+                    .unwrap_or_else(|| mapping::status_only(StatusCode::BadInternalError))
+            })
+            .collect()
+    }
+
+    async fn create_value_monitored_items(
+        &self,
+        context: &RequestContext,
+        space: &RwLock<AddressSpace>,
+        items: &mut [&mut &mut CreateMonitoredItem],
+    ) {
+        let to_read: Vec<_> = items.iter().map(|i| i.item_to_monitor()).collect();
+        let values = self
+            .read_values(context, space, &to_read, 0.0, TimestampsToReturn::Both)
+            .await;
+        for (value, item) in values.into_iter().zip(items.iter_mut()) {
+            let status = value.status();
+            if matches!(
+                status,
+                StatusCode::BadNodeIdUnknown | StatusCode::BadUserAccessDenied
+            ) {
+                item.set_status(status);
+                continue;
+            }
+            item.set_initial_value(value);
+            item.set_status(StatusCode::Good);
+            self.shared.monitor(&item.item_to_monitor().node_id);
+        }
+    }
+
+    async fn delete_monitored_items(&self, _context: &RequestContext, items: &[&MonitoredItemRef]) {
+        for item in items {
+            if item.attribute() == AttributeId::Value {
+                self.shared.unmonitor(item.node_id());
+            }
+        }
+    }
+
+    async fn write(
+        &self,
+        context: &RequestContext,
+        _space: &RwLock<AddressSpace>,
+        nodes_to_write: &mut [&mut WriteNode],
+    ) -> Result<(), StatusCode> {
+        for write in nodes_to_write {
+            let status = self.write_one(context, write).await;
+            write.set_status(status);
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,122 @@
+//! What a segment's node manager (async, on the server's threads) and its segment threads (which
+//! alone touch the shared memory) share: the current layout, the monitored nodes, and the job
+//! queues from one to the other.
+
+use crate::address::Layout;
+use opcua::types::{DataValue, NodeId, NumericRange, StatusCode, TimestampsToReturn};
+use plc_core::Value;
+use std::collections::HashMap;
+use std::sync::mpsc::Sender;
+use std::sync::{Arc, Mutex, PoisonError, RwLock};
+use tokio::sync::oneshot;
+
+/// Values to read: each node with its index range.
+pub struct ReadJob {
+    /// The nodes to read, in the order of the answer.
+    pub items: Vec<(NodeId, NumericRange)>,
+    /// The timestamps the client asked for.
+    pub timestamps: TimestampsToReturn,
+    /// Where the values go.
+    pub reply: oneshot::Sender<Vec<DataValue>>,
+}
+
+/// One Write of a Value attribute, checked against the layout (access, user, kind).
+pub struct WriteJob {
+    /// The node written.
+    pub node: NodeId,
+    /// The elements written, with their new values.
+    pub elements: Vec<(usize, Value)>,
+    /// The OPC UA user, for the log.
+    pub user: String,
+    /// Where the outcome goes.
+    pub reply: oneshot::Sender<StatusCode>,
+}
+
+/// The nodes that have monitored items, with a count per node, and the same set as a list the
+/// sampler takes without holding the lock.
+#[derive(Default)]
+struct Monitored {
+    counts: HashMap<NodeId, usize>,
+    list: Arc<Vec<NodeId>>,
+}
+
+/// State shared between a segment's node manager and its threads.
+pub struct Shared {
+    /// The segment's name.
+    pub segment: String,
+    layout: RwLock<Arc<Layout>>,
+    monitored: Mutex<Monitored>,
+    reads: Mutex<Sender<ReadJob>>,
+    writes: Mutex<Sender<WriteJob>>,
+}
+
+/// Lock helpers that survive a panicked holder (the data stays consistent: each update is one
+/// assignment).
+fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+impl Shared {
+    /// State for `segment`, its first layout and the senders of its job queues.
+    pub fn new(
+        segment: String,
+        layout: Layout,
+        reads: Sender<ReadJob>,
+        writes: Sender<WriteJob>,
+    ) -> Shared {
+        Shared {
+            segment,
+            layout: RwLock::new(Arc::new(layout)),
+            monitored: Mutex::default(),
+            reads: Mutex::new(reads),
+            writes: Mutex::new(writes),
+        }
+    }
+
+    /// The current layout.
+    pub fn layout(&self) -> Arc<Layout> {
+        self.layout
+            .read()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone()
+    }
+
+    /// Replaces the layout (after the program's declaration changed).
+    pub fn set_layout(&self, layout: Arc<Layout>) {
+        *self.layout.write().unwrap_or_else(PoisonError::into_inner) = layout;
+    }
+
+    /// Counts a monitored item on `node`.
+    pub fn monitor(&self, node: &NodeId) {
+        let mut m = lock(&self.monitored);
+        *m.counts.entry(node.clone()).or_default() += 1;
+        m.list = Arc::new(m.counts.keys().cloned().collect());
+    }
+
+    /// Forgets one monitored item on `node`.
+    pub fn unmonitor(&self, node: &NodeId) {
+        let mut m = lock(&self.monitored);
+        if let Some(n) = m.counts.get_mut(node) {
+            *n -= 1;
+            if *n == 0 {
+                m.counts.remove(node);
+            }
+            m.list = Arc::new(m.counts.keys().cloned().collect());
+        }
+    }
+
+    /// The monitored nodes now.
+    pub fn monitored(&self) -> Arc<Vec<NodeId>> {
+        lock(&self.monitored).list.clone()
+    }
+
+    /// Sends a read to the segment's sampler; `None` once it has stopped.
+    pub fn send_read(&self, job: ReadJob) -> Option<()> {
+        lock(&self.reads).send(job).ok()
+    }
+
+    /// Sends a write to the segment's writer; `None` once it has stopped.
+    pub fn send_write(&self, job: WriteJob) -> Option<()> {
+        lock(&self.writes).send(job).ok()
+    }
+}

@@ -1,0 +1,428 @@
+"""An independent OPC UA client (python asyncua) against `plc opcua serve` and a running program.
+
+    opcua_client.py check URL SEGMENT PLC PKI WORKDIR USER PASSWORD
+        browse the whole tree, check every node's attributes against `plc list --json`, read
+        every variable and compare with `plc get`, subscribe, write as a user and see it in
+        `plc get`, the refused writes and their status codes, a plain-text password refused,
+        a SignAndEncrypt session (its client certificate trusted through the server's pki)
+    opcua_client.py names URL SEGMENT NAME,NAME...
+        the program's variables, once the namespace shows exactly these (after a new
+        declaration), each read Good, an array with its dimensions
+    opcua_client.py values URL SEGMENT good|bad
+        every variable's status: Good, or BadNoCommunication (the program is gone)
+
+Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the first that fails.
+"""
+
+import asyncio
+import itertools
+import json
+import math
+import shutil
+import socket
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from asyncua import Client, ua
+from asyncua.crypto import security_policies
+from asyncua.crypto.cert_gen import setup_self_signed_certificate
+from cryptography.x509.oid import ExtendedKeyUsageOID
+
+# IEC 61131-3 elementary types and their OPC UA built-in DataTypes (ns=0 numeric ids).
+DATA_TYPES = {
+    "BOOL": ua.ObjectIds.Boolean, "SINT": ua.ObjectIds.SByte, "USINT": ua.ObjectIds.Byte,
+    "BYTE": ua.ObjectIds.Byte, "INT": ua.ObjectIds.Int16, "UINT": ua.ObjectIds.UInt16,
+    "WORD": ua.ObjectIds.UInt16, "DINT": ua.ObjectIds.Int32, "UDINT": ua.ObjectIds.UInt32,
+    "DWORD": ua.ObjectIds.UInt32, "LINT": ua.ObjectIds.Int64, "ULINT": ua.ObjectIds.UInt64,
+    "LWORD": ua.ObjectIds.UInt64, "REAL": ua.ObjectIds.Float, "LREAL": ua.ObjectIds.Double,
+    "STRING": ua.ObjectIds.String, "LTIME": ua.ObjectIds.Duration,
+}
+READ = ua.AccessLevel.CurrentRead.mask
+WRITE = ua.AccessLevel.CurrentWrite.mask
+
+
+class Failed(Exception):
+    pass
+
+
+def check(condition, what):
+    if not condition:
+        raise Failed(what)
+
+
+def ok(what):
+    print(f"ok: {what}", flush=True)
+
+
+def plc(plc_bin, *args):
+    out = subprocess.run([plc_bin, *args], capture_output=True, text=True, timeout=30)
+    check(out.returncode == 0, f"`plc {' '.join(args)}` failed: {out.stderr}")
+    return out.stdout
+
+
+def plc_get(plc_bin, segment, names):
+    values = {}
+    for line in plc(plc_bin, "get", segment, *names).splitlines():
+        name, _, value = line.partition(" = ")
+        values[name] = value
+    return values
+
+
+def as_plc_text(iec_type, value):
+    """A value read over OPC UA as `plc get` prints it."""
+    if iec_type == "BOOL":
+        return "true" if value else "false"
+    if iec_type in ("REAL", "LREAL"):
+        return None  # compared as numbers
+    return str(value)
+
+
+def same_value(iec_type, plc_text, value):
+    if iec_type in ("REAL", "LREAL"):
+        return float(plc_text) == float(value)
+    return as_plc_text(iec_type, value) == plc_text
+
+
+def flatten(variables, prefix="", parent_writable=None):
+    """The basic values of `plc list --json`'s variables, each with its path (its NodeId), its
+    BrowseName and whether a tool may write it: a structure's members by path, an array of
+    structures element by element (`axes[1].pos`)."""
+    out = []
+    for v in variables:
+        path = prefix + v["name"]
+        if parent_writable is None:
+            writable = v["access"] == "read_write" and v["direction"] not in ("input", "status")
+        else:
+            writable = parent_writable and v["access"] == "read_write"
+        if v.get("members"):
+            dims = v.get("dims") or []
+            elements = itertools.product(*[range(d) for d in dims]) if dims else [None]
+            for coords in elements:
+                at = path if coords is None else f"{path}[{','.join(map(str, coords))}]"
+                out += flatten(v["members"], at + ".", writable)
+        else:
+            out.append(dict(v, path=path, browse=v["name"], writable=writable,
+                            top=parent_writable is None))
+    return out
+
+
+async def browse_variables(node, found, depth=0):
+    """Every variable under `node`, through objects (a structure level is an object)."""
+    check(depth < 16, "the tree is deeper than 16 levels")
+    for child in await node.get_children():
+        cls = await child.read_node_class()
+        if cls == ua.NodeClass.Variable:
+            found.append(child)
+        elif cls == ua.NodeClass.Object:
+            await browse_variables(child, found, depth + 1)
+
+
+async def status_of(client, node_id, attribute=ua.AttributeIds.Value):
+    """The DataValue of an attribute, a bad status included (asyncua's own read raises)."""
+    res = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
+        ua.ReadValueId(NodeId=node_id, AttributeId=attribute)]))
+    return res[0]
+
+
+async def write_status(client, node_id, variant):
+    params = ua.WriteParameters(NodesToWrite=[ua.WriteValue(
+        NodeId=node_id, AttributeId=ua.AttributeIds.Value, Value=ua.DataValue(variant))])
+    return (await client.uaclient.write(params))[0]
+
+
+def expect_status(status, name, what):
+    check(status.name == name, f"{what}: expected {name}, got {status.name}")
+    ok(f"{what}: {name}")
+
+
+async def address_space(client, segment, variables):
+    ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+    program = None
+    for child in await client.nodes.objects.get_children():
+        if (await child.read_browse_name()) == ua.QualifiedName(segment, ns):
+            program = child
+    check(program is not None, f"no object `{segment}` under Objects")
+    ok(f"namespace urn:plc-vars:{segment} is ns={ns}, object `{segment}` under Objects")
+    nodes = []
+    await browse_variables(program, nodes)
+    by_name = {}
+    for node in nodes:
+        by_name[node.nodeid.Identifier] = node
+    paths = sorted(v["path"] for v in variables)
+    check(sorted(by_name) == paths, f"browsed {sorted(by_name)}, the program has {paths}")
+    structured = sum(1 for v in variables if not v["top"])
+    ok(f"browsed the whole tree: {len(nodes)} variables, the program's own ({structured} of "
+       f"them members of structures, under an object per structure)")
+    for var in variables:
+        name = var["path"]
+        node = by_name[name]
+        check(node.nodeid == ua.NodeId(name, ns), f"{name}: NodeId {node.nodeid}")
+        browse = var["browse"]
+        check((await node.read_browse_name()) == ua.QualifiedName(browse, ns),
+              f"{name}: BrowseName")
+        check((await node.read_display_name()).Text == browse, f"{name}: DisplayName")
+        desc = (await node.read_description()).Text or ""
+        check(desc == var.get("description", ""), f"{name}: Description {desc!r}")
+        dtype = await node.read_data_type()
+        check(dtype == ua.NodeId(DATA_TYPES[var["iec_type"]]), f"{name}: DataType {dtype}")
+        rank = await node.read_value_rank()
+        check(rank == (len(var["dims"]) if var.get("dims") else -1), f"{name}: ValueRank {rank}")
+        writable = var["writable"]
+        level = (await node.read_attribute(ua.AttributeIds.AccessLevel)).Value.Value
+        check(level == (READ | WRITE if writable else READ), f"{name}: AccessLevel {level}")
+        user_level = (await node.read_attribute(ua.AttributeIds.UserAccessLevel)).Value.Value
+        check(user_level == READ, f"{name}: anonymous UserAccessLevel {user_level}")
+    ok("every node: NodeId ns;s=<path>, BrowseName, DisplayName, Description, DataType, "
+       "ValueRank, AccessLevel; UserAccessLevel read-only for anonymous")
+    return ns, by_name
+
+
+async def values_match_plc_get(client, plc_bin, segment, variables, by_name):
+    names = [v["path"] for v in variables]
+    for attempt in range(5):
+        before = plc_get(plc_bin, segment, names)
+        values = await client.read_values([by_name[n] for n in names])
+        data = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
+            ua.ReadValueId(NodeId=by_name[n].nodeid, AttributeId=ua.AttributeIds.Value)
+            for n in names]))
+        after = plc_get(plc_bin, segment, names)
+        stable = [v for v in variables if before[v["path"]] == after[v["path"]]]
+        for var, value in zip(variables, values):
+            if var in stable:
+                check(same_value(var["iec_type"], before[var["path"]], value),
+                      f"{var['path']}: OPC UA read {value!r}, `plc get` {before[var['path']]!r}")
+        now = time.time()
+        for n, dv in zip(names, data):
+            check(dv.StatusCode.is_good(), f"{n}: status {dv.StatusCode}")
+            age = now - dv.SourceTimestamp.timestamp()
+            check(-1 < age < 5, f"{n}: SourceTimestamp {dv.SourceTimestamp} is {age:.1f} s old")
+        # Values the program changes every cycle differ between the two `plc get`s: the others
+        # must be most of them, and every command and internal variable.
+        steady = [v for v in variables
+                  if v["top"] and v["direction"] in ("command", "internal")]
+        if all(v in stable for v in steady):
+            ok(f"read every variable: {len(stable)} of {len(variables)} unchanged during the "
+               f"read, each equal to `plc get`; all Good, SourceTimestamp the cycle's time")
+            return
+    raise Failed("command and internal variables kept changing during five reads")
+
+
+class Counter:
+    def __init__(self):
+        self.values = []
+
+    def datachange_notification(self, node, val, data):
+        self.values.append(val)
+
+
+async def subscription(client, node):
+    counter = Counter()
+    sub = await client.create_subscription(
+        ua.CreateSubscriptionParameters(RequestedPublishingInterval=10, RequestedLifetimeCount=1000,
+                                        RequestedMaxKeepAliveCount=100, MaxNotificationsPerPublish=0,
+                                        PublishingEnabled=True, Priority=0), counter)
+    check(sub.parameters.RequestedPublishingInterval <= 10,
+          f"publishing interval revised to {sub.parameters.RequestedPublishingInterval} ms")
+    await sub.subscribe_data_change(node, sampling_interval=1)
+    await asyncio.sleep(2.0)
+    await sub.delete()
+    distinct = len(set(counter.values))
+    check(distinct >= 20, f"{distinct} changes of {node.nodeid.Identifier} in 2 s")
+    ok(f"subscription to {node.nodeid.Identifier}: {distinct} changes in 2 s (publishing 10 ms)")
+
+
+def plain_text_policy(token_type):
+    """What a careless client does: the user name token's password sent as it is."""
+    return ua.UserTokenPolicy(PolicyId="userpass_rsa_oaep", TokenType=token_type,
+                              SecurityPolicyUri=None)
+
+
+async def refused_plain_text(url, user, password):
+    client = Client(url)
+    client.set_user(user)
+    client.set_password(password)
+    client.server_policy = plain_text_policy
+    try:
+        await client.connect()
+    except Exception as e:  # the session is refused; what asyncua raises says why
+        text = f"{type(e).__name__}: {e}"
+        check("BadIdentityTokenRejected" in text,
+              f"a plain-text password was refused, but not for its token: {text}")
+        ok(f"a user name token with a plain-text password is refused ({text[:80]})")
+        return
+    await client.disconnect()
+    raise Failed("a user name token with a plain-text password was accepted")
+
+
+async def writes(url, plc_bin, segment, ns, user, password):
+    client = Client(url)
+    client.set_user(user)
+    client.set_password(password)
+    async with client:
+        node = lambda name: client.get_node(ua.NodeId(name, ns))
+        speed = node("test_speed_mm_s")
+        level = (await speed.read_attribute(ua.AttributeIds.UserAccessLevel)).Value.Value
+        check(level == READ | WRITE, f"a user's UserAccessLevel of test_speed_mm_s is {level}")
+        ok("a signed-in user's UserAccessLevel includes CurrentWrite")
+        old = plc_get(plc_bin, segment, ["test_speed_mm_s"])["test_speed_mm_s"]
+        new = 3.25 if float(old) != 3.25 else 4.5
+        status = await write_status(client, speed.nodeid, ua.Variant(new, ua.VariantType.Double))
+        expect_status(status, "Good", f"write test_speed_mm_s = {new} as `{user}`")
+        deadline = time.time() + 5
+        while float(plc_get(plc_bin, segment, ["test_speed_mm_s"])["test_speed_mm_s"]) != new:
+            check(time.time() < deadline, "the written value never showed in `plc get`")
+            await asyncio.sleep(0.05)
+        ok(f"`plc get` shows test_speed_mm_s = {new}")
+        refusals = [
+            ("ls_lift_neg", ua.Variant(True, ua.VariantType.Boolean), "BadNotWritable", "an input"),
+            ("force_kn", ua.Variant(1.0, ua.VariantType.Double), "BadNotWritable", "a status"),
+            ("impact67_0_digital_outputs", ua.Variant(70000, ua.VariantType.Int32),
+             "BadOutOfRange", "70000 to a UINT"),
+            ("test_speed_mm_s", ua.Variant(math.nan, ua.VariantType.Double), "BadOutOfRange", "NaN"),
+            ("info_test_id", ua.Variant("x" * 65, ua.VariantType.String), "BadOutOfRange",
+             "65 bytes to a STRING(64)"),
+            ("test_speed_mm_s", ua.Variant("fast", ua.VariantType.String), "BadTypeMismatch",
+             "text to an LREAL"),
+            ("axes[0].moves", ua.Variant(5, ua.VariantType.UInt32), "BadNotWritable",
+             "a read-only member of a structure"),
+        ]
+        for name, variant, expected, what in refusals:
+            status = await write_status(client, node(name).nodeid, variant)
+            expect_status(status, expected, f"write {what} ({name})")
+        check(float(plc_get(plc_bin, segment, ["test_speed_mm_s"])["test_speed_mm_s"]) == new,
+              "a refused write changed test_speed_mm_s")
+        # A member inside an array of structures goes through the same write path (the
+        # program sets the IN parameter again in its next cycle).
+        status = await write_status(client, node("axes[2].enable").nodeid,
+                                    ua.Variant(True, ua.VariantType.Boolean))
+        expect_status(status, "Good", "write an IN parameter of a structure (axes[2].enable)")
+        await write_status(client, speed.nodeid, ua.Variant(float(old), ua.VariantType.Double))
+
+
+async def sign_and_encrypt(url, pki, workdir, user, password, ns):
+    key, cert = Path(workdir) / "client-key.pem", Path(workdir) / "client-cert.der"
+    app_uri = "urn:plc-vars:test-client"
+    await setup_self_signed_certificate(key, cert, app_uri, socket.gethostname(),
+                                        [ExtendedKeyUsageOID.CLIENT_AUTH], {"commonName": "plc-vars test"})
+
+    async def connect():
+        client = Client(url)
+        client.application_uri = app_uri
+        client.set_user(user)
+        client.set_password(password)
+        await client.set_security(security_policies.SecurityPolicyBasic256Sha256, str(cert), str(key),
+                                  mode=ua.MessageSecurityMode.SignAndEncrypt)
+        await client.connect()
+        return client
+
+    try:
+        client = await connect()
+        await client.disconnect()
+        raise Failed("an untrusted client certificate was accepted")
+    except Failed:
+        raise
+    except Exception:
+        pass
+    rejected = list((Path(pki) / "rejected").glob("*.der"))
+    check(len(rejected) == 1, f"the refused certificate is not in {pki}/rejected: {rejected}")
+    shutil.move(str(rejected[0]), str(Path(pki) / "trusted" / rejected[0].name))
+    ok("an untrusted client certificate is refused and kept in pki/rejected; moved to trusted/")
+    client = await connect()
+    try:
+        check(client.security_policy.Mode == ua.MessageSecurityMode.SignAndEncrypt, "mode")
+        value = await client.get_node(ua.NodeId("tests_completed", ns)).read_value()
+        ok(f"a Basic256Sha256 SignAndEncrypt session as `{user}` reads tests_completed = {value}")
+    finally:
+        await client.disconnect()
+
+
+async def endpoints(url):
+    found = {(e.SecurityPolicyUri.split("#")[-1], e.SecurityMode.name)
+             for e in await Client(url).connect_and_get_server_endpoints()}
+    for wanted in [("None", "None_"), ("Basic256Sha256", "Sign"), ("Basic256Sha256", "SignAndEncrypt")]:
+        check(wanted in found, f"no endpoint {wanted}: {found}")
+    ok(f"endpoints: {sorted(found)}")
+
+
+async def run_check(url, segment, plc_bin, pki, workdir, user, password):
+    variables = flatten(json.loads(plc(plc_bin, "list", segment, "--json"))["variables"])
+    await endpoints(url)
+    async with Client(url) as client:
+        ns, by_name = await address_space(client, segment, variables)
+        await values_match_plc_get(client, plc_bin, segment, variables, by_name)
+        await subscription(client, by_name["state_cycles"])
+        status = await write_status(client, by_name["cmd_start"].nodeid,
+                                    ua.Variant(True, ua.VariantType.Boolean))
+        expect_status(status, "BadUserAccessDenied", "anonymous write of cmd_start")
+    await refused_plain_text(url, user, password)
+    await writes(url, plc_bin, segment, ns, user, password)
+    await sign_and_encrypt(url, pki, workdir, user, password, ns)
+
+
+async def run_values(url, segment, expected):
+    """Waits (at most 15 s) until every value has the expected status."""
+    want = "Good" if expected == "good" else "BadNoCommunication"
+    deadline = time.time() + 15
+    async with Client(url) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        nodes = []
+        await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
+        check(nodes, "no variables to read")
+        while True:
+            data = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
+                ua.ReadValueId(NodeId=n.nodeid, AttributeId=ua.AttributeIds.Value) for n in nodes]))
+            names = {dv.StatusCode.name for dv in data}
+            if names == {want}:
+                ok(f"all {len(nodes)} values {want}")
+                return
+            check(time.time() < deadline, f"expected every value {want}, still {names} after 15 s")
+            await asyncio.sleep(0.1)
+
+
+async def run_names(url, segment, expected):
+    """Waits (at most 15 s) until the program object holds exactly the variables `expected`."""
+    want = sorted(expected.split(","))
+    deadline = time.time() + 15
+    async with Client(url) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        while True:
+            nodes = []
+            await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
+            names = sorted([(await n.read_browse_name()).Name for n in nodes])
+            if names == want:
+                break
+            check(time.time() < deadline, f"expected the variables {want}, still {names} after 15 s")
+            await asyncio.sleep(0.1)
+        while True:
+            data = [await status_of(client, n.nodeid) for n in nodes]
+            if all(dv.StatusCode.is_good() for dv in data):
+                break
+            check(time.time() < deadline, f"values not Good: {[dv.StatusCode.name for dv in data]}")
+            await asyncio.sleep(0.1)
+        for node, dv in zip(nodes, data):
+            dims = await status_of(client, node.nodeid, ua.AttributeIds.ArrayDimensions)
+            if dims.StatusCode.is_good() and dims.Value.Value:
+                dims = dims.Value.Value
+                check(len(dv.Value.Value) == math.prod(dims), f"{node.nodeid}: {dv.Value}")
+        ok(f"the namespace holds {names}, every value Good")
+
+
+def main():
+    try:
+        if sys.argv[1] == "check":
+            asyncio.run(run_check(*sys.argv[2:9]))
+        elif sys.argv[1] == "names":
+            asyncio.run(run_names(*sys.argv[2:5]))
+        elif sys.argv[1] == "values":
+            asyncio.run(run_values(*sys.argv[2:5]))
+        else:
+            raise Failed(f"unknown command {sys.argv[1]}")
+    except Failed as e:
+        print(f"FAILED: {e}", flush=True)
+        sys.exit(1)
+
+
+if __name__ == "__main__":
+    main()
