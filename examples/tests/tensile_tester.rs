@@ -123,6 +123,23 @@ fn a_setpoint_written_by_the_hmi_reader_is_applied_retained_and_restored_after_s
         );
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
+    // The step timers are function blocks that tools reach by path: the test step's runs
+    // while the machine is testing.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    loop {
+        let image = seg.snapshot_bytes().unwrap();
+        let value = |path: &str| seg.value_at_location(&image, &seg.locate(path).unwrap());
+        let running = value("test_timeout.IN") == Some(plc_core::Value::Bool(true));
+        let elapsed = matches!(value("test_timeout.ET"), Some(plc_core::Value::Time(t)) if t > plc_core::Time::ZERO);
+        if running && elapsed {
+            break;
+        }
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the test step's timer never ran"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
     drop(seg);
 
     let (status, stdout) = terminate(program);

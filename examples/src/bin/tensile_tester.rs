@@ -162,6 +162,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         let info = TickInfo {
             period,
             inputs_valid: ctx.inputs_valid,
+            now: ctx.now(),
         };
         process_tick(&mut ctx.gm, info);
     });

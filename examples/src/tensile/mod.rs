@@ -10,7 +10,8 @@
 pub mod plant;
 
 use ethercat_sim::{Device, SimBus};
-use plc_core::{FixedString, GlobalMemory, PlcStruct};
+use plc_core::fb::Ton;
+use plc_core::{FixedString, GlobalMemory, PlcStruct, Time};
 use plc_io::ethercat::Transport;
 use std::time::Duration;
 
@@ -169,7 +170,18 @@ pub struct Gm {
     pub state_cycles: u32,
     /// The drives: lift, centering jaws, test drive (`axes[2].pos_mm` is the elongation)
     pub axes: [Axis; 3],
+    /// Step timeout: the centering jaws close within 5 s
+    pub centering_timeout: Ton,
+    /// Step timeout: the lift leaves its lower limit within 5 s
+    pub lifting_timeout: Ton,
+    /// Step timeout: the specimen breaks within 20 s
+    pub test_timeout: Ton,
 }
+
+/// How long each step may take.
+const CENTERING_TIMEOUT: Time = Time::from_secs(5);
+const LIFTING_TIMEOUT: Time = Time::from_secs(5);
+const TEST_TIMEOUT: Time = Time::from_secs(20);
 
 /// The machine states, as `machine_state` holds them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -221,6 +233,8 @@ pub struct TickInfo {
     pub period: Duration,
     /// The inputs are this cycle's (the bus answered correctly).
     pub inputs_valid: bool,
+    /// The cycle's start (`Context::now`), for the step timeouts.
+    pub now: Time,
 }
 
 fn go(gm: &mut Gm, to: State) {
@@ -257,6 +271,14 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
         fault(gm, "EtherCAT inputs invalid: bus fault during a test");
     }
     let state = State::from_u8(gm.machine_state);
+    // Each step's timer runs while the machine is in that step.
+    let now = info.now;
+    gm.centering_timeout
+        .call(now, state == State::Centering, CENTERING_TIMEOUT);
+    gm.lifting_timeout
+        .call(now, state == State::Lifting, LIFTING_TIMEOUT);
+    gm.test_timeout
+        .call(now, state == State::Testing, TEST_TIMEOUT);
     match state {
         State::Idle => {
             if gm.cmd_start || (gm.auto_start && gm.state_cycles >= secs(1.0)) {
@@ -278,7 +300,7 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             gm.cr_centering_drive = true;
             if gm.ls_centering_neg && gm.ls_centering_pos {
                 go(gm, State::Lifting);
-            } else if gm.state_cycles > secs(5.0) {
+            } else if gm.centering_timeout.Q {
                 fault(gm, "centering jaws did not close within 5 s");
             }
         }
@@ -288,7 +310,7 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             gm.cr_lift_up = true;
             if !gm.ls_lift_neg && gm.state_cycles > secs(0.5) {
                 go(gm, State::Testing);
-            } else if gm.state_cycles > secs(5.0) {
+            } else if gm.lifting_timeout.Q {
                 fault(gm, "lift did not leave its lower limit within 5 s");
             }
         }
@@ -307,7 +329,7 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             if gm.specimen_broken {
                 gm.force_kn = 0.0;
                 go(gm, State::Done);
-            } else if gm.state_cycles > secs(20.0) {
+            } else if gm.test_timeout.Q {
                 fault(gm, "specimen did not break within 20 s");
             }
         }
@@ -375,6 +397,7 @@ mod tests {
         let info = TickInfo {
             period: Duration::from_millis(10),
             inputs_valid: true,
+            now: Time::ZERO,
         };
         let mut gm = Gm::default();
         gm.cmd_start = true;
@@ -417,9 +440,44 @@ mod tests {
             TickInfo {
                 period: Duration::from_millis(1),
                 inputs_valid: false,
+                now: Time::ZERO,
             },
         );
         assert_eq!(gm.machine_state, State::Fault as u8);
         assert!(!gm.cr_test_drive && !gm.cr_lift_brake && gm.lamp_red);
+    }
+
+    #[test]
+    fn a_step_that_takes_too_long_faults_through_its_timer() {
+        let mut gm = Gm::default();
+        gm.cmd_start = true;
+        let tick = |gm: &mut Gm, ms: i64| {
+            process_tick(
+                gm,
+                TickInfo {
+                    period: Duration::from_millis(10),
+                    inputs_valid: true,
+                    now: Time::from_millis(ms),
+                },
+            )
+        };
+        tick(&mut gm, 0);
+        assert_eq!(gm.machine_state, State::Centering as u8);
+        tick(&mut gm, 10);
+        assert!(gm.centering_timeout.IN && !gm.centering_timeout.Q);
+        tick(&mut gm, 4_000);
+        assert_eq!(gm.centering_timeout.ET, Time::from_millis(3_990));
+        assert_eq!(gm.machine_state, State::Centering as u8);
+        tick(&mut gm, 5_010);
+        assert_eq!(gm.machine_state, State::Fault as u8);
+        assert_eq!(
+            gm.fault_text.as_str(),
+            "centering jaws did not close within 5 s"
+        );
+        tick(&mut gm, 5_020);
+        assert!(
+            !gm.centering_timeout.Q,
+            "the timer resets when the step ends"
+        );
     }
 }

@@ -17,14 +17,18 @@
 /// assert!(alarm.call(true, true), "set dominates");
 /// assert!(!alarm.call(false, true));
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "SR", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Sr {
     /// Input: set (dominant).
+    #[plc(direction = "input")]
     pub S1: bool,
     /// Input: reset.
+    #[plc(direction = "input")]
     pub R: bool,
     /// Output (and the state kept between calls).
+    #[plc(direction = "output")]
     pub Q1: bool,
 }
 
@@ -53,14 +57,18 @@ impl Sr {
 /// assert!(motor.call(false, false), "kept");
 /// assert!(!motor.call(true, true), "reset dominates");
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "RS", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Rs {
     /// Input: set.
+    #[plc(direction = "input")]
     pub S: bool,
     /// Input: reset (dominant).
+    #[plc(direction = "input")]
     pub R1: bool,
     /// Output (and the state kept between calls).
+    #[plc(direction = "output")]
     pub Q1: bool,
 }
 

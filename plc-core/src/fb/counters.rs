@@ -30,18 +30,24 @@
 /// assert!(!parts.call(false, true, 3), "R resets");
 /// assert_eq!(parts.CV, 0);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "CTU", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Ctu {
     /// Input: its rising edges count up.
+    #[plc(direction = "input")]
     pub CU: bool,
     /// Input: reset, `CV := 0` (before counting).
+    #[plc(direction = "input")]
     pub R: bool,
     /// Input: the preset `Q` compares with.
+    #[plc(direction = "input")]
     pub PV: i16,
     /// Output: `CV >= PV`.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// Output: the count.
+    #[plc(direction = "output")]
     pub CV: i16,
     /// State: `CU` of the previous call (its rising edge counts).
     pub M: bool,
@@ -92,18 +98,24 @@ impl Ctu {
 /// assert!(remaining.call(true, false, 2));
 /// assert_eq!(remaining.CV, 0);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "CTD", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Ctd {
     /// Input: its rising edges count down.
+    #[plc(direction = "input")]
     pub CD: bool,
     /// Input: load, `CV := PV` (before counting).
+    #[plc(direction = "input")]
     pub LD: bool,
     /// Input: the value `LD` loads.
+    #[plc(direction = "input")]
     pub PV: i16,
     /// Output: `CV <= 0`.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// Output: the count.
+    #[plc(direction = "output")]
     pub CV: i16,
     /// State: `CD` of the previous call (its rising edge counts).
     pub M: bool,
@@ -156,24 +168,33 @@ impl Ctd {
 /// assert_eq!(buffer.call(false, true, false, false, 2), (false, false));
 /// assert_eq!(buffer.call(false, false, true, true, 2), (false, true), "R before LD");
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "CTUD", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Ctud {
     /// Input: its rising edges count up.
+    #[plc(direction = "input")]
     pub CU: bool,
     /// Input: its rising edges count down.
+    #[plc(direction = "input")]
     pub CD: bool,
     /// Input: reset, `CV := 0` (before `LD` and counting).
+    #[plc(direction = "input")]
     pub R: bool,
     /// Input: load, `CV := PV` (before counting).
+    #[plc(direction = "input")]
     pub LD: bool,
     /// Input: the preset `QU` compares with and `LD` loads.
+    #[plc(direction = "input")]
     pub PV: i16,
     /// Output: `CV >= PV`.
+    #[plc(direction = "output")]
     pub QU: bool,
     /// Output: `CV <= 0`.
+    #[plc(direction = "output")]
     pub QD: bool,
     /// Output: the count.
+    #[plc(direction = "output")]
     pub CV: i16,
     /// State: `CU` of the previous call (its rising edge counts up).
     pub MU: bool,

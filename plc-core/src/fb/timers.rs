@@ -49,16 +49,21 @@ fn preset(pt: Time) -> Time {
 /// assert!(!start_delay.call(ms(310), false, ms(300)));
 /// assert_eq!(start_delay.ET, Time::ZERO);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "TON", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Ton {
     /// Input: the timer runs while TRUE.
+    #[plc(direction = "input")]
     pub IN: bool,
     /// Input: the delay.
+    #[plc(direction = "input")]
     pub PT: Time,
     /// Output: `IN` has been TRUE for `PT`.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// Output: the time elapsed since `IN` rose, at most `PT`.
+    #[plc(direction = "output")]
     pub ET: Time,
     /// State: `IN` of the previous call (its rising edge starts the timer).
     pub M: bool,
@@ -122,16 +127,21 @@ impl Ton {
 /// assert!(!fan_run_on.call(ms(1100), false, ms(1000)));
 /// assert_eq!(fan_run_on.ET, ms(1000));
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "TOF", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Tof {
     /// Input: `Q` follows it on, and goes off `PT` after it.
+    #[plc(direction = "input")]
     pub IN: bool,
     /// Input: the delay.
+    #[plc(direction = "input")]
     pub PT: Time,
     /// Output: `IN` is TRUE, or fell less than `PT` ago.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// Output: the time elapsed since `IN` fell, at most `PT`.
+    #[plc(direction = "output")]
     pub ET: Time,
     /// State: `IN` of the previous call (its falling edge starts the timer).
     pub M: bool,
@@ -193,16 +203,21 @@ impl Tof {
 /// assert!(horn.call(ms(150), true, ms(200)), "a new edge does not restart it");
 /// assert!(!horn.call(ms(200), true, ms(200)));
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "TP", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct Tp {
     /// Input: its rising edge starts a pulse.
+    #[plc(direction = "input")]
     pub IN: bool,
     /// Input: the pulse length.
+    #[plc(direction = "input")]
     pub PT: Time,
     /// Output: the pulse.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// Output: the time since the pulse started, at most `PT`.
+    #[plc(direction = "output")]
     pub ET: Time,
     /// State: `IN` of the previous call (its rising edge starts a pulse).
     pub M: bool,

@@ -24,12 +24,15 @@
 /// assert!(!start_button.call(false));
 /// assert!(start_button.call(true));
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "R_TRIG", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct RTrig {
     /// Input: the signal whose rising edges are detected.
+    #[plc(direction = "input")]
     pub CLK: bool,
     /// Output: `CLK` rose in this call.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// State: `CLK` of the previous call (FALSE before the first).
     pub M: bool,
@@ -62,12 +65,15 @@ impl RTrig {
 /// assert!(door_opened.call(false));
 /// assert!(!door_opened.call(false));
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+#[plc(crate = "crate", name = "F_TRIG", __iec_standard)]
 #[allow(non_snake_case)]
 pub struct FTrig {
     /// Input: the signal whose falling edges are detected.
+    #[plc(direction = "input")]
     pub CLK: bool,
     /// Output: `CLK` fell in this call.
+    #[plc(direction = "output")]
     pub Q: bool,
     /// State: `CLK` of the previous call (FALSE before the first).
     pub M: bool,
