@@ -347,3 +347,36 @@ fn watch_shows_structures_as_a_tree_and_writes_a_member() {
     });
     owner.stop();
 }
+
+#[test]
+fn log_records_members_by_path() {
+    let dir = temp_dir("log");
+    let segment = format!("cli_struct_log_{}", std::process::id());
+    let owner = Owner::start("owner", &segment, &dir.join("s.retain"));
+    let csv = dir.join("log.csv");
+    let out = plc(&[
+        "log",
+        &segment,
+        "axes[1].target",
+        "lift",
+        "counter",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--rate",
+        "50",
+        "--seconds",
+        "0.3",
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header = lines.next().unwrap();
+    assert!(
+        header.starts_with("time_s,cycle,axes[1].target,lift.pos,lift.target,"),
+        "{header}"
+    );
+    assert!(header.ends_with(",lift.moves,counter"), "{header}");
+    let row: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!((row[2], row[4]), ("250.0", "250.0"), "{row:?}");
+    owner.stop();
+}

@@ -4,9 +4,10 @@
 //! only ask the loop to end, so the rows still buffered are written before it exits. The file is
 //! also flushed every second, so `tail -f` follows it and a `kill -9` loses at most a second.
 
-use super::{Error, period_of, resolve, show};
+use super::{Error, is_path, leaves_of, period_of, resolve, show};
 use plc_io::StopHandle;
 use plc_io::shm::DynSegment;
+use plc_io::shm::PathLocation;
 use std::io::Write;
 use std::path::Path;
 use std::time::{Duration, Instant};
@@ -23,6 +24,14 @@ fn field(s: &str) -> String {
     }
 }
 
+/// What one column of the log holds.
+enum Column {
+    /// A variable (an array whole) or one element, by index.
+    Flat(usize, Option<usize>),
+    /// A value inside a structure, by path.
+    Path(Box<PathLocation>),
+}
+
 pub fn run(
     segment: &str,
     names: &[String],
@@ -35,17 +44,26 @@ pub fn run(
     stop.stop_on_signals()
         .map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
     let seg = DynSegment::attach(segment)?;
-    let vars: Vec<_> = names
-        .iter()
-        .map(|n| resolve(&seg, n))
-        .collect::<Result<_, _>>()?;
+    // One column per name: a variable or element as before, or each value a path reaches
+    // inside structures (a whole structure gives a column per member).
+    let mut columns: Vec<(String, Column)> = Vec::new();
+    for n in names {
+        if is_path(&seg, n) {
+            for at in leaves_of(&seg, n)? {
+                columns.push((at.path.clone(), Column::Path(Box::new(at))));
+            }
+        } else {
+            let (i, _, e) = resolve(&seg, n)?;
+            columns.push((n.clone(), Column::Flat(i, e)));
+        }
+    }
     let mut out = std::io::BufWriter::new(
         std::fs::File::create(csv).map_err(|e| format!("{}: {e}", csv.display()))?,
     );
     let header: Vec<String> = ["time_s", "cycle"]
         .iter()
         .map(|s| s.to_string())
-        .chain(names.iter().map(|n| field(n)))
+        .chain(columns.iter().map(|(n, _)| field(n)))
         .collect();
     writeln!(out, "{}", header.join(","))?;
     out.flush()?;
@@ -66,10 +84,14 @@ pub fn run(
             format!("{:.6}", start.elapsed().as_secs_f64()),
             seg.status().cycle_count.to_string(),
         ];
-        row.extend(
-            vars.iter()
-                .map(|&(i, _, e)| field(&show(&seg, &image, i, e))),
-        );
+        row.extend(columns.iter().map(|(_, c)| {
+            field(&match c {
+                Column::Flat(i, e) => show(&seg, &image, *i, *e),
+                Column::Path(at) => seg
+                    .value_at_location(&image, at)
+                    .map_or("?".to_string(), |v| v.to_string()),
+            })
+        }));
         writeln!(out, "{}", row.join(","))?;
         rows += 1;
         if flushed.elapsed() >= FLUSH_EVERY {
