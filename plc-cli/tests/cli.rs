@@ -272,8 +272,18 @@ fn set_by_a_user_the_program_does_not_let_write_reports_the_rule() {
         .stdout(Stdio::null())
         .spawn()
         .unwrap();
+    // The `plc` binary where uid 65534 may run it: the build's own directory may be closed to
+    // other users (a checkout in a private directory).
+    let plc_bin = base.join("plc");
+    std::fs::copy(env!("CARGO_BIN_EXE_plc"), &plc_bin).unwrap();
+    std::fs::set_permissions(&base, std::os::unix::fs::PermissionsExt::from_mode(0o755)).unwrap();
+    std::fs::set_permissions(
+        &plc_bin,
+        std::os::unix::fs::PermissionsExt::from_mode(0o755),
+    )
+    .unwrap();
     let as_nobody = |args: &[&str]| {
-        let mut cmd = Command::new(env!("CARGO_BIN_EXE_plc"));
+        let mut cmd = Command::new(&plc_bin);
         cmd.args(args).env(plc_io::shm::RUNTIME_DIR_ENV, &dir);
         // SAFETY: only async-signal-safe calls between fork and exec.
         unsafe {
