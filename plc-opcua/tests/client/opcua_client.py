@@ -79,9 +79,26 @@ def as_plc_text(iec_type, value):
     return str(value)
 
 
+LTIME_UNITS = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1,
+               "us": 1e-3, "ns": 1e-6}
+
+
+def ltime_ms(text):
+    """`LTIME#1m30s500ms` (as `plc get` prints a duration) in milliseconds."""
+    import re
+    body = text.split("#", 1)[1].replace("_", "")
+    sign = -1 if body.startswith("-") else 1
+    parts = re.findall(r"(\d+(?:\.\d+)?)(ms|us|ns|d|h|m|s)", body.lstrip("+-"))
+    check(parts, f"not a duration: {text!r}")
+    return sign * sum(float(n) * LTIME_UNITS[u] for n, u in parts)
+
+
 def same_value(iec_type, plc_text, value):
     if iec_type in ("REAL", "LREAL"):
         return float(plc_text) == float(value)
+    if iec_type == "LTIME":
+        # OPC UA's Duration is a Double of milliseconds.
+        return abs(ltime_ms(plc_text) - float(value)) < 1e-6
     return as_plc_text(iec_type, value) == plc_text
 
 
