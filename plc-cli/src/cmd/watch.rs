@@ -440,26 +440,11 @@ fn tail(path: &str) -> &str {
 }
 
 /// A group's type as the window shows it: `Axis[3]` for an array of structures, `Axis` for
-/// a structure or one element.
+/// a structure or one element of the array.
 fn group_type(seg: &DynSegment, path: &str) -> String {
-    let mut level = &seg.descriptor().variables;
-    let mut node = None;
-    for segment in plc_rules::path::segments(path).flatten() {
-        let Some(n) = level
-            .iter()
-            .find(|v| v.name.eq_ignore_ascii_case(segment.name))
-        else {
-            return String::new();
-        };
-        node = Some((n, segment.index.is_some()));
-        level = &n.members;
-    }
-    match node {
-        Some((n, false)) if !n.dims.is_empty() => {
-            let dims: Vec<String> = n.dims.iter().map(|d| d.to_string()).collect();
-            format!("{}[{}]", n.type_name(), dims.join(","))
-        }
-        Some((n, _)) => n.type_name().to_string(),
+    match seg.node_at(path) {
+        Some(n) if path.trim_end().ends_with(']') => n.type_name().to_string(),
+        Some(n) => type_text(n),
         None => String::new(),
     }
 }

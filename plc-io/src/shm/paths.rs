@@ -66,8 +66,9 @@ impl DynSegment {
         self.locate(text).map(|at| PathTarget::Value(Box::new(at)))
     }
 
-    /// The variable or member the names of `path` lead to (its indexes aside).
-    fn node_at(&self, path: &str) -> Option<&VarDescriptor> {
+    /// The variable or member the names of `path` lead to (its indexes aside): what a tool
+    /// shows as the type of a group `resolve_path` gives.
+    pub fn node_at(&self, path: &str) -> Option<&VarDescriptor> {
         let mut level = &self.descriptor().variables;
         let mut node = None;
         for segment in plc_rules::path::segments(path) {
