@@ -1,7 +1,6 @@
-//! `DynSegment::write_all`: a batch checked whole before anything is posted, then every element
-//! of it applied. (That the owner applies it at one cycle start is the mailbox's doing: on
-//! today's mailbox a cycle that starts while the batch is being posted can split it, so it is
-//! not asserted here.)
+//! `DynSegment::write_all`: a batch checked whole before anything is sent, then every element
+//! of it applied in one cycle, and visible to a snapshot taken as soon as the call returns
+//! (the owner answers "applied" once it has published the image holding the writes).
 
 mod common;
 

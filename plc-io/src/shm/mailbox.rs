@@ -10,6 +10,7 @@
 use super::layout::{Base, Offsets, S_MB_APPLIED, S_MB_REJECTED};
 use super::protocol::{self, Code, Reply};
 use plc_core::{GlobalMemory, SetError, Value, VarInfo};
+use std::cell::RefCell;
 use std::fmt;
 use std::os::fd::{AsRawFd, OwnedFd};
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
@@ -243,6 +244,9 @@ pub(crate) fn validate(
 pub(crate) struct Inbox {
     pub rx: Mutex<Receiver<Batch>>,
     pub counters: Arc<Counters>,
+    /// Requests applied and not yet published: their writers hear "applied" once a reader
+    /// can see the value (after the next publish), so a tool's write-then-read holds.
+    pub unpublished: RefCell<Vec<(Arc<Conn>, u64)>>,
 }
 
 /// How many requests one cycle applies at most; the rest wait for the next cycle.
@@ -275,7 +279,7 @@ impl Inbox {
                     applied += batch.writes.len();
                     self.counters
                         .add(Count::Applied, batch.writes.len() as u64, base, off);
-                    batch.conn.answer(batch.id, Code::Applied, 0, String::new());
+                    self.unpublished.borrow_mut().push((batch.conn, batch.id));
                 }
                 Err((k, why)) => {
                     self.counters
@@ -285,6 +289,13 @@ impl Inbox {
             }
         }
         applied
+    }
+
+    /// Answers "applied" to the writers whose requests the image just published holds.
+    pub fn published(&self) {
+        for (conn, id) in self.unpublished.borrow_mut().drain(..) {
+            conn.answer(id, Code::Applied, 0, String::new());
+        }
     }
 }
 

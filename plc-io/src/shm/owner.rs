@@ -145,6 +145,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
             inbox: Inbox {
                 rx: Mutex::new(rx),
                 counters,
+                unpublished: Default::default(),
             },
             seq: Cell::new(0),
             run_state: Cell::new(RunState::Starting),
@@ -222,6 +223,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         seq.store(s.wrapping_add(2), Ordering::Release);
         self.seq.set(s.wrapping_add(2));
         base.store(S_HEARTBEAT_NS, now_ns());
+        self.inbox.published();
         Ok(())
     }
 
@@ -373,7 +375,9 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         if self.run_state.get() != RunState::Faulted {
             self.set_run_state(RunState::Stopped);
         }
-        // Writes received and never applied are answered: their writers need not wait.
+        // Writes applied and never published are answered as applied (the program had them);
+        // writes received and never applied are answered too: their writers need not wait.
+        self.inbox.published();
         if let Ok(rx) = self.inbox.rx.lock() {
             for _ in 0..QUEUE {
                 let Ok(batch) = rx.try_recv() else { break };
