@@ -22,7 +22,19 @@ fn options() -> Options {
 fn the_golden_structs_declare_what_the_json_says() {
     let v = Machine::VARIABLES;
     let names: Vec<&str> = v.iter().map(|x| x.name).collect();
-    assert_eq!(names, ["speed", "lift", "axes", "grid", "station"]);
+    assert_eq!(
+        names,
+        [
+            "speed",
+            "lift",
+            "axes",
+            "grid",
+            "station",
+            "start_delay",
+            "step_timeouts",
+            "parts"
+        ]
+    );
     assert_eq!(v[1].type_name(), "axis_t");
     assert_eq!(v[2].dims, [3]);
     assert_eq!(v[3].dims, [2, 3]);
@@ -38,6 +50,14 @@ fn the_golden_structs_declare_what_the_json_says() {
     assert_eq!(gm.lift.cycles, 7);
     assert!(Machine::find("station.axes[1].drive.speed").is_some());
     assert!(Machine::find("grid[1,2].ready").is_some());
+    // The standard function blocks, by their IEC names, in a structure and at the top level.
+    assert_eq!(v[5].type_name(), "TON");
+    assert_eq!(v[6].dims, [2]);
+    assert_eq!(v[4].members()[2].type_name(), "R_TRIG");
+    assert!(Machine::find("start_delay.ET").is_some());
+    assert!(Machine::find("step_timeouts[1].Q").is_some());
+    assert!(Machine::find("parts.PV").is_some());
+    assert!(Machine::find("station.part_sensor.CLK").is_some());
 }
 
 #[test]

@@ -480,3 +480,98 @@ proptest! {
         let _ = generate(&any.to_string(), &Options::default());
     }
 }
+
+#[test]
+fn the_standard_function_blocks_are_named_by_their_iec_names_without_a_declaration() {
+    let list = json!({ "variables": {
+        "start_delay": { "type": "TON" },
+        "button": { "type": "R_TRIG" },
+        "timeouts": { "type": "TP", "dims": [3] },
+        "latch": { "type": "RS" },
+        "parts": { "type": "CTUD" }
+    } });
+    let code = generate(&list.to_string(), &Options::default())
+        .unwrap()
+        .code;
+    // Only the program's struct is generated, and nothing it does not use is imported.
+    assert!(code.starts_with("// Generated"), "{code}");
+    assert!(code.contains("use plc_core::GlobalMemory;\n"), "{code}");
+    assert!(!code.contains("PlcStruct"), "{code}");
+    for field in [
+        "pub start_delay: plc_core::fb::Ton,",
+        "pub button: plc_core::fb::RTrig,",
+        "pub timeouts: [plc_core::fb::Tp; 3],",
+        "pub latch: plc_core::fb::Rs,",
+        "pub parts: plc_core::fb::Ctud,",
+    ] {
+        assert!(code.contains(field), "{field} in\n{code}");
+    }
+    // The same from a sheet.
+    let csv = "name,type,dims\r\nstart_delay,TON,\r\ntimeouts,TP,3\r\n";
+    let code = generate_csv(csv, &Options::default()).unwrap().code;
+    assert!(
+        code.contains("pub timeouts: [plc_core::fb::Tp; 3],"),
+        "{code}"
+    );
+}
+
+#[test]
+fn a_function_block_variable_has_the_rules_of_a_structured_one() {
+    one_error(
+        json!({ "variables": { "delay": { "type": "TON", "nonvolatile": true } } }),
+        &["variables.delay.nonvolatile"],
+    );
+    one_error(
+        json!({ "variables": { "delay": { "type": "TON", "initial": 5 } } }),
+        &["variables.delay.initial"],
+    );
+    // Type names are exact: the nearest standard name is suggested.
+    one_error(
+        json!({ "variables": { "delay": { "type": "Ton" } } }),
+        &["variables.delay.type", "did you mean \"TON\"?"],
+    );
+    // A list cannot declare a type of a standard block's name, in any case.
+    one_error(
+        json!({ "types": { "ctu": axis() }, "variables": { "c": { "type": "ctu" } } }),
+        &[
+            "types.ctu",
+            "standard function block of IEC 61131-3",
+            "\"CTU\"",
+        ],
+    );
+}
+
+#[test]
+fn a_structure_holding_function_blocks_imports_and_its_export_names_them() {
+    #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
+    struct Station {
+        delay: plc_core::fb::Ton,
+        edges: [plc_core::fb::FTrig; 2],
+        count: u16,
+    }
+    #[derive(GlobalMemory, Debug, Clone)]
+    struct Line {
+        station: Station,
+        parts: plc_core::fb::Ctu,
+    }
+    let json: Value = serde_json::from_str(&export_json::<Line>().unwrap()).unwrap();
+    let types: Vec<&String> = json["types"].as_object().unwrap().keys().collect();
+    assert_eq!(types, ["Station"], "standard blocks are not declared");
+    assert_eq!(
+        json["types"]["Station"]["variables"]["delay"]["type"],
+        "TON"
+    );
+    assert_eq!(
+        json["types"]["Station"]["variables"]["edges"]["type"],
+        "F_TRIG"
+    );
+    assert_eq!(json["variables"]["parts"]["type"], "CTU");
+    let code = generate(&json.to_string(), &Options::default())
+        .unwrap()
+        .code;
+    assert!(
+        code.contains("pub edges: [plc_core::fb::FTrig; 2],"),
+        "{code}"
+    );
+    assert!(code.contains("pub parts: plc_core::fb::Ctu,"), "{code}");
+}

@@ -3,7 +3,7 @@
 //! comments from descriptions, every declared property as a `#[plc(...)]` key, formatted as
 //! prettyplease formats it (short lines written directly, long ones by prettyplease).
 
-use super::validate::{Checked, Group, ListAt};
+use super::validate::{Checked, CheckedType, Group, ListAt};
 use plc_rules::IecType;
 use plc_rules::decl::Var;
 
@@ -62,12 +62,7 @@ pub fn rust_type_name(type_name: &str) -> String {
 pub fn check_type_names(checked: &Checked, struct_name: &str) -> Vec<(usize, String)> {
     let mut errors = Vec::new();
     let mut seen: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
-    for (t, ty) in checked
-        .types
-        .iter()
-        .enumerate()
-        .filter(|(_, t)| !t.duplicate)
-    {
+    for (t, ty) in checked.listed().filter(|(_, t)| !t.duplicate) {
         let rust = rust_type_name(&ty.name);
         if rust == struct_name || TAKEN.contains(&rust.as_str()) || rust.is_empty() {
             errors.push((
@@ -135,7 +130,10 @@ fn one_line(text: &str) -> String {
 
 /// The `use` line of the module: what its structs need.
 fn use_line(checked: &Checked) -> String {
-    let groups = checked.types.iter().map(|t| &t.group).chain([&checked.top]);
+    let groups = checked
+        .listed()
+        .map(|(_, t)| &t.group)
+        .chain([&checked.top]);
     let uses = |test: fn(&plc_rules::decl::KnownType) -> bool| {
         groups
             .clone()
@@ -147,7 +145,7 @@ fn use_line(checked: &Checked) -> String {
         names.push("FixedString");
     }
     names.push("GlobalMemory");
-    if !checked.types.is_empty() {
+    if checked.listed().next().is_some() {
         names.push("PlcStruct");
     }
     if uses(|k| k.iec == IecType::Ltime) {
@@ -272,6 +270,12 @@ fn field(v: &Var<ListAt>, rust_type: &str, origin: &str) -> String {
     out
 }
 
+/// The Rust name of a type: a standard function block by its path in plc-core.
+fn rust_name_of(ty: &CheckedType) -> String {
+    ty.standard
+        .map_or_else(|| rust_type_name(&ty.name), str::to_string)
+}
+
 /// The Rust type of each variable of a group: a basic type as the model writes it, a
 /// structure by its type's Rust name, in arrays as dimensioned.
 fn rust_types(group: &Group, checked: &Checked) -> Result<Vec<String>, String> {
@@ -282,7 +286,7 @@ fn rust_types(group: &Group, checked: &Checked) -> Result<Vec<String>, String> {
                 .dims
                 .iter()
                 .rev()
-                .fold(rust_type_name(&checked.types[s.ty].name), |inner, d| {
+                .fold(rust_name_of(&checked.types[s.ty]), |inner, d| {
                     format!("[{inner}; {d}]")
                 })),
             (None, Some(k)) => Ok(k.rust_type()),
@@ -356,6 +360,9 @@ pub fn emit(checked: &Checked, struct_name: &str, origin: &str) -> Result<String
     );
     for &t in &checked.order {
         let ty = &checked.types[t];
+        if ty.standard.is_some() {
+            continue;
+        }
         let kind = Kind::Structure {
             name: &ty.name,
             description: ty.description.trim(),

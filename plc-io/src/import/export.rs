@@ -50,6 +50,11 @@ fn var_json(
         (Some(name), false) => Some(name),
         _ => None,
     };
+    // A standard function block is named, not declared: the importer knows it.
+    let standard = structure.is_some_and(|name| {
+        super::standard::standard_with_members(name, v.members.iter().map(|m| m.name.as_str()))
+            .is_some()
+    });
     let ty = match (structure, v.iec_type.family()) {
         (Some(name), _) => name.clone(),
         (None, TypeFamily::String) => "string".to_string(),
@@ -58,7 +63,9 @@ fn var_json(
         (None, _) => v.iec_type.rust_name().to_string(),
     };
     o.insert("type".into(), json!(ty));
-    if let Some(name) = structure {
+    if let Some(name) = structure
+        && !standard
+    {
         type_json(name, v, types, depth)?;
     }
     if let Some(l) = &v.link {

@@ -49,6 +49,8 @@ mod emit;
 mod export;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod parse;
+#[cfg_attr(not(feature = "import"), allow(dead_code))]
+mod standard;
 #[cfg(feature = "import")]
 mod validate;
 
@@ -231,9 +233,7 @@ fn finish(
         errors.push(e);
     }
     let groups = checked
-        .types
-        .iter()
-        .enumerate()
+        .listed()
         .map(|(t, ty)| (Some(t), &ty.group))
         .chain([(None, &checked.top)]);
     for (ty, group) in groups {

@@ -82,6 +82,9 @@ pub struct CheckedType {
     pub group: Group,
     /// Whether an earlier type has the same name (in any case): checked, not generated.
     pub duplicate: bool,
+    /// For a standard function block (`TON`), the Rust type the generated code names: the
+    /// list uses it without declaring it, and it is not generated.
+    pub standard: Option<&'static str>,
 }
 
 /// A problem of a type as a whole (its name, its fields), by type index and field.
@@ -119,6 +122,14 @@ impl Checked {
             Some(t) => &self.types[t].group,
             None => &self.top,
         }
+    }
+
+    /// The types the list declares (not the standard function blocks), with their indexes.
+    pub fn listed(&self) -> impl Iterator<Item = (usize, &CheckedType)> + Clone {
+        self.types
+            .iter()
+            .enumerate()
+            .filter(|(_, t)| t.standard.is_none())
     }
 
     /// The name of the variable at `at`.
@@ -666,7 +677,18 @@ fn type_rules(t: usize, def: &TypeDef, duplicate_of: Option<&str>) -> Vec<TypePr
             message,
         })
     };
-    if let Err(e) = plc_rules::names::check_name(&def.name) {
+    if super::standard::is_standard(&def.name) {
+        problem(
+            None,
+            format!(
+                "invalid type name {:?}: it is the name of a standard function block of IEC \
+                 61131-3, which a list uses without declaring it (\"type\": \"{}\"); choose \
+                 another name",
+                def.name,
+                def.name.to_ascii_uppercase()
+            ),
+        );
+    } else if let Err(e) = plc_rules::names::check_name(&def.name) {
         problem(None, format!("invalid type name {:?}: {e}", def.name));
     } else if def.name.parse::<IecType>().is_ok() {
         // `"type": "f64"` would name the basic type, never this one.
@@ -712,6 +734,42 @@ fn type_rules(t: usize, def: &TypeDef, duplicate_of: Option<&str>) -> Vec<TypePr
         );
     }
     out
+}
+
+/// The members of a standard function block as a checked group: known to be valid (their IEC
+/// names include some a list may not declare, such as `R`), so not checked again.
+fn standard_group(ty: usize, block: &super::standard::StandardBlock) -> Group {
+    let vars = block
+        .members
+        .iter()
+        .enumerate()
+        .map(|(var, m)| {
+            let at = ListAt {
+                ty: Some(ty),
+                var,
+                field: None,
+            };
+            let known = KnownType {
+                iec: m.iec_type,
+                capacity: None,
+                dims: m.dims.iter().map(|&d| d as u64).collect(),
+            };
+            decl::Var::new(
+                Located::new(m.name.to_string(), at.clone()),
+                m.name,
+                Located::new(DeclType::Known(known), at),
+            )
+        })
+        .collect();
+    Group {
+        decl: Decl {
+            structure: true,
+            vars,
+            unaligned: false,
+        },
+        declared: block.members.len(),
+        structured: vec![None; block.members.len()],
+    }
 }
 
 /// What the walk over the types works out.
@@ -877,7 +935,14 @@ pub fn check(parsed: &Parsed, lines: Lines) -> Checked {
         }
         duplicates.push(first != t);
     }
-    let types: Vec<CheckedType> = parsed
+    // The standard function blocks come after the list's types; `"type": "TON"` names the
+    // standard one even where the list declares a type of that name (an error above).
+    let standard = super::standard::blocks();
+    for (k, b) in standard.iter().enumerate() {
+        names.index.insert(b.name, parsed.types.len() + k);
+        names.names.push(b.name);
+    }
+    let mut types: Vec<CheckedType> = parsed
         .types
         .iter()
         .zip(duplicates)
@@ -899,8 +964,17 @@ pub fn check(parsed: &Parsed, lines: Lines) -> Checked {
                 &mut warnings,
             ),
             duplicate,
+            standard: None,
         })
         .collect();
+    let first_standard = types.len();
+    types.extend(standard.iter().enumerate().map(|(k, b)| CheckedType {
+        name: b.name.to_string(),
+        description: String::new(),
+        group: standard_group(first_standard + k, b),
+        duplicate: false,
+        standard: Some(b.rust),
+    }));
     let top = read_group(None, parsed, &names, &wording, &mut errors, &mut warnings);
     let graph = walk_types(&types, &mut errors);
     for (t, ty) in types.iter().enumerate() {

@@ -45,6 +45,9 @@ pub struct Station {
     /// No description in axes.json.
     #[plc(description = "")]
     pub count: i32,
+    /// No description in axes.json.
+    #[plc(description = "")]
+    pub part_sensor: plc_core::fb::RTrig,
 }
 /// The variables of axes.json.
 #[derive(GlobalMemory, Debug, Clone)]
@@ -63,4 +66,12 @@ pub struct Machine {
     /// No description in axes.json.
     #[plc(description = "")]
     pub station: Station,
+    /// Delays the start after the door closes
+    pub start_delay: plc_core::fb::Ton,
+    /// No description in axes.json.
+    #[plc(description = "")]
+    pub step_timeouts: [plc_core::fb::Tof; 2],
+    /// No description in axes.json.
+    #[plc(description = "")]
+    pub parts: plc_core::fb::Ctu,
 }
