@@ -126,6 +126,29 @@ fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (Running, u16) {
     (server, port)
 }
 
+/// A users file in `dir` with the user `operator` (password `pw of the operator`), made by
+/// `plc opcua user add` with the password on standard input.
+fn add_user(dir: &Path) -> PathBuf {
+    let users = dir.join("users");
+    let mut add = Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["opcua", "user", "add"])
+        .arg(&users)
+        .arg("operator")
+        .stdin(Stdio::piped())
+        .spawn()
+        .expect("plc opcua user add starts");
+    use std::io::Write;
+    add.stdin
+        .take()
+        .expect("stdin")
+        .write_all(b"pw of the operator\n")
+        .expect("password written");
+    assert!(add.wait().expect("user add ends").success());
+    let text = std::fs::read_to_string(&users).expect("users file");
+    assert!(text.contains("operator:$argon2id$") && !text.contains("pw of the operator"));
+    users
+}
+
 /// A fresh directory for one test's files.
 fn test_dir(what: &str) -> PathBuf {
     let nanos = std::time::SystemTime::now()
@@ -150,25 +173,7 @@ fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_res
     let segment = format!("opcua_test_{}", std::process::id());
     let mut program = start_program(&dir, &segment, 1);
 
-    // A user who may write, the password on standard input.
-    let users = dir.join("users");
-    let mut add = Command::new(env!("CARGO_BIN_EXE_plc"))
-        .args(["opcua", "user", "add"])
-        .arg(&users)
-        .arg("operator")
-        .stdin(Stdio::piped())
-        .spawn()
-        .expect("plc opcua user add starts");
-    use std::io::Write;
-    add.stdin
-        .take()
-        .expect("stdin")
-        .write_all(b"pw of the operator\n")
-        .expect("password written");
-    assert!(add.wait().expect("user add ends").success());
-    let text = std::fs::read_to_string(&users).expect("users file");
-    assert!(text.contains("operator:$argon2id$") && !text.contains("pw of the operator"));
-
+    let users = add_user(&dir);
     let pki = dir.join("pki");
     let (_server, port) = serve(&dir, &segment, Some(&users));
     assert!(
@@ -226,15 +231,17 @@ pub struct After {
     grid: [i16; 6],
 }
 
-/// Runs an owner of `T` on `segment`, counting cycles every millisecond, until `stop`.
+/// Runs an owner of `T` on `segment`, applying writes and publishing every millisecond, until
+/// `stop`.
 fn run_owner<T: plc_core::GlobalMemory + Default + Clone + Send + 'static>(
     segment: String,
     stop: std::sync::Arc<std::sync::atomic::AtomicBool>,
 ) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {
-        let owner = plc_io::shm::SharedGlobalMemory::<T>::create(&segment).expect("owner");
-        let gm = T::default();
+        let mut owner = plc_io::shm::SharedGlobalMemory::<T>::create(&segment).expect("owner");
+        let mut gm = T::default();
         while !stop.load(std::sync::atomic::Ordering::Relaxed) {
+            owner.apply_mailbox(&mut gm);
             owner.publish(&gm).expect("publish");
             std::thread::sleep(Duration::from_millis(1));
         }
@@ -261,5 +268,36 @@ fn a_changed_declaration_rebuilds_the_namespace() {
     client(&dir, &["names", &url, &segment, "count,grid"]);
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the second owner stops");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Arrays a tool writes in parts.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct Arrays {
+    #[plc(direction = "command")]
+    row: [i16; 6],
+    #[plc(direction = "command")]
+    plane: [[i16; 3]; 2],
+}
+
+#[test]
+fn writes_with_an_index_range_set_exactly_the_selected_elements() {
+    python();
+    let dir = test_dir("ranges");
+    let segment = format!("opcua_ranges_{}", std::process::id());
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let owner = run_owner::<Arrays>(segment.clone(), stop.clone());
+    wait_for("the owner", || {
+        plc_io::shm::DynSegment::attach(&segment).is_ok()
+    });
+    let users = add_user(&dir);
+    let (_server, port) = serve(&dir, &segment, Some(&users));
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    client(
+        &dir,
+        &["ranges", &url, &segment, "operator", "pw of the operator"],
+    );
+    stop.store(true, std::sync::atomic::Ordering::Relaxed);
+    owner.join().expect("the owner stops");
     let _ = std::fs::remove_dir_all(&dir);
 }

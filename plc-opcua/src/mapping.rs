@@ -4,7 +4,8 @@
 
 use opcua::nodes::AccessLevel;
 use opcua::types::{
-    Array, DataTypeId, DataValue, DateTime, NodeId, StatusCode, Variant, VariantScalarTypeId,
+    Array, DataTypeId, DataValue, DateTime, NodeId, NumericRange, StatusCode, Variant,
+    VariantScalarTypeId,
 };
 use plc_core::{FixedString, IecType, Value, ValueError};
 use plc_io::shm::{OwnerState, ShmError, VarDescriptor};
@@ -197,6 +198,73 @@ pub fn written_elements(var: &VarDescriptor, v: &Variant) -> Result<Vec<Value>, 
         return elements.into_iter().map(duration_from).collect();
     }
     Ok(elements)
+}
+
+/// The elements a write with an index range sets, as (row-major element, value): all of them
+/// without a range; for a one-dimensional array an index (`3`) or a range (`2:5`); for an
+/// array of more dimensions one index or range per dimension (`0:1,2`), as OPC UA Part 4
+/// (NumericRange) writes them. The value holds exactly the selected elements, as an array (one
+/// element may also come as a scalar). A range past the array's end is `BadIndexRangeNoData`,
+/// one that does not fit its dimensions `BadIndexRangeInvalid`.
+pub fn written_range(
+    var: &VarDescriptor,
+    v: &Variant,
+    range: &NumericRange,
+) -> Result<Vec<(usize, Value)>, StatusCode> {
+    if range.is_none() {
+        return Ok(written_elements(var, v)?.into_iter().enumerate().collect());
+    }
+    if var.dims.is_empty() {
+        return Err(StatusCode::BadIndexRangeInvalid);
+    }
+    let selected = selected_elements(&var.dims, range)?;
+    let values: Vec<&Variant> = match v {
+        Variant::Array(a) => a.values.iter().collect(),
+        Variant::Empty => return Err(StatusCode::BadTypeMismatch),
+        scalar => vec![scalar],
+    };
+    if values.len() != selected.len() {
+        return Err(StatusCode::BadTypeMismatch);
+    }
+    selected
+        .into_iter()
+        .zip(values)
+        .map(|(e, v)| Ok((e, written_element(var, v)?)))
+        .collect()
+}
+
+/// The row-major elements an index range selects in an array of `dims`, in row-major order;
+/// checked against the dimensions before any is listed, so at most the array's elements.
+fn selected_elements(dims: &[usize], range: &NumericRange) -> Result<Vec<usize>, StatusCode> {
+    let parts: Vec<&NumericRange> = match range {
+        NumericRange::MultipleRanges(parts) => parts.iter().collect(),
+        one => vec![one],
+    };
+    if parts.len() != dims.len() {
+        return Err(StatusCode::BadIndexRangeInvalid);
+    }
+    let mut spans = Vec::with_capacity(dims.len());
+    for (part, &dim) in parts.into_iter().zip(dims) {
+        let (lo, hi) = match *part {
+            NumericRange::Index(i) => (i as usize, i as usize),
+            // Part 4: the first index of a range is below the second.
+            NumericRange::Range(lo, hi) if lo < hi => (lo as usize, hi as usize),
+            _ => return Err(StatusCode::BadIndexRangeInvalid),
+        };
+        if hi >= dim {
+            return Err(StatusCode::BadIndexRangeNoData);
+        }
+        spans.push((lo, hi));
+    }
+    // Row-major: the last dimension varies fastest.
+    let mut selected = vec![0usize];
+    for (&(lo, hi), &dim) in spans.iter().zip(dims) {
+        selected = selected
+            .into_iter()
+            .flat_map(|base| (lo..=hi).map(move |i| base * dim + i))
+            .collect();
+    }
+    Ok(selected)
 }
 
 /// One written element of an array variable (a write with an index range).

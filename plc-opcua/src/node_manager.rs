@@ -126,19 +126,7 @@ impl SegmentNodes {
         let Some(variant) = value.value.value.as_ref() else {
             return refuse("the write carries no value", StatusCode::BadTypeMismatch);
         };
-        let elements = match &value.index_range {
-            NumericRange::None => mapping::written_elements(var, variant)
-                .map(|values| values.into_iter().enumerate().collect()),
-            NumericRange::Index(i) if !var.dims.is_empty() => {
-                // One element written as a one-element array (Part 4, 7.22) or a scalar.
-                let one = match variant {
-                    opcua::types::Variant::Array(a) if a.values.len() == 1 => &a.values[0],
-                    v => v,
-                };
-                mapping::written_element(var, one).map(|v| vec![(*i as usize, v)])
-            }
-            _ => Err(StatusCode::BadIndexRangeInvalid),
-        };
+        let elements = mapping::written_range(var, variant, &value.index_range);
         let elements = match elements {
             Ok(e) => e,
             Err(status) => return refuse("the value does not fit the variable", status),

@@ -50,10 +50,14 @@ impl Writer {
         else {
             return StatusCode::BadNodeIdUnknown;
         };
-        let target = if job.elements.len() == 1 && !var.dims.is_empty() {
-            format!("{segment}.{}[{}]", node.path, job.elements[0].0)
-        } else {
-            format!("{segment}.{}", node.path)
+        // A write of part of an array (an index range) names the elements it set.
+        let target = match job.elements.as_slice() {
+            [(e, _)] if !var.dims.is_empty() => format!("{segment}.{}[{e}]", node.path),
+            part if part.len() < var.elements() => {
+                let elements: Vec<String> = part.iter().map(|(e, _)| e.to_string()).collect();
+                format!("{segment}.{} (elements {})", node.path, elements.join(", "))
+            }
+            _ => format!("{segment}.{}", node.path),
         };
         let batch: Vec<(&str, usize, Value)> = job
             .elements

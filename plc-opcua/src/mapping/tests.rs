@@ -299,3 +299,68 @@ fn durations_are_milliseconds_both_ways() {
         Err(StatusCode::BadTypeMismatch)
     );
 }
+
+#[test]
+fn a_write_with_an_index_range_sets_the_selected_elements_in_row_major_order() {
+    let list = var(
+        "v",
+        IecType::Int,
+        &[6],
+        Access::ReadWrite,
+        Direction::Command,
+    );
+    let grid = var(
+        "g",
+        IecType::Int,
+        &[2, 3],
+        Access::ReadWrite,
+        Direction::Command,
+    );
+    let ints = |v: &[i16]| Variant::from(v.to_vec());
+    let range = |text: &str| text.parse::<NumericRange>().unwrap();
+    let set = |var: &VarDescriptor, v: &Variant, r: &str| written_range(var, v, &range(r));
+    let at = |pairs: &[(usize, i64)]| {
+        Ok(pairs
+            .iter()
+            .map(|&(e, v)| (e, Value::Int(v)))
+            .collect::<Vec<_>>())
+    };
+    assert_eq!(
+        set(&list, &ints(&[7, 8, 9]), "2:4"),
+        at(&[(2, 7), (3, 8), (4, 9)])
+    );
+    assert_eq!(set(&list, &Variant::Int16(5), "5"), at(&[(5, 5)]));
+    assert_eq!(set(&list, &ints(&[5]), "0"), at(&[(0, 5)]));
+    // Row 1, columns 0 and 1 of a 2 x 3 array: elements 3 and 4.
+    assert_eq!(set(&grid, &ints(&[1, 2]), "1,0:1"), at(&[(3, 1), (4, 2)]));
+    assert_eq!(
+        set(&grid, &ints(&[1, 2, 3, 4]), "0:1,1:2"),
+        at(&[(1, 1), (2, 2), (4, 3), (5, 4)])
+    );
+    let refused = |var: &VarDescriptor, v: &Variant, r: &str| set(var, v, r).unwrap_err();
+    assert_eq!(
+        refused(&list, &ints(&[1, 2]), "4:6"),
+        StatusCode::BadIndexRangeNoData
+    );
+    assert_eq!(
+        refused(&list, &ints(&[1, 2]), "2:4"),
+        StatusCode::BadTypeMismatch
+    );
+    assert_eq!(
+        refused(&grid, &ints(&[1]), "1"),
+        StatusCode::BadIndexRangeInvalid
+    );
+    assert_eq!(
+        refused(&grid, &ints(&[1]), "2,0"),
+        StatusCode::BadIndexRangeNoData
+    );
+    assert_eq!(
+        refused(&scalar(IecType::Int), &Variant::Int16(1), "0"),
+        StatusCode::BadIndexRangeInvalid
+    );
+    // Without a range, the whole array.
+    assert_eq!(
+        written_range(&list, &ints(&[1, 2, 3, 4, 5, 6]), &NumericRange::None).map(|v| v.len()),
+        Ok(6)
+    );
+}

@@ -10,6 +10,9 @@
         declaration), each read Good, an array with its dimensions
     opcua_client.py values URL SEGMENT good|bad
         every variable's status: Good, or BadNoCommunication (the program is gone)
+    opcua_client.py ranges URL SEGMENT USER PASSWORD
+        writes with index ranges to `row` (INT[6]) and `plane` (INT[2,3]) set exactly the
+        selected elements; a range past the end or of the wrong rank is refused
 
 Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the first that fails.
 """
@@ -146,6 +149,14 @@ async def status_of(client, node_id, attribute=ua.AttributeIds.Value):
 async def write_status(client, node_id, variant):
     params = ua.WriteParameters(NodesToWrite=[ua.WriteValue(
         NodeId=node_id, AttributeId=ua.AttributeIds.Value, Value=ua.DataValue(variant))])
+    return (await client.uaclient.write(params))[0]
+
+
+async def write_range(client, node_id, values, index_range):
+    variant = ua.Variant(values, ua.VariantType.Int16)
+    params = ua.WriteParameters(NodesToWrite=[ua.WriteValue(
+        NodeId=node_id, AttributeId=ua.AttributeIds.Value, IndexRange=index_range,
+        Value=ua.DataValue(variant))])
     return (await client.uaclient.write(params))[0]
 
 
@@ -426,6 +437,41 @@ async def run_names(url, segment, expected):
         ok(f"the namespace holds {names}, every value Good")
 
 
+async def run_ranges(url, segment, user, password):
+    client = Client(url)
+    client.set_user(user)
+    client.set_password(password)
+    async with client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        row = client.get_node(ua.NodeId("row", ns))
+        plane = client.get_node(ua.NodeId("plane", ns))
+
+        async def becomes(node, want, what):
+            deadline = time.time() + 5
+            while (got := list(await node.read_value())) != want:
+                check(time.time() < deadline, f"{what}: expected {want}, still {got}")
+                await asyncio.sleep(0.02)
+            ok(f"{what}: {want}")
+
+        expect_status(await write_range(client, row.nodeid, [7, 8, 9], "2:4"), "Good",
+                      "write row[2:4]")
+        await becomes(row, [0, 0, 7, 8, 9, 0], "row after writing elements 2 to 4")
+        expect_status(await write_range(client, row.nodeid, [5], "5"), "Good", "write row[5]")
+        await becomes(row, [0, 0, 7, 8, 9, 5], "row after writing element 5")
+        # Row 1, columns 0 and 1: row-major elements 3 and 4.
+        expect_status(await write_range(client, plane.nodeid, [1, 2], "1,0:1"), "Good",
+                      "write plane[1,0:1]")
+        await becomes(plane, [[0, 0, 0], [1, 2, 0]], "plane after writing [1,0:1]")
+        for node, values, index_range, expected, what in [
+            (row, [1, 2], "5:6", "BadIndexRangeNoData", "a range past the end"),
+            (row, [1, 2], "1:3", "BadTypeMismatch", "two values for three elements"),
+            (plane, [1], "1", "BadIndexRangeInvalid", "one index for two dimensions"),
+        ]:
+            expect_status(await write_range(client, node.nodeid, values, index_range), expected,
+                          f"write {what} ({index_range})")
+        await becomes(row, [0, 0, 7, 8, 9, 5], "row unchanged by the refused writes")
+
+
 def main():
     try:
         if sys.argv[1] == "check":
@@ -434,6 +480,8 @@ def main():
             asyncio.run(run_names(*sys.argv[2:5]))
         elif sys.argv[1] == "values":
             asyncio.run(run_values(*sys.argv[2:5]))
+        elif sys.argv[1] == "ranges":
+            asyncio.run(run_ranges(*sys.argv[2:6]))
         else:
             raise Failed(f"unknown command {sys.argv[1]}")
     except Failed as e:
