@@ -132,6 +132,8 @@ fn four_processes_times_ten_thousand_writes_arrive_once_and_in_order() {
             }
             next[r.index] = v + 1;
         });
+        // As a program's cycle does: its writers hear "applied" once the image holds it.
+        owner.publish(&gm).unwrap();
         std::thread::sleep(Duration::from_micros(200));
     }
     for c in &mut children {

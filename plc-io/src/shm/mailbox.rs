@@ -245,7 +245,8 @@ pub(crate) struct Inbox {
     pub rx: Mutex<Receiver<Batch>>,
     pub counters: Arc<Counters>,
     /// Requests applied and not yet published: their writers hear "applied" once a reader
-    /// can see the value (after the next publish), so a tool's write-then-read holds.
+    /// can see the value (after the next publish), so a tool's write-then-read holds; an
+    /// owner that does not publish answers them at its next apply.
     pub unpublished: RefCell<Vec<(Arc<Conn>, u64)>>,
 }
 
@@ -266,6 +267,7 @@ impl Inbox {
         let Ok(rx) = self.rx.try_lock() else {
             return 0;
         };
+        self.answer_applied();
         let mut applied = 0;
         for _ in 0..PER_CYCLE {
             let batch = match rx.try_recv() {
@@ -291,8 +293,9 @@ impl Inbox {
         applied
     }
 
-    /// Answers "applied" to the writers whose requests the image just published holds.
-    pub fn published(&self) {
+    /// Answers "applied" to the writers whose requests were applied since the last answer
+    /// (called after a publish: the image holds them).
+    pub fn answer_applied(&self) {
         for (conn, id) in self.unpublished.borrow_mut().drain(..) {
             conn.answer(id, Code::Applied, 0, String::new());
         }

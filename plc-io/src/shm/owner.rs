@@ -83,9 +83,13 @@ macro_rules! segment_accessors {
 ///
 /// let reader = SharedGlobalMemory::<Gm>::attach(&name)?; // usually another process
 /// assert_eq!(reader.snapshot()?.count, 7);
-/// // A write waits for the owner's next cycle: here another thread is the cycle.
+/// // A write waits for the owner's next cycle, which applies it and publishes the image that
+/// // holds it: here another thread is the cycle.
 /// std::thread::scope(|s| {
-///     s.spawn(|| while owner.apply_mailbox(&mut gm) == 0 {});
+///     s.spawn(|| {
+///         while owner.apply_mailbox(&mut gm) == 0 {}
+///         owner.publish(&gm)
+///     });
 ///     reader.write("setpoint", plc_core::Value::Real(2.5))
 /// })?;
 /// assert_eq!(gm.setpoint, 2.5);
@@ -223,12 +227,14 @@ impl<T: GlobalMemory> ShmOwner<T> {
         seq.store(s.wrapping_add(2), Ordering::Release);
         self.seq.set(s.wrapping_add(2));
         base.store(S_HEARTBEAT_NS, now_ns());
-        self.inbox.published();
+        self.inbox.answer_applied();
         Ok(())
     }
 
     /// Applies the writes received since the last call to `gm`, in order, each request all
-    /// or none, and answers their writers. Returns how many writes were applied. The socket
+    /// or none, and answers their writers: a refusal at once, "applied" after the next
+    /// [`publish`](Self::publish) (so a tool that reads after its write returned sees it), or
+    /// at the next call if the owner did not publish. Returns how many writes were applied. The socket
     /// server checked each one against `T`'s declaration already (writable from outside,
     /// element, value); `set` decides last.
     pub fn apply_mailbox(&mut self, gm: &mut T) -> usize {
@@ -377,7 +383,7 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         }
         // Writes applied and never published are answered as applied (the program had them);
         // writes received and never applied are answered too: their writers need not wait.
-        self.inbox.published();
+        self.inbox.answer_applied();
         if let Ok(rx) = self.inbox.rx.lock() {
             for _ in 0..QUEUE {
                 let Ok(batch) = rx.try_recv() else { break };
