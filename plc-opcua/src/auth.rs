@@ -4,7 +4,7 @@
 //! password is looked at.
 
 use crate::mapping;
-use crate::users::Users;
+use crate::users_file::UsersFile;
 use opcua::crypto::SecurityPolicy;
 use opcua::nodes::AccessLevel;
 use opcua::server::ServerEndpoint;
@@ -25,12 +25,12 @@ const POLICY_USER_NAME: &str = "userpass_rsa_oaep";
 
 /// The server's authenticator.
 pub struct PlcAuth {
-    users: Arc<Users>,
+    users: Arc<UsersFile>,
 }
 
 impl PlcAuth {
-    /// An authenticator for these users.
-    pub fn new(users: Arc<Users>) -> PlcAuth {
+    /// An authenticator for the users of this file (as it is when each session signs in).
+    pub fn new(users: Arc<UsersFile>) -> PlcAuth {
         PlcAuth { users }
     }
 }
@@ -47,7 +47,7 @@ impl AuthManager for PlcAuth {
         username: &str,
         password: &Password,
     ) -> Result<UserToken, Error> {
-        let users = self.users.clone();
+        let users = self.users.current();
         let name = username.to_string();
         let password = password.get().to_string();
         // argon2 takes tens of milliseconds on purpose: not on the async threads.
@@ -89,7 +89,7 @@ impl AuthManager for PlcAuth {
             issuer_endpoint_url: UAString::null(),
             security_policy_uri: UAString::null(),
         }];
-        if !self.users.is_empty() {
+        if !self.users.current().is_empty() {
             // On every endpoint, None included, the password travels encrypted with the
             // server's certificate under Basic256Sha256.
             policies.push(UserTokenPolicy {
@@ -104,9 +104,10 @@ impl AuthManager for PlcAuth {
     }
 }
 
-/// Whether the session of `token` may write: a user of the users file, not an anonymous one.
-pub fn may_write(users: &Users, token: &UserToken) -> bool {
-    !token.is_anonymous() && users.contains(&token.0)
+/// Whether the session of `token` may write: a user of the users file as it is now (one
+/// removed since the session signed in no longer may), not an anonymous one.
+pub fn may_write(users: &UsersFile, token: &UserToken) -> bool {
+    !token.is_anonymous() && users.current().contains(&token.0)
 }
 
 /// Decodes user name tokens ahead of the generated decoder and refuses one whose password is

@@ -26,7 +26,9 @@
 //! Writes are refused with BadNotWritable (input, status, read-only), BadUserAccessDenied
 //! (anonymous session), BadOutOfRange (out of range, NaN, text too long) and BadTypeMismatch
 //! (another kind, an array of other dimensions); an array written whole is applied in one
-//! cycle. Every write is logged with its user and the old and new value.
+//! cycle, and so is a part of one written with an index range (`2:4`, `1,0:2`, OPC UA's
+//! NumericRange; BadIndexRangeNoData past its end). Every write is logged with its user and the
+//! old and new value.
 //!
 //! # Security
 //!
@@ -35,7 +37,9 @@
 //! the server's certificate, on every endpoint: one in plain text is refused. The server makes
 //! a self-signed certificate in its certificate store on first start; a client's certificate
 //! must be in the store's `trusted/` directory for Sign and SignAndEncrypt (a refused one is
-//! put in `rejected/`: move it to `trusted/` to allow that client).
+//! put in `rejected/`: move it to `trusted/` to allow that client). The users file is read
+//! again when it changes (within a second): a user added may sign in, a user removed may no
+//! longer write, without a restart; a broken file lets nobody write until it is fixed.
 
 #![deny(missing_docs)]
 
@@ -47,9 +51,11 @@ pub mod sampler;
 pub mod server;
 pub mod shared;
 pub mod users;
+pub mod users_file;
 pub mod writer;
 
 /// async-opcua, as this crate uses it (its types appear in this crate's API).
 pub use opcua;
 pub use server::{ServeError, ServeOptions, serve};
 pub use users::{Users, UsersError, add_user};
+pub use users_file::UsersFile;

@@ -5,7 +5,7 @@
 use crate::address::Layout;
 use crate::mapping;
 use crate::shared::{ReadJob, Shared, WriteJob};
-use crate::users::Users;
+use crate::users_file::UsersFile;
 use crate::writer::log_refusal;
 use opcua::server::CreateMonitoredItem;
 use opcua::server::address_space::AddressSpace;
@@ -29,7 +29,7 @@ pub type SegmentManager = InMemoryNodeManager<SegmentNodes>;
 /// The part of a segment's node manager that plc-opcua writes.
 pub struct SegmentNodes {
     shared: Arc<Shared>,
-    users: Arc<Users>,
+    users: Arc<UsersFile>,
     namespace: NamespaceMetadata,
 }
 
@@ -39,7 +39,7 @@ pub fn builder(
     segment: String,
     first: plc_io::shm::LayoutDescriptor,
     period: Duration,
-    users: Arc<Users>,
+    users: Arc<UsersFile>,
     make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,
 ) -> impl NodeManagerBuilder {
     InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {

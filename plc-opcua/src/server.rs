@@ -5,7 +5,7 @@ use crate::auth::{PlcAuth, RefusePlainTextPasswords};
 use crate::node_manager::{self, SegmentManager};
 use crate::sampler::Sampler;
 use crate::shared::Shared;
-use crate::users::Users;
+use crate::users_file::UsersFile;
 use crate::writer::Writer;
 use opcua::crypto::SecurityPolicy;
 use opcua::server::{ANONYMOUS_USER_TOKEN_ID, ServerBuilder, ServerEndpoint};
@@ -66,10 +66,8 @@ pub fn serve(options: &ServeOptions) -> Result<(), ServeError> {
     if options.segments.is_empty() {
         return Err(ServeError("name at least one segment to serve".into()));
     }
-    let users = Arc::new(match &options.users {
-        Some(path) => Users::load(path).map_err(|e| ServeError(e.to_string()))?,
-        None => Users::default(),
-    });
+    let users =
+        Arc::new(UsersFile::open(options.users.as_deref()).map_err(|e| ServeError(e.to_string()))?);
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()
@@ -78,7 +76,7 @@ pub fn serve(options: &ServeOptions) -> Result<(), ServeError> {
     runtime.block_on(run(options, users))
 }
 
-async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError> {
+async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeError> {
     prepare_private_dir(&options.pki)?;
     let mut builder = configure(options, users.clone())?;
     let mut pending = Vec::new();
@@ -165,7 +163,7 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
         options.host,
         options.port,
         options.segments.join(", "),
-        users.len(),
+        users.current().len(),
         options.pki.display()
     );
     let cancel = handle.clone();
@@ -188,7 +186,7 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
 }
 
 /// The server's endpoints, certificate store, users and decoding rules.
-fn configure(options: &ServeOptions, users: Arc<Users>) -> Result<ServerBuilder, ServeError> {
+fn configure(options: &ServeOptions, users: Arc<UsersFile>) -> Result<ServerBuilder, ServeError> {
     let anonymous = [ANONYMOUS_USER_TOKEN_ID.to_string()];
     let mut none = ServerEndpoint::new_none("/", &anonymous);
     // A user name token on the None endpoint is encrypted under Basic256Sha256 (RSA-OAEP).
