@@ -18,7 +18,9 @@ use opcua::server::node_manager::{
     WriteNode,
 };
 use opcua::sync::RwLock;
-use opcua::types::{AttributeId, DataValue, NumericRange, StatusCode, TimestampsToReturn};
+use opcua::types::{
+    AttributeId, DataValue, MonitoringMode, NumericRange, StatusCode, TimestampsToReturn,
+};
 use std::sync::Arc;
 use std::time::Duration;
 use tokio::sync::oneshot;
@@ -210,14 +212,31 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
             }
             item.set_initial_value(value);
             item.set_status(StatusCode::Good);
-            self.shared.monitor(&item.item_to_monitor().node_id);
+            let sampling = item.monitoring_mode() != MonitoringMode::Disabled;
+            self.shared
+                .monitor(item.handle(), &item.item_to_monitor().node_id, sampling);
+        }
+    }
+
+    async fn set_monitoring_mode(
+        &self,
+        _context: &RequestContext,
+        mode: MonitoringMode,
+        items: &[&MonitoredItemRef],
+    ) {
+        // A Disabled item is not sampled (async-opcua also stops its notifications).
+        for item in items {
+            if item.attribute() == AttributeId::Value {
+                self.shared
+                    .set_sampling(item.handle(), mode != MonitoringMode::Disabled);
+            }
         }
     }
 
     async fn delete_monitored_items(&self, _context: &RequestContext, items: &[&MonitoredItemRef]) {
         for item in items {
             if item.attribute() == AttributeId::Value {
-                self.shared.unmonitor(item.node_id());
+                self.shared.unmonitor(item.handle());
             }
         }
     }

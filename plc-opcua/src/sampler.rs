@@ -113,8 +113,11 @@ impl Sampler {
         }
         let status = seg.status();
         let monitored = self.shared.monitored();
+        let refresh = self.shared.take_refresh();
         if monitored.is_empty()
-            || (self.last_cycle == Some(status.cycle_count) && state == self.last_state)
+            || (refresh.is_empty()
+                && self.last_cycle == Some(status.cycle_count)
+                && state == self.last_state)
         {
             self.last_state = state;
             return;
@@ -143,7 +146,7 @@ impl Sampler {
                 img.get(var.offset..var.offset + var.size)
                     .map(<[u8]>::to_vec)
             };
-            state_changed || bytes(previous) != bytes(&image)
+            state_changed || bytes(previous) != bytes(&image) || refresh.contains(id)
         });
         self.subscriptions.maybe_notify(
             changed.map(|id| (id, AttributeId::Value)),

@@ -3,6 +3,7 @@
 //! queues from one to the other.
 
 use crate::address::Layout;
+use opcua::server::MonitoredItemHandle;
 use opcua::types::{DataValue, NodeId, NumericRange, StatusCode, TimestampsToReturn};
 use plc_core::Value;
 use std::collections::HashMap;
@@ -32,12 +33,29 @@ pub struct WriteJob {
     pub reply: oneshot::Sender<StatusCode>,
 }
 
-/// The nodes that have monitored items, with a count per node, and the same set as a list the
-/// sampler takes without holding the lock.
+/// The nodes that have monitored items being sampled (not Disabled), with a count per node,
+/// and the same set as a list the sampler takes without holding the lock; and the nodes whose
+/// items were enabled again, to be given their current value at the next sample.
 #[derive(Default)]
 struct Monitored {
     counts: HashMap<NodeId, usize>,
     list: Arc<Vec<NodeId>>,
+    enabled: HashMap<MonitoredItemHandle, (NodeId, bool)>,
+    refresh: Vec<NodeId>,
+}
+
+impl Monitored {
+    fn count(&mut self, node: &NodeId, up: bool) {
+        if up {
+            *self.counts.entry(node.clone()).or_default() += 1;
+        } else if let Some(n) = self.counts.get_mut(node) {
+            *n -= 1;
+            if *n == 0 {
+                self.counts.remove(node);
+            }
+        }
+        self.list = Arc::new(self.counts.keys().cloned().collect());
+    }
 }
 
 /// State shared between a segment's node manager and its threads.
@@ -86,23 +104,48 @@ impl Shared {
         *self.layout.write().unwrap_or_else(PoisonError::into_inner) = layout;
     }
 
-    /// Counts a monitored item on `node`.
-    pub fn monitor(&self, node: &NodeId) {
+    /// Records monitored item `item` on `node`, sampled unless `sampling` is false (created
+    /// Disabled).
+    pub fn monitor(&self, item: MonitoredItemHandle, node: &NodeId, sampling: bool) {
         let mut m = lock(&self.monitored);
-        *m.counts.entry(node.clone()).or_default() += 1;
-        m.list = Arc::new(m.counts.keys().cloned().collect());
+        if let Some((old, was)) = m.enabled.insert(item, (node.clone(), sampling))
+            && was
+        {
+            m.count(&old, false);
+        }
+        if sampling {
+            m.count(node, true);
+        }
     }
 
-    /// Forgets one monitored item on `node`.
-    pub fn unmonitor(&self, node: &NodeId) {
+    /// Sets whether item `item` is sampled (its monitoring mode is not Disabled); one enabled
+    /// again gets its node's current value at the next sample.
+    pub fn set_sampling(&self, item: MonitoredItemHandle, sampling: bool) {
         let mut m = lock(&self.monitored);
-        if let Some(n) = m.counts.get_mut(node) {
-            *n -= 1;
-            if *n == 0 {
-                m.counts.remove(node);
-            }
-            m.list = Arc::new(m.counts.keys().cloned().collect());
+        let Some((node, was)) = m.enabled.get(&item).cloned() else {
+            return;
+        };
+        if was == sampling {
+            return;
         }
+        m.enabled.insert(item, (node.clone(), sampling));
+        m.count(&node, sampling);
+        if sampling {
+            m.refresh.push(node);
+        }
+    }
+
+    /// Forgets monitored item `item`.
+    pub fn unmonitor(&self, item: MonitoredItemHandle) {
+        let mut m = lock(&self.monitored);
+        if let Some((node, true)) = m.enabled.remove(&item) {
+            m.count(&node, false);
+        }
+    }
+
+    /// The nodes to give their current value whether it changed or not (items enabled again).
+    pub fn take_refresh(&self) -> Vec<NodeId> {
+        std::mem::take(&mut lock(&self.monitored).refresh)
     }
 
     /// The monitored nodes now.

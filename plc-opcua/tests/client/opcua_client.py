@@ -12,7 +12,8 @@
         every variable's status: Good, or BadNoCommunication (the program is gone)
     opcua_client.py ranges URL SEGMENT USER PASSWORD
         writes with index ranges to `row` (INT[6]) and `plane` (INT[2,3]) set exactly the
-        selected elements; a range past the end or of the wrong rank is refused
+        selected elements; a range past the end or of the wrong rank is refused; a change made
+        while a monitored item is Disabled is reported once it is enabled again
 
 Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the first that fails.
 """
@@ -255,10 +256,20 @@ async def subscription(client, node):
           f"publishing interval revised to {sub.parameters.RequestedPublishingInterval} ms")
     await sub.subscribe_data_change(node, sampling_interval=1)
     await asyncio.sleep(2.0)
-    await sub.delete()
     distinct = len(set(counter.values))
     check(distinct >= 20, f"{distinct} changes of {node.nodeid.Identifier} in 2 s")
     ok(f"subscription to {node.nodeid.Identifier}: {distinct} changes in 2 s (publishing 10 ms)")
+    # Disabled: nothing more (after what was on its way), though the value goes on changing.
+    await sub.set_monitoring_mode(ua.MonitoringMode.Disabled)
+    await asyncio.sleep(0.2)
+    counter.values.clear()
+    await asyncio.sleep(0.5)
+    check(not counter.values, f"{len(counter.values)} notifications while Disabled")
+    await sub.set_monitoring_mode(ua.MonitoringMode.Reporting)
+    await asyncio.sleep(0.5)
+    check(len(counter.values) >= 5, f"{len(counter.values)} notifications once Reporting again")
+    ok("no notifications while the item is Disabled, again once it is Reporting")
+    await sub.delete()
 
 
 def plain_text_policy(token_type):
@@ -470,6 +481,32 @@ async def run_ranges(url, segment, user, password):
             expect_status(await write_range(client, node.nodeid, values, index_range), expected,
                           f"write {what} ({index_range})")
         await becomes(row, [0, 0, 7, 8, 9, 5], "row unchanged by the refused writes")
+
+        # A value that changed while its item was Disabled is reported once it is enabled again,
+        # also while another item keeps sampling the same node.
+        other = await client.create_subscription(10, Counter())
+        await other.subscribe_data_change(row, sampling_interval=1)
+        counter = Counter()
+        sub = await client.create_subscription(10, counter)
+        await sub.subscribe_data_change(row, sampling_interval=1)
+        await asyncio.sleep(0.3)
+        check(counter.values and list(counter.values[-1]) == [0, 0, 7, 8, 9, 5],
+              f"the first notification of row: {counter.values}")
+        await sub.set_monitoring_mode(ua.MonitoringMode.Disabled)
+        await asyncio.sleep(0.1)
+        counter.values.clear()
+        expect_status(await write_range(client, row.nodeid, [1], "0"), "Good", "write row[0]")
+        await asyncio.sleep(0.3)
+        check(not counter.values, f"notified while Disabled: {counter.values}")
+        await sub.set_monitoring_mode(ua.MonitoringMode.Reporting)
+        deadline = time.time() + 2
+        while not counter.values:
+            check(time.time() < deadline, "no notification of row once Reporting again")
+            await asyncio.sleep(0.02)
+        check(list(counter.values[-1]) == [1, 0, 7, 8, 9, 5], f"row once enabled: {counter.values}")
+        ok("a change made while the item was Disabled is reported once it is enabled")
+        await sub.delete()
+        await other.delete()
 
 
 def main():
