@@ -2,6 +2,9 @@
 //! as the control program (`PLC_TEST_ROLE=owner`), and each test drives the `plc` binary.
 
 use plc_core::{FixedString, GlobalMemory, Time};
+mod common;
+
+use common::{plc, stderr, stdout, terminate, wait_until};
 use plc_io::Runtime;
 use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
@@ -61,50 +64,16 @@ impl Owner {
             .spawn()
             .unwrap();
         let owner = Owner { child, segment };
-        let start = Instant::now();
-        while !plc(&["get", &owner.segment, "counter"]).status.success() {
-            assert!(
-                start.elapsed() < Duration::from_secs(20),
-                "the owner did not start"
-            );
-            std::thread::sleep(Duration::from_millis(20));
-        }
+        wait_until("the owner to start", || {
+            plc(&["get", &owner.segment, "counter"]).status.success()
+        });
         owner
     }
 }
 
 impl Drop for Owner {
     fn drop(&mut self) {
-        // SIGTERM: the runtime stops cleanly and removes its segment.
-        // SAFETY: signalling a child we spawned.
-        unsafe { libc::kill(self.child.id() as i32, libc::SIGTERM) };
-        let _ = self.child.wait();
-    }
-}
-
-fn plc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_plc"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn wait_until(what: &str, mut f: impl FnMut() -> bool) {
-    let start = Instant::now();
-    while !f() {
-        assert!(
-            start.elapsed() < Duration::from_secs(10),
-            "timed out waiting for {what}"
-        );
-        std::thread::sleep(Duration::from_millis(20));
+        terminate(&mut self.child);
     }
 }
 

@@ -3,10 +3,13 @@
 //! across a restart and across an edit of the declaration.
 
 use plc_core::{GlobalMemory, PlcStruct};
+mod common;
+
+use common::{plc, stderr, stdout, terminate, wait_until};
 use plc_io::Runtime;
 use std::path::PathBuf;
 use std::process::{Child, Command, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
 pub struct Axis {
@@ -114,44 +117,14 @@ impl Owner {
 
     /// Stops it cleanly (SIGTERM: the final retain save, the segment removed).
     fn stop(mut self) {
-        // SAFETY: signalling a child we spawned.
-        unsafe { libc::kill(self.child.id() as i32, libc::SIGTERM) };
-        assert!(self.child.wait().unwrap().success());
+        assert!(terminate(&mut self.child), "the owner stopped cleanly");
         std::mem::forget(self);
     }
 }
 
 impl Drop for Owner {
     fn drop(&mut self) {
-        // SAFETY: signalling a child we spawned.
-        unsafe { libc::kill(self.child.id() as i32, libc::SIGTERM) };
-        let _ = self.child.wait();
-    }
-}
-
-fn plc(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_plc"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn wait_until(what: &str, mut f: impl FnMut() -> bool) {
-    let start = Instant::now();
-    while !f() {
-        assert!(
-            start.elapsed() < Duration::from_secs(20),
-            "timed out waiting for {what}"
-        );
-        std::thread::sleep(Duration::from_millis(20));
+        terminate(&mut self.child);
     }
 }
 
