@@ -23,26 +23,57 @@ pub struct Block {
 
 /// The figures of `times`, cycles meant to start every `period`.
 ///
-/// Both loops measured follow a late cycle at once and time the next from there (no burst of
-/// catch-up cycles), so after an overrun the grid `t0 + k * T` is anchored again at the late
-/// cycle's start: that cycle's lateness is counted once, not again in every later cycle.
+/// The grid's origin `t0` is the loop's own schedule, which only the loop knows; since a sleep
+/// never returns early, no cycle starts before it is due, so `t0` is taken as the latest origin
+/// no cycle starts before: the smallest `start_k - k * T`. Both loops measured follow a late
+/// cycle at once and time the next from there (no burst of catch-up cycles), so after an
+/// overrun (a cycle that ended after the next was due) the grid starts again at the late
+/// cycle: its lateness is counted once, against the old grid, and not again in every later
+/// cycle.
 pub fn analyse(times: &[CycleTimes], period: Duration) -> Block {
-    let mut deviations = Vec::with_capacity(times.len());
-    let mut overruns = 0;
-    let mut anchor = times.first().map(|t| t.start);
-    let mut k = 0u32;
-    let mut previous_end: Option<Instant> = None;
-    for t in times {
-        let Some(t0) = anchor else { break };
-        let due = t0 + period * k;
-        deviations.push(signed_us(t.start, due));
+    let Some(base) = times.first().map(|t| t.start) else {
+        return Block {
+            p50: f64::NAN,
+            p99: f64::NAN,
+            max: f64::NAN,
+            overruns: 0,
+            own: f64::NAN,
+            exchange: f64::NAN,
+        };
+    };
+    // In whole nanoseconds, so the grid's sums are exact.
+    let t = i64::try_from(period.as_nanos()).unwrap_or(i64::MAX);
+    let start: Vec<i64> = times.iter().map(|c| signed_ns(c.start, base)).collect();
+    let end: Vec<i64> = times.iter().map(|c| signed_ns(c.end, base)).collect();
+    // Where the grid starts again: found against a grid anchored at each run's first start,
+    // which is the loop's schedule to within one wake-up's latency.
+    let mut runs = vec![0];
+    let (mut anchor, mut k) = (0, 0);
+    for i in 1..times.len() {
         k += 1;
-        if previous_end.is_some_and(|end| end >= due) {
-            overruns += 1;
-            anchor = Some(t.start);
-            k = 1;
+        if end[i - 1] >= anchor + k * t {
+            runs.push(i);
+            (anchor, k) = (start[i], 0);
         }
-        previous_end = Some(t.end);
+    }
+    runs.push(times.len());
+    let mut deviations = Vec::with_capacity(times.len());
+    let mut previous: Option<(i64, usize)> = None;
+    for run in runs.windows(2) {
+        let (first, past) = (run[0], run[1]);
+        let steps = |i: usize, from: usize| (i - from) as i64 * t;
+        let origin = (first..past)
+            .map(|i| start[i] - steps(i, first))
+            .min()
+            .unwrap_or(0);
+        for i in first..past {
+            let due = match previous {
+                Some((o, f)) if i == first => o + steps(i, f),
+                _ => origin + steps(i, first),
+            };
+            deviations.push((start[i] - due) as f64 / 1e3);
+        }
+        previous = Some((origin, first));
     }
     let us = |d: Duration| d.as_secs_f64() * 1e6;
     let own: Vec<f64> = times.iter().map(|t| us(t.framework())).collect();
@@ -51,19 +82,17 @@ pub fn analyse(times: &[CycleTimes], period: Duration) -> Block {
         p50: percentile(&deviations, 50.0),
         p99: percentile(&deviations, 99.0),
         max: percentile(&deviations, 100.0),
-        overruns,
+        overruns: runs.len() - 2,
         own: percentile(&own, 50.0),
         exchange: percentile(&exchange, 50.0),
     }
 }
 
-/// `a - b` in microseconds, negative when `a` is earlier.
-fn signed_us(a: Instant, b: Instant) -> f64 {
-    if a >= b {
-        (a - b).as_secs_f64() * 1e6
-    } else {
-        -((b - a).as_secs_f64() * 1e6)
-    }
+/// `a - b` in nanoseconds, negative when `a` is earlier (a block lasts seconds, far from
+/// the 292 years an `i64` holds).
+fn signed_ns(a: Instant, b: Instant) -> i64 {
+    let ns = |d: Duration| i64::try_from(d.as_nanos()).unwrap_or(i64::MAX);
+    if a >= b { ns(a - b) } else { -ns(b - a) }
 }
 
 /// The `p`-th percentile of `values` (nearest rank); NaN when there are none.
@@ -111,6 +140,19 @@ mod tests {
     }
 
     #[test]
+    fn a_late_first_cycle_does_not_set_the_grid() {
+        let t0 = Instant::now();
+        // The first cycle woke 20 us late, the others 5 us: the grid is the earliest one
+        // no cycle starts before.
+        let times: Vec<_> = [20, 1_005, 2_005, 3_005]
+            .into_iter()
+            .map(|s| cycle(t0, s, 30))
+            .collect();
+        let b = analyse(&times, Duration::from_millis(1));
+        assert_eq!((b.p50, b.max), (0.0, 15.0));
+    }
+
+    #[test]
     fn an_overrun_is_counted_once_and_the_grid_follows_the_late_cycle() {
         let t0 = Instant::now();
         // The second cycle runs 1.5 ms, so the third starts 500 us late and the fourth is due
@@ -122,8 +164,7 @@ mod tests {
             cycle(t0, 3_500, 30),
         ];
         let b = analyse(&times, Duration::from_millis(1));
-        assert_eq!((b.max, b.overruns), (500.0, 1));
-        assert_eq!(percentile(&[0.0, 0.0, 500.0, 0.0], 50.0), 0.0);
+        assert_eq!((b.p50, b.max, b.overruns), (0.0, 500.0, 1));
     }
 
     #[test]
@@ -138,5 +179,6 @@ mod tests {
             (50.0, 99.0, 100.0)
         );
         assert!(percentile(&[], 50.0).is_nan());
+        assert!(analyse(&[], Duration::from_millis(1)).p99.is_nan());
     }
 }
