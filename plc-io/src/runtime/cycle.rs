@@ -1,6 +1,7 @@
 //! The steps of [`Runtime::run`](super::Runtime::run): start, one cycle repeated at the period,
 //! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
 
+use super::schedule::Schedule;
 use super::{
     Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
 };
@@ -90,22 +91,16 @@ where
 
     /// Cycles every period until a stop is asked for, `max_cycles` are done or the tick
     /// panics. A late cycle is followed at once by the next, timed from then: no burst of
-    /// catch-up cycles.
+    /// catch-up cycles. The deadlines are absolute (`schedule`).
     pub(super) fn repeat(
         &mut self,
         s: &mut RuntimeBuilder<T>,
         tick: &mut impl FnMut(&mut Context<T>),
     ) -> Result<(), RuntimeError> {
-        let mut next = Instant::now();
+        let mut schedule = Schedule::start(s.period);
         while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
             self.once(&mut *s.backend, tick)?;
-            next += s.period;
-            let now = Instant::now();
-            if next > now {
-                std::thread::sleep(next - now);
-            } else {
-                next = now;
-            }
+            schedule.wait();
         }
         Ok(())
     }

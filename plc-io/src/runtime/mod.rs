@@ -7,6 +7,7 @@ mod context;
 mod cycle;
 #[cfg(feature = "cycle-probe")]
 pub mod probe;
+mod schedule;
 mod stats;
 
 pub use backend::{IoBackend, IoError, IoStatus, NoIo};

@@ -22,6 +22,10 @@ const MAX_PDI: usize = plc_io::ethercat::MAX_PDI;
 const MAX_FRAMES: usize = 16;
 const MAX_PDU_DATA: usize = PduStorage::element_size(1100);
 
+/// Cycles in a row without a good answer after which a block gives up: the bus (or the
+/// frame thread) stopped, and every further exchange would wait for its timeout.
+pub const GIVE_UP: usize = 20;
+
 /// The working counter of a good exchange: the EL1004's inputs read (1), the EL2889's and
 /// the EL2004's outputs written (2 each).
 const EXPECTED_WKC: u16 = 5;
@@ -73,17 +77,23 @@ pub fn run(
             ..MainDeviceConfig::default()
         },
     );
-    let result = cycle_in_op(&md, period, warmup, cycles);
+    let mut result = cycle_in_op(&md, period, warmup, cycles);
     // SAFETY: every group made with `md` is gone (`cycle_in_op` owns and drops it) and every
     // ethercrab call was awaited to its end, so no frame is in flight; this tells the frame
     // thread to exit.
     let _ = unsafe { md.release_all() };
     match driver {
-        Driver::Thread(t) => match t.join() {
-            Ok(Ok(())) => {}
-            Ok(Err(e)) => return Err(format!("the frame thread ended with {e}")),
-            Err(_) => return Err("the frame thread panicked".into()),
-        },
+        Driver::Thread(t) => {
+            let ended = match t.join() {
+                Ok(Ok(())) => return result,
+                Ok(Err(e)) => format!("ethercrab's tx_rx_task ended with: {e}"),
+                Err(_) => "ethercrab's tx_rx_task panicked".into(),
+            };
+            result = Err(match result {
+                Ok(_) => ended,
+                Err(e) => format!("{e}; {ended}"),
+            });
+        }
         Driver::InProcess(d) => d.stop(),
     }
     result
@@ -117,7 +127,7 @@ fn cycle_in_op(
 
     let mut gm = Gm::default();
     let mut times = Vec::with_capacity(cycles);
-    let mut bad = 0;
+    let (mut bad, mut in_a_row) = (0, 0);
     let epoch = Instant::now();
     let mut next = Instant::now();
     for k in 0..warmup + cycles {
@@ -154,6 +164,17 @@ fn cycle_in_op(
         );
         let tick_end = Instant::now();
         let end = Instant::now();
+        in_a_row = if valid { 0 } else { in_a_row + 1 };
+        if in_a_row == GIVE_UP {
+            return Err(format!(
+                "the direct loop: the bus stopped answering ({GIVE_UP} cycles in a row without \
+                 the right working counter, the last {})",
+                match answer {
+                    Ok(r) => format!("working counter {}", r.working_counter),
+                    Err(e) => e.to_string(),
+                }
+            ));
+        }
         if k >= warmup {
             bad += usize::from(!valid);
             times.push(CycleTimes {
