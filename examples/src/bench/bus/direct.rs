@@ -194,7 +194,6 @@ fn cycle_in_op(
             next = now;
         }
     }
-    drop((inputs, outputs, lamps));
     // Back to INIT, as the framework's stop does, so the next block finds the bus as it left it.
     let group = block_on(group.into_safe_op(md)).map_err(crab("going to SAFE-OP"))?;
     let group = block_on(group.into_pre_op(md)).map_err(crab("going to PRE-OP"))?;

@@ -66,12 +66,12 @@ pub fn analyse(times: &[CycleTimes], period: Duration) -> Block {
             .map(|i| start[i] - steps(i, first))
             .min()
             .unwrap_or(0);
-        for i in first..past {
+        for (i, &at) in start.iter().enumerate().take(past).skip(first) {
             let due = match previous {
                 Some((o, f)) if i == first => o + steps(i, f),
                 _ => origin + steps(i, first),
             };
-            deviations.push((start[i] - due) as f64 / 1e3);
+            deviations.push((at - due) as f64 / 1e3);
         }
         previous = Some((origin, first));
     }
