@@ -167,7 +167,9 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
-    /// The cycle period.
+    /// The cycle period. Each cycle is due one period after the last one's deadline, an
+    /// absolute time on the monotonic clock slept to with no timer slack; a late cycle is
+    /// followed at once, with no burst of catch-up cycles.
     pub fn period(mut self, period: Duration) -> Self {
         self.period = period;
         self
