@@ -24,6 +24,10 @@ pub(crate) mod runtime;
 #[cfg(feature = "runtime")]
 pub mod shm;
 
+/// Per-cycle timestamps for the benchmarks (feature `cycle-probe`).
+#[cfg(feature = "cycle-probe")]
+#[doc(hidden)]
+pub use runtime::probe;
 #[cfg(feature = "runtime")]
 pub use runtime::{
     BusState, Context, CycleStats, IoBackend, IoError, IoStatus, NoIo, Runtime, RuntimeBuilder,

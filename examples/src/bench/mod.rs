@@ -1,6 +1,7 @@
 //! Workloads and measurements of the benchmarks (`plc-bench`, `cargo bench -p examples`).
 //! Method and results: BENCHMARKS.md.
 
+pub mod bus;
 pub mod cycle;
 pub mod cycle_10k;
 pub mod derive_check;

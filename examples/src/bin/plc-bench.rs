@@ -2,7 +2,7 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import` runs some groups
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus` runs some groups
 //! of figures.
 //! `cycle_10k` and `derive` compile generated crates: their first run takes minutes.
 
@@ -24,7 +24,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 7] = [
+const GROUPS: [&str; 8] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -32,6 +32,7 @@ const GROUPS: [&str; 7] = [
     "process_image",
     "derive",
     "import",
+    "bus",
 ];
 
 fn main() {
@@ -70,6 +71,10 @@ fn main() {
             "snapshot" => snapshot_latency(&segment, if quick { 3 } else { 10 }),
             "process_image" => process_image(batches),
             "derive" => derive_check(if quick { 1 } else { 3 }),
+            "bus" => match examples::bench::bus::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&format!("bus: {e}")),
+            },
             _ => import_10k(),
         }
     }

@@ -22,6 +22,9 @@ pub(super) fn cycle<S: HasPdi, T: GlobalMemory>(
     outputs: &[Binding],
 ) -> Result<TxRxResponse<MAX_SUBDEVICES>, CrabError> {
     write_outputs(g, md, gm, outputs);
+    #[cfg(feature = "cycle-probe")]
+    return crate::runtime::probe::bus_exchange(|| block_on(g.tx_rx(md)));
+    #[cfg(not(feature = "cycle-probe"))]
     block_on(g.tx_rx(md))
 }
 

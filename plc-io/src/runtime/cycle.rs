@@ -1,6 +1,7 @@
 //! The steps of [`Runtime::run`](super::Runtime::run): start, one cycle repeated at the period,
 //! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
 
+use super::schedule::Schedule;
 use super::{
     Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
 };
@@ -27,6 +28,9 @@ where
     shm: Option<ShmOwner<T>>,
     /// Where `Context::now` counts from: the runtime's start, on the monotonic clock.
     epoch: Instant,
+    /// Called with each cycle's timestamps (benchmarks only).
+    #[cfg(feature = "cycle-probe")]
+    probe: Option<super::probe::Probe>,
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
@@ -70,6 +74,8 @@ where
             retain,
             shm,
             epoch: Instant::now(),
+            #[cfg(feature = "cycle-probe")]
+            probe: s.probe.take(),
         };
         // The initial and restored values go out before the bus starts (which can take
         // seconds): a tool attaching meanwhile reads them, not a zeroed image.
@@ -78,27 +84,23 @@ where
         if let Some(shm) = &cycle.shm {
             shm.set_run_state(RunState::Running);
         }
+        #[cfg(feature = "cycle-probe")]
+        super::probe::arm(cycle.probe.is_some());
         Ok(cycle)
     }
 
     /// Cycles every period until a stop is asked for, `max_cycles` are done or the tick
     /// panics. A late cycle is followed at once by the next, timed from then: no burst of
-    /// catch-up cycles.
+    /// catch-up cycles. The deadlines are absolute (`schedule`).
     pub(super) fn repeat(
         &mut self,
         s: &mut RuntimeBuilder<T>,
         tick: &mut impl FnMut(&mut Context<T>),
     ) -> Result<(), RuntimeError> {
-        let mut next = Instant::now();
+        let mut schedule = Schedule::start(s.period);
         while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
             self.once(&mut *s.backend, tick)?;
-            next += s.period;
-            let now = Instant::now();
-            if next > now {
-                std::thread::sleep(next - now);
-            } else {
-                next = now;
-            }
+            schedule.wait();
         }
         Ok(())
     }
@@ -111,11 +113,17 @@ where
         tick: &mut impl FnMut(&mut Context<T>),
     ) -> Result<(), RuntimeError> {
         let start = Instant::now();
+        #[cfg(feature = "cycle-probe")]
+        let probing = self.probe.is_some();
+        #[cfg(feature = "cycle-probe")]
+        let exchange_start = probing.then(Instant::now);
         let ctx = &mut self.ctx;
         ctx.cycle += 1;
         // Beyond LTIME only after 292 years of running.
         ctx.set_now(Time::try_from(start.duration_since(self.epoch)).unwrap_or(Time::MAX));
         let io = backend.exchange(&mut ctx.gm);
+        #[cfg(feature = "cycle-probe")]
+        let exchange_end = probing.then(Instant::now);
         ctx.inputs_valid = io.inputs_valid;
         ctx.bus_fault = io.bus_fault;
         ctx.bus_state = io.bus_state;
@@ -123,11 +131,19 @@ where
         // Writes from outside are applied under the same protection as the tick: whatever a write
         // does, a panic still zeroes the outputs and puts the bus in a safe state.
         let shm = &mut self.shm;
+        #[cfg(feature = "cycle-probe")]
+        let mut tick_times = None;
         let step = catch_unwind(AssertUnwindSafe(|| {
             if let Some(shm) = shm.as_mut() {
                 shm.apply_mailbox(&mut ctx.gm);
             }
-            tick(ctx)
+            #[cfg(feature = "cycle-probe")]
+            let tick_start = probing.then(Instant::now);
+            tick(ctx);
+            #[cfg(feature = "cycle-probe")]
+            if let Some(t) = tick_start {
+                tick_times = Some((t, Instant::now()));
+            }
         }));
         if let Err(panic) = step {
             return Err(self.fault(backend, panic));
@@ -141,6 +157,26 @@ where
             writer.offer(self.image.0);
         }
         self.report(start.elapsed(), &io);
+        #[cfg(feature = "cycle-probe")]
+        if let (Some(probe), Some(bus), Some(exchange_end), Some((tick_start, tick_end))) = (
+            self.probe.as_mut(),
+            exchange_start,
+            exchange_end,
+            tick_times,
+        ) {
+            let end = Instant::now();
+            // The backend's own stamps of its frame exchange, if it made them; otherwise the
+            // whole exchange counts as the bus's.
+            let (bus_start, bus_end) = super::probe::take_bus().unwrap_or((bus, exchange_end));
+            probe(&super::probe::CycleTimes {
+                start,
+                bus_start,
+                bus_end,
+                tick_start,
+                tick_end,
+                end,
+            });
+        }
         Ok(())
     }
 
@@ -179,6 +215,8 @@ where
         result: Result<(), RuntimeError>,
     ) -> Result<T, RuntimeError> {
         backend.stop();
+        #[cfg(feature = "cycle-probe")]
+        super::probe::arm(false);
         let saved = match self.retain {
             // The last completed cycle's image. After a panic `gm` holds a half-done tick and
             // zeroed outputs, which must not become the values the next start restores.

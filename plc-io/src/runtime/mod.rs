@@ -5,6 +5,9 @@ mod backend;
 mod bus_state;
 mod context;
 mod cycle;
+#[cfg(feature = "cycle-probe")]
+pub mod probe;
+mod schedule;
 mod stats;
 
 pub use backend::{IoBackend, IoError, IoStatus, NoIo};
@@ -112,6 +115,8 @@ pub struct RuntimeBuilder<T> {
     max_cycles: Option<u64>,
     signals: bool,
     stop: StopHandle,
+    #[cfg(feature = "cycle-probe")]
+    probe: Option<probe::Probe>,
 }
 
 /// Runs a program's cycle: exchange I/O, unpack bits, apply mailbox writes, the program's
@@ -155,12 +160,16 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
             max_cycles: None,
             signals: true,
             stop: StopHandle::default(),
+            #[cfg(feature = "cycle-probe")]
+            probe: None,
         }
     }
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
-    /// The cycle period.
+    /// The cycle period. Each cycle is due one period after the last one's deadline, an
+    /// absolute time on the monotonic clock slept to with no timer slack; a late cycle is
+    /// followed at once, with no burst of catch-up cycles.
     pub fn period(mut self, period: Duration) -> Self {
         self.period = period;
         self
@@ -228,6 +237,15 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// Whether Ctrl-C and SIGTERM stop the runtime cleanly (default true).
     pub fn handle_signals(mut self, on: bool) -> Self {
         self.signals = on;
+        self
+    }
+    /// Calls `probe` after each cycle with the cycle's timestamps (start, bus exchange, tick,
+    /// end), on the cycle's thread and outside the cycle's timed span. For the benchmarks
+    /// (feature `cycle-probe`); the cycle does the same work with or without it.
+    #[cfg(feature = "cycle-probe")]
+    #[doc(hidden)]
+    pub fn cycle_probe(mut self, probe: impl FnMut(&probe::CycleTimes) + Send + 'static) -> Self {
+        self.probe = Some(Box::new(probe));
         self
     }
     /// A handle that stops the runtime.
