@@ -19,7 +19,9 @@ fn cycle_1k(c: &mut Criterion) {
     g.bench_function("runtime_outputs", |b| b.iter(|| framework.runtime_step()));
     // Each part alone: the loads, bit moves and stores the derive generates.
     for (name, part) in FrameworkCycle::<Gm1k>::parts() {
-        g.bench_function(format!("framework_{name}"), |b| b.iter(|| part(&mut framework)));
+        g.bench_function(format!("framework_{name}"), |b| {
+            b.iter(|| part(&mut framework))
+        });
     }
     g.bench_function("handwritten", |b| b.iter(|| hand.step()));
     g.bench_function("memcpy", |b| b.iter(|| floor.step()));

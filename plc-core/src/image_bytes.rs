@@ -78,7 +78,7 @@ pub fn repr_at_mut<T: PlcType>(image: &mut [u8], offset: usize) -> &mut T::Repr 
 /// assert_eq!(run_steps::<1>(&[4, 2]), None);
 /// ```
 pub const fn run_steps<const P: usize>(offsets: &[usize]) -> Option<[usize; P]> {
-    if P == 0 || offsets.len() < 2 * P || offsets.len() % P != 0 {
+    if P == 0 || offsets.len() < 2 * P || !offsets.len().is_multiple_of(P) {
         return None;
     }
     let mut steps = [0; P];

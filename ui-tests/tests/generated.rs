@@ -1,5 +1,7 @@
 //! Writes `tests/pass/two_thousand_fields.rs`, the 2,000-variable pass test, and
-//! `tests/runs_equivalence.rs`, random declarations against straight-line reference code, and
+//! `tests/runs/generated.rs`, random declarations against straight-line reference code (the
+//! test `runs_equivalence` includes it; outside the test targets, so rustfmt leaves it as
+//! written), and
 //! checks that the files in the tree are what it writes: edit the generator, then run
 //! `REGENERATE=1 cargo test -p ui-tests --test generated` to rewrite them.
 
@@ -109,7 +111,7 @@ fn the_two_thousand_field_pass_test_is_what_its_generator_writes() {
 
 #[test]
 fn the_runs_equivalence_test_is_what_its_generator_writes() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/runs_equivalence.rs");
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/runs/generated.rs");
     in_tree_is(path, &runs::equivalence());
 }
 
@@ -229,7 +231,11 @@ mod runs {
 
     /// The declaration `name` and its reference conversions.
     fn declaration(w: &mut String, name: &str, fields: &[Field]) {
-        writeln!(w, "#[derive(GlobalMemory, Debug, Clone)]\npub struct {name} {{").unwrap();
+        writeln!(
+            w,
+            "#[derive(GlobalMemory, Debug, Clone)]\npub struct {name} {{"
+        )
+        .unwrap();
         for (f, ty, map) in fields {
             if let Some((s, b)) = map {
                 writeln!(w, "    #[plc(source = \"{s}\", bit = {b})]").unwrap();
@@ -237,11 +243,17 @@ mod runs {
             writeln!(w, "    pub {f}: {ty},").unwrap();
         }
         writeln!(w, "}}\n\nimpl Reference for {name} {{").unwrap();
-        writeln!(w, "    fn reference_store(&self) -> Vec<u8> {{\n        let mut b = Vec::new();")
-            .unwrap();
+        writeln!(
+            w,
+            "    fn reference_store(&self) -> Vec<u8> {{\n        let mut b = Vec::new();"
+        )
+        .unwrap();
         for (f, ty, _) in fields {
-            writeln!(w, "        b.extend_from_slice(<{ty} as PlcType>::to_repr(&self.{f}).as_bytes());")
-                .unwrap();
+            writeln!(
+                w,
+                "        b.extend_from_slice(<{ty} as PlcType>::to_repr(&self.{f}).as_bytes());"
+            )
+            .unwrap();
         }
         writeln!(w, "        b\n    }}\n\n    fn reference_load(&mut self, b: &[u8]) {{\n        let mut at = 0;").unwrap();
         for (f, ty, _) in fields {
@@ -252,7 +264,11 @@ mod runs {
             )
             .unwrap();
         }
-        writeln!(w, "        assert_eq!(at, b.len());\n    }}\n\n    fn reference_unpack(&mut self) {{").unwrap();
+        writeln!(
+            w,
+            "        assert_eq!(at, b.len());\n    }}\n\n    fn reference_unpack(&mut self) {{"
+        )
+        .unwrap();
         for (f, _, map) in fields {
             if let Some((s, b)) = map {
                 writeln!(w, "        self.{f} = (self.{s} >> {b}) & 1 != 0;").unwrap();
@@ -262,16 +278,27 @@ mod runs {
         for (f, _, map) in fields {
             if let Some((s, b)) = map {
                 let word = &fields.iter().find(|(n, _, _)| n == s).unwrap().1;
-                writeln!(w, "        self.{s} = (self.{s} & !(1 << {b})) | ((self.{f} as {word}) << {b});").unwrap();
+                writeln!(
+                    w,
+                    "        self.{s} = (self.{s} & !(1 << {b})) | ((self.{f} as {word}) << {b});"
+                )
+                .unwrap();
             }
         }
         writeln!(w, "    }}\n\n    fn reference_unpack_nested(&mut self) {{").unwrap();
-        let nested: Vec<_> = fields.iter().filter(|(_, ty, _)| ty.contains("Pair")).collect();
+        let nested: Vec<_> = fields
+            .iter()
+            .filter(|(_, ty, _)| ty.contains("Pair"))
+            .collect();
         for (f, ty, _) in &nested {
             if ty == "Pair" {
                 writeln!(w, "        self.{f}.reference_unpack();").unwrap();
             } else {
-                writeln!(w, "        self.{f}.iter_mut().for_each(Pair::reference_unpack);").unwrap();
+                writeln!(
+                    w,
+                    "        self.{f}.iter_mut().for_each(Pair::reference_unpack);"
+                )
+                .unwrap();
             }
         }
         writeln!(w, "    }}\n\n    fn reference_pack_nested(&mut self) {{").unwrap();
@@ -279,18 +306,18 @@ mod runs {
             if ty == "Pair" {
                 writeln!(w, "        self.{f}.reference_pack();").unwrap();
             } else {
-                writeln!(w, "        self.{f}.iter_mut().for_each(Pair::reference_pack);").unwrap();
+                writeln!(
+                    w,
+                    "        self.{f}.iter_mut().for_each(Pair::reference_pack);"
+                )
+                .unwrap();
             }
         }
         writeln!(w, "    }}\n}}\n").unwrap();
     }
 
-    /// What every declaration is tested for.
-    const HEADER: &str = r#"//! The derive's loops over runs of fields and of bit-mapped bools give the images and values
-//! that field-by-field code gives, for random declarations (every kind of type, aliases,
-//! structures, bools mapped in order and out of order). Written by `tests/generated.rs`: edit
-//! that, not this.
-#![allow(clippy::all, clippy::pedantic)]
+    /// What every declaration is tested for; `tests/runs_equivalence.rs` includes the file.
+    const HEADER: &str = r#"// Written by `tests/generated.rs`: edit that, not this.
 
 use core::mem::size_of;
 use plc_core::{FixedString, GlobalMemory, PlcStruct, PlcType};

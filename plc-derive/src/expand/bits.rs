@@ -22,9 +22,8 @@ pub fn moves(c: &Container) -> (TokenStream, TokenStream) {
                 };
                 let (b, src) = (v.ident, c.vars[s].ident);
                 let bit = bit as u32;
-                unpack.extend(
-                    quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#src, #bit));),
-                );
+                unpack
+                    .extend(quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#src, #bit));));
                 pack.extend(
                     quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#b));),
                 );
