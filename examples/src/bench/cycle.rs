@@ -199,7 +199,7 @@ where
         .handle_signals(false)
         .build()
         .run(|_| {
-            if count % iters == 0 {
+            if count.is_multiple_of(iters) {
                 if let Some(start) = batch_start {
                     ours.push(start.elapsed() / iters);
                 }
