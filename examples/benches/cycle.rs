@@ -15,6 +15,14 @@ fn cycle_1k(c: &mut Criterion) {
     let mut floor = MemcpyFloor::new(IMAGE_SIZE);
     let mut g = c.benchmark_group("cycle_1k");
     g.bench_function("framework", |b| b.iter(|| framework.step()));
+    // The conversions and the publish of the runtime's cycle (its loops over runs included).
+    g.bench_function("runtime_outputs", |b| b.iter(|| framework.runtime_step()));
+    // Each part alone: the loads, bit moves and stores the derive generates.
+    for (name, part) in FrameworkCycle::<Gm1k>::parts() {
+        g.bench_function(format!("framework_{name}"), |b| {
+            b.iter(|| part(&mut framework))
+        });
+    }
     g.bench_function("handwritten", |b| b.iter(|| hand.step()));
     g.bench_function("memcpy", |b| b.iter(|| floor.step()));
     g.finish();

@@ -63,6 +63,66 @@ pub fn repr_at_mut<T: PlcType>(image: &mut [u8], offset: usize) -> &mut T::Repr 
     }
 }
 
+/// The step of each of the `P` columns of a run of fields (`offsets[r * P + j]` is where
+/// repetition `r` of column `j` starts), or `None` when some column does not step evenly.
+///
+/// The derive converts a long run of same-typed fields with one loop (code that does not
+/// grow with the fields) when the compiler laid the fields out evenly, which it does in
+/// practice but does not promise: the derive asks this in a `const` and otherwise reads every
+/// offset from a table.
+///
+/// ```
+/// # use plc_core::__private::run_steps;
+/// assert_eq!(run_steps::<2>(&[0, 8, 2, 12, 4, 16]), Some([2, 4]));
+/// assert_eq!(run_steps::<1>(&[0, 2, 6]), None);
+/// assert_eq!(run_steps::<1>(&[4, 2]), None);
+/// ```
+pub const fn run_steps<const P: usize>(offsets: &[usize]) -> Option<[usize; P]> {
+    if P == 0 || offsets.len() < 2 * P || !offsets.len().is_multiple_of(P) {
+        return None;
+    }
+    let mut steps = [0; P];
+    let mut j = 0;
+    while j < P {
+        if offsets[P + j] < offsets[j] {
+            return None;
+        }
+        steps[j] = offsets[P + j] - offsets[j];
+        j += 1;
+    }
+    let mut k = P;
+    while k < offsets.len() {
+        if offsets[k] != offsets[k - P] + steps[k % P] {
+            return None;
+        }
+        k += 1;
+    }
+    Some(steps)
+}
+
+/// The field of type `T` at byte `offset` of `s`.
+///
+/// # Safety
+///
+/// `offset` is `core::mem::offset_of!(S, field)` of a field of `s` whose type is `T`.
+#[inline(always)]
+pub unsafe fn field_at<S, T>(s: &S, offset: usize) -> &T {
+    // SAFETY: by the caller's promise the bytes at `offset` are a field of type `T`: in
+    // bounds, aligned for `T`, initialised, and borrowed for as long as `s` is.
+    unsafe { &*(s as *const S).cast::<u8>().add(offset).cast::<T>() }
+}
+
+/// The field of type `T` at byte `offset` of `s`, to write.
+///
+/// # Safety
+///
+/// As [`field_at`].
+#[inline(always)]
+pub unsafe fn field_at_mut<S, T>(s: &mut S, offset: usize) -> &mut T {
+    // SAFETY: as in `field_at`; the `&mut S` makes the borrow exclusive.
+    unsafe { &mut *(s as *mut S).cast::<u8>().add(offset).cast::<T>() }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,6 +147,31 @@ mod tests {
         assert_eq!(repr_at::<u16>(&image, at[1]).get(), 0x1234);
         assert_eq!(repr_at::<f32>(&image, at[3]).get(), 1.5);
         assert_eq!(image[at[3]..at[3] + 4], 1.5f32.to_le_bytes());
+    }
+
+    #[test]
+    fn runs_step_evenly_or_not_at_all() {
+        assert_eq!(run_steps::<1>(&[3, 5, 7, 9]), Some([2]));
+        assert_eq!(run_steps::<3>(&[0, 40, 8, 1, 41, 10]), Some([1, 1, 2]));
+        assert_eq!(run_steps::<2>(&[0, 1, 2]), None, "not whole repetitions");
+        assert_eq!(run_steps::<2>(&[0, 1]), None, "one repetition is no run");
+        assert_eq!(run_steps::<1>(&[0, 2, 4, 7]), None);
+        assert_eq!(run_steps::<0>(&[]), None);
+    }
+
+    #[test]
+    fn fields_are_found_at_their_offsets() {
+        struct S {
+            a: u16,
+            b: u64,
+        }
+        let mut s = S { a: 1, b: 2 };
+        // SAFETY: the offsets are those of `a: u16` and `b: u64`.
+        unsafe {
+            *field_at_mut::<S, u64>(&mut s, core::mem::offset_of!(S, b)) = 7;
+            assert_eq!(*field_at::<S, u16>(&s, core::mem::offset_of!(S, a)), 1);
+        }
+        assert_eq!((s.a, s.b), (1, 7));
     }
 
     #[test]

@@ -6,7 +6,9 @@ pub use plc_rules;
 pub use zerocopy;
 
 pub use crate::global_memory::layout_hash;
-pub use crate::image_bytes::{image_size, offsets, repr_at, repr_at_mut};
+pub use crate::image_bytes::{
+    field_at, field_at_mut, image_size, offsets, repr_at, repr_at_mut, run_steps,
+};
 pub use crate::plc_type::sealed::Sealed;
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;

@@ -1,6 +1,9 @@
-//! Writes `tests/pass/two_thousand_fields.rs`, the 2,000-variable pass test, and checks that
-//! the file in the tree is what it writes: edit the generator, then run
-//! `REGENERATE=1 cargo test -p ui-tests --test generated` to rewrite the file.
+//! Writes `tests/pass/two_thousand_fields.rs`, the 2,000-variable pass test, and
+//! `tests/runs/generated.rs`, random declarations against straight-line reference code (the
+//! test `runs_equivalence` includes it; outside the test targets, so rustfmt leaves it as
+//! written), and
+//! checks that the files in the tree are what it writes: edit the generator, then run
+//! `REGENERATE=1 cargo test -p ui-tests --test generated` to rewrite them.
 
 use std::fmt::Write;
 
@@ -85,19 +88,320 @@ fn two_thousand_fields() -> String {
     out
 }
 
-#[test]
-fn the_two_thousand_field_pass_test_is_what_its_generator_writes() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/pass/two_thousand_fields.rs"
-    );
-    let text = two_thousand_fields();
+/// Writes `text` to `path` under `REGENERATE`, and checks the file in the tree is `text`.
+fn in_tree_is(path: &str, text: &str) {
     if std::env::var_os("REGENERATE").is_some() {
-        std::fs::write(path, &text).unwrap();
+        std::fs::write(path, text).unwrap();
     }
     let in_tree = std::fs::read_to_string(path).unwrap();
     assert!(
         in_tree == text,
         "{path} is not what tests/generated.rs writes: run it with REGENERATE=1"
     );
+}
+
+#[test]
+fn the_two_thousand_field_pass_test_is_what_its_generator_writes() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/pass/two_thousand_fields.rs"
+    );
+    in_tree_is(path, &two_thousand_fields());
+}
+
+#[test]
+fn the_runs_equivalence_test_is_what_its_generator_writes() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/runs/generated.rs");
+    in_tree_is(path, &runs::equivalence());
+}
+
+/// Random declarations whose conversions the derive does in loops over runs of fields and of
+/// bit-mapped bools (`plc-derive/src/expand/runs.rs`), each with reference code that converts
+/// field by field as the straight-line code does.
+mod runs {
+    use std::fmt::Write;
+
+    /// Field types: every kind, aliases and structures included.
+    const TYPES: [&str; 18] = [
+        "bool",
+        "u8",
+        "i8",
+        "u16",
+        "i16",
+        "u32",
+        "i32",
+        "u64",
+        "i64",
+        "f32",
+        "f64",
+        "FixedString<5>",
+        "[u16; 3]",
+        "[[i8; 2]; 2]",
+        "Word",
+        "Flag",
+        "Pair",
+        "[Pair; 2]",
+    ];
+
+    /// Integer types a bool can be mapped onto.
+    const WORDS: [&str; 5] = ["u8", "u16", "i32", "u64", "Word"];
+
+    /// A fixed-seed xorshift: the same declarations every time.
+    struct Rng(u64);
+
+    impl Rng {
+        fn below(&mut self, n: usize) -> usize {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 % n as u64) as usize
+        }
+    }
+
+    /// One field: name, type, and the source field and bit of a mapped bool.
+    type Field = (String, String, Option<(String, u32)>);
+
+    /// The fields of one random declaration, in stretches: repeated blocks of types, single
+    /// fields, words with bools mapped in order (bit runs) and out of order.
+    fn fields(rng: &mut Rng) -> Vec<Field> {
+        let mut out: Vec<Field> = Vec::new();
+        let name = |out: &Vec<Field>| format!("f{}", out.len());
+        for _ in 0..8 {
+            match rng.below(4) {
+                0 => {
+                    let period = 1 + rng.below(5);
+                    let block: Vec<&str> =
+                        (0..period).map(|_| TYPES[rng.below(TYPES.len())]).collect();
+                    for _ in 0..(4 + rng.below(40)) {
+                        for ty in &block {
+                            out.push((name(&out), ty.to_string(), None));
+                        }
+                    }
+                }
+                1 => {
+                    for _ in 0..(1 + rng.below(6)) {
+                        out.push((name(&out), TYPES[rng.below(TYPES.len())].into(), None));
+                    }
+                }
+                2 => {
+                    let ty = WORDS[rng.below(WORDS.len())];
+                    let width = match ty {
+                        "u8" => 8,
+                        "u16" | "Word" => 16,
+                        "i32" => 32,
+                        _ => 64,
+                    };
+                    let words: Vec<String> = (0..(2 + rng.below(12)))
+                        .map(|_| {
+                            let w = name(&out);
+                            out.push((w.clone(), ty.into(), None));
+                            w
+                        })
+                        .collect();
+                    let first = rng.below(width / 2) as u32;
+                    let bits = 1 + rng.below(width - first as usize);
+                    let bool_ty = if rng.below(3) == 0 { "Flag" } else { "bool" };
+                    for w in &words {
+                        for b in 0..bits as u32 {
+                            out.push((name(&out), bool_ty.into(), Some((w.clone(), first + b))));
+                        }
+                    }
+                }
+                _ => {
+                    let words: Vec<String> = (0..3)
+                        .map(|_| {
+                            let w = name(&out);
+                            out.push((w.clone(), "u16".into(), None));
+                            w
+                        })
+                        .collect();
+                    let mut taken = Vec::new();
+                    for _ in 0..(4 + rng.below(20)) {
+                        let at = (words[rng.below(3)].clone(), rng.below(16) as u32);
+                        if !taken.contains(&at) {
+                            taken.push(at.clone());
+                            out.push((name(&out), "bool".into(), Some(at)));
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// The declaration `name` and its reference conversions.
+    fn declaration(w: &mut String, name: &str, fields: &[Field]) {
+        writeln!(
+            w,
+            "#[derive(GlobalMemory, Debug, Clone)]\npub struct {name} {{"
+        )
+        .unwrap();
+        for (f, ty, map) in fields {
+            if let Some((s, b)) = map {
+                writeln!(w, "    #[plc(source = \"{s}\", bit = {b})]").unwrap();
+            }
+            writeln!(w, "    pub {f}: {ty},").unwrap();
+        }
+        writeln!(w, "}}\n\nimpl Reference for {name} {{").unwrap();
+        writeln!(
+            w,
+            "    fn reference_store(&self) -> Vec<u8> {{\n        let mut b = Vec::new();"
+        )
+        .unwrap();
+        for (f, ty, _) in fields {
+            writeln!(
+                w,
+                "        b.extend_from_slice(<{ty} as PlcType>::to_repr(&self.{f}).as_bytes());"
+            )
+            .unwrap();
+        }
+        writeln!(w, "        b\n    }}\n\n    fn reference_load(&mut self, b: &[u8]) {{\n        let mut at = 0;").unwrap();
+        for (f, ty, _) in fields {
+            writeln!(
+                w,
+                "        self.{f} = <{ty} as PlcType>::from_repr(&FromBytes::read_from_prefix(&b[at..]).unwrap().0);\n        \
+                 at += size_of::<<{ty} as PlcType>::Repr>();"
+            )
+            .unwrap();
+        }
+        writeln!(
+            w,
+            "        assert_eq!(at, b.len());\n    }}\n\n    fn reference_unpack(&mut self) {{"
+        )
+        .unwrap();
+        for (f, _, map) in fields {
+            if let Some((s, b)) = map {
+                writeln!(w, "        self.{f} = (self.{s} >> {b}) & 1 != 0;").unwrap();
+            }
+        }
+        writeln!(w, "        self.reference_unpack_nested();\n    }}\n\n    fn reference_pack(&mut self) {{\n        self.reference_pack_nested();").unwrap();
+        for (f, _, map) in fields {
+            if let Some((s, b)) = map {
+                let word = &fields.iter().find(|(n, _, _)| n == s).unwrap().1;
+                writeln!(
+                    w,
+                    "        self.{s} = (self.{s} & !(1 << {b})) | ((self.{f} as {word}) << {b});"
+                )
+                .unwrap();
+            }
+        }
+        writeln!(w, "    }}\n\n    fn reference_unpack_nested(&mut self) {{").unwrap();
+        let nested: Vec<_> = fields
+            .iter()
+            .filter(|(_, ty, _)| ty.contains("Pair"))
+            .collect();
+        for (f, ty, _) in &nested {
+            if ty == "Pair" {
+                writeln!(w, "        self.{f}.reference_unpack();").unwrap();
+            } else {
+                writeln!(
+                    w,
+                    "        self.{f}.iter_mut().for_each(Pair::reference_unpack);"
+                )
+                .unwrap();
+            }
+        }
+        writeln!(w, "    }}\n\n    fn reference_pack_nested(&mut self) {{").unwrap();
+        for (f, ty, _) in &nested {
+            if ty == "Pair" {
+                writeln!(w, "        self.{f}.reference_pack();").unwrap();
+            } else {
+                writeln!(
+                    w,
+                    "        self.{f}.iter_mut().for_each(Pair::reference_pack);"
+                )
+                .unwrap();
+            }
+        }
+        writeln!(w, "    }}\n}}\n").unwrap();
+    }
+
+    /// What every declaration is tested for; `tests/runs_equivalence.rs` includes the file.
+    const HEADER: &str = r#"// Written by `tests/generated.rs`: edit that, not this.
+
+use core::mem::size_of;
+use plc_core::{FixedString, GlobalMemory, PlcStruct, PlcType};
+use proptest::prelude::*;
+use zerocopy::{FromBytes, IntoBytes};
+
+type Word = u16;
+type Flag = bool;
+
+#[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
+pub struct Pair {
+    pub a: u16,
+    #[plc(source = "a", bit = 3)]
+    pub b: bool,
+    pub c: f32,
+}
+
+impl Pair {
+    fn reference_unpack(&mut self) {
+        self.b = (self.a >> 3) & 1 != 0;
+    }
+
+    fn reference_pack(&mut self) {
+        self.a = (self.a & !(1 << 3)) | ((self.b as u16) << 3);
+    }
+}
+
+/// Field-by-field conversions, as the derive's straight-line code does them.
+trait Reference: GlobalMemory {
+    fn reference_store(&self) -> Vec<u8>;
+    fn reference_load(&mut self, bytes: &[u8]);
+    fn reference_unpack(&mut self);
+    fn reference_pack(&mut self);
+    fn reference_unpack_nested(&mut self);
+    fn reference_pack_nested(&mut self);
+}
+
+/// Loads, stores, unpacks and packs `bytes` both ways and compares the results as bytes (NaN
+/// is not equal to itself).
+fn agree<T: Reference + Clone>(bytes: &[u8]) {
+    let image = T::Image::read_from_bytes(bytes).unwrap();
+    let mut ours = T::from_image(&image);
+    let mut theirs = T::from_image(&image);
+    ours.load_image(&image);
+    theirs.reference_load(bytes);
+    assert_eq!(ours.reference_store(), theirs.reference_store(), "load_image");
+    assert_eq!(ours.to_image().as_bytes(), theirs.reference_store().as_slice(), "store_image");
+    ours.unpack_bits();
+    theirs.reference_unpack();
+    assert_eq!(ours.reference_store(), theirs.reference_store(), "unpack_bits");
+    // Other values in the bools before packing, so every bit changes somewhere.
+    let mut flipped = ours.to_image();
+    flipped.as_mut_bytes().iter_mut().for_each(|b| *b = !*b);
+    let bools = T::from_image(&flipped);
+    let mut ours = bools.clone();
+    let mut theirs = bools;
+    ours.pack_bits();
+    theirs.reference_pack();
+    assert_eq!(ours.reference_store(), theirs.reference_store(), "pack_bits");
+}
+"#;
+
+    /// The test file: the declarations, then a property per declaration.
+    pub fn equivalence() -> String {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut w = String::from(HEADER);
+        let names: Vec<String> = (0..3).map(|i| format!("Random{i}")).collect();
+        for name in &names {
+            w.push('\n');
+            declaration(&mut w, name, &fields(&mut rng));
+        }
+        w.push_str("proptest! {\n    #![proptest_config(ProptestConfig::with_cases(64))]\n");
+        for name in &names {
+            let size = format!("size_of::<<{name} as GlobalMemory>::Image>()");
+            write!(
+                w,
+                "\n    #[test]\n    fn loops_agree_with_field_by_field_code_{}(\n        \
+                 bytes in proptest::collection::vec(any::<u8>(), {size})\n    ) {{\n        \
+                 agree::<{name}>(&bytes);\n    }}\n",
+                name.to_lowercase()
+            )
+            .unwrap();
+        }
+        w.push_str("}\n");
+        w
+    }
 }

@@ -8,6 +8,8 @@ use super::hand_seqlock::HandSeqlock;
 use plc_core::GlobalMemory;
 use plc_io::shm::{SharedGlobalMemory, ShmOwner};
 use std::hint::black_box;
+use std::mem::size_of;
+use std::time::{Duration, Instant};
 use zerocopy::IntoBytes;
 
 /// A hand-written workload: the same variables as a derive workload, converted with manual
@@ -93,9 +95,10 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
         ]
     }
 
-    /// What `plc_io::Runtime` itself does around the tick: no snapshot in (inputs come from
-    /// the bus straight into the struct, tools' writes over the socket), so `unpack_bits`,
-    /// `pack_bits`, the image out and the publish.
+    /// The conversions and the publish of `plc_io::Runtime`'s cycle (no snapshot in: inputs
+    /// come from the bus straight into the struct, tools' writes over the socket), so
+    /// `unpack_bits`, `pack_bits`, the image out and the publish
+    /// (`cycle_1k_outputs_vs_memcpy`); [`runtime_vs_memcpy`] times the runtime itself.
     #[inline(never)]
     pub fn runtime_step(&mut self) {
         self.bits_and_out();
@@ -168,6 +171,48 @@ impl<H: HandWritten> HandCycle<H> {
         self.hand.store(&mut image_out[..H::IMAGE_SIZE]);
         self.lock.publish(black_box(image_out));
     }
+}
+
+/// What `plc_io::Runtime` really does per cycle, on `T` with a segment `segment`, no I/O and
+/// an empty tick, run at period zero (no sleeping): the time between ticks in `batches`
+/// batches of `iters` cycles, and in alternation with them the memcpy floor of `T`'s image,
+/// timed from inside the tick between two batches. Returns the medians per cycle, the
+/// runtime's first.
+pub fn runtime_vs_memcpy<T>(
+    segment: &str,
+    batches: usize,
+    iters: u32,
+) -> Result<(Duration, Duration), plc_io::RuntimeError>
+where
+    T: GlobalMemory + Default + Clone + Send + 'static,
+    T::Image: Send,
+{
+    let mut floor = MemcpyFloor::new(size_of::<T::Image>());
+    let (mut ours, mut memcpy) = (Vec::new(), Vec::new());
+    let mut batch_start: Option<Instant> = None;
+    let mut count = 0u32;
+    let cycles = batches as u64 * u64::from(iters) + 1;
+    plc_io::Runtime::<T>::builder()
+        .segment(segment)
+        .period(Duration::ZERO)
+        .max_cycles(cycles)
+        .handle_signals(false)
+        .build()
+        .run(|_| {
+            if count.is_multiple_of(iters) {
+                if let Some(start) = batch_start {
+                    ours.push(start.elapsed() / iters);
+                }
+                memcpy.push(super::timing::median_per_iter(1, iters, || floor.step()));
+                batch_start = Some(Instant::now());
+            }
+            count += 1;
+        })?;
+    let median = |mut v: Vec<Duration>| {
+        v.sort();
+        v[v.len() / 2]
+    };
+    Ok((median(ours), median(memcpy)))
 }
 
 /// The physical floor: two plain copies of an image of the same size.

@@ -50,13 +50,19 @@ fn variables(k: usize) -> Vec<(String, Kind)> {
     v
 }
 
-/// The source of workload `Gm{k}k` / `Hand{k}k`, for a module that sees the crate's
-/// `bench::cycle::HandWritten` at `hand_trait` (a path).
-pub fn source(k: usize, hand_trait: &str) -> String {
-    let (gm, hand) = (format!("Gm{k}k"), format!("Hand{k}k"));
-    let vars = variables(k);
+/// The source of workload `Gm{k}k` alone, without its hand-written twin (`Gm100k`: the
+/// hand-written twin would only add to a long build).
+// `build.rs` compiles this file too and writes only workloads with their twins.
+#[allow(dead_code)]
+pub fn derive_source(k: usize) -> String {
     let mut s = String::new();
-    let w = &mut s;
+    derive_struct(&mut s, k, &variables(k));
+    s
+}
+
+/// The derive struct `Gm{k}k`.
+fn derive_struct(w: &mut String, k: usize, vars: &[(String, Kind)]) {
+    let gm = format!("Gm{k}k");
     // Writing into a String cannot fail.
     let _ = writeln!(
         w,
@@ -68,7 +74,7 @@ pub fn source(k: usize, hand_trait: &str) -> String {
         w,
         "#[derive(GlobalMemory, Debug, Clone)]\npub struct {gm} {{"
     );
-    for (n, kind) in &vars {
+    for (n, kind) in vars {
         let ty = match kind {
             Kind::Int(t) | Kind::Real(t) => t.to_string(),
             Kind::Bool(map) => {
@@ -83,6 +89,16 @@ pub fn source(k: usize, hand_trait: &str) -> String {
         let _ = writeln!(w, "    pub {n}: {ty},");
     }
     let _ = writeln!(w, "}}\n");
+}
+
+/// The source of workload `Gm{k}k` / `Hand{k}k`, for a module that sees the crate's
+/// `bench::cycle::HandWritten` at `hand_trait` (a path).
+pub fn source(k: usize, hand_trait: &str) -> String {
+    let hand = format!("Hand{k}k");
+    let vars = variables(k);
+    let mut s = String::new();
+    derive_struct(&mut s, k, &vars);
+    let w = &mut s;
     let _ = writeln!(
         w,
         "/// The same variables, hand-written: what a user would write without plc-vars."

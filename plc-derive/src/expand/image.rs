@@ -5,6 +5,7 @@
 //! starts, in declaration order and without gaps, so the bytes are those a `#[repr(C)]` struct
 //! of the stored forms would have.
 
+use super::runs::{self, Piece, Run};
 use super::{image_ident, private};
 use crate::ast::Container;
 use proc_macro2::{Group, Literal, Span, TokenStream, TokenTree};
@@ -90,6 +91,25 @@ pub fn expand(c: &Container) -> TokenStream {
             quote!(__plc_at[#i])
         })
         .collect();
+    let mut load = TokenStream::new();
+    let mut store = TokenStream::new();
+    for piece in runs::pieces(c, runs::MIN_RUN_FIELDS) {
+        match piece {
+            Piece::Field(i) => {
+                let (f, ty, at) = (idents[i], tys[i], &offsets[i]);
+                load.extend(quote!(self.#f = <#ty as #p::PlcType>::from_repr(
+                    #p::repr_at::<#ty>(&image.0, #at)
+                );));
+                store.extend(quote!(*#p::repr_at_mut::<#ty>(&mut image.0, #at) =
+                    <#ty as #p::PlcType>::to_repr(&self.#f);));
+            }
+            Piece::Run(run) => {
+                let (l, s) = run_loops(c, run);
+                load.extend(l);
+                store.extend(s);
+            }
+        }
+    }
     quote! {
         #[inline]
         fn to_image(&self) -> #image {
@@ -109,18 +129,90 @@ pub fn expand(c: &Container) -> TokenStream {
         }
 
         #[inline]
+        #[allow(unsafe_code)]
         fn load_image(&mut self, image: &#image) {
             #at
-            #(self.#idents = <#tys as #p::PlcType>::from_repr(
-                #p::repr_at::<#tys>(&image.0, #offsets)
-            );)*
+            #load
         }
 
         #[inline]
+        #[allow(unsafe_code)]
         fn store_image(&self, image: &mut #image) {
             #at
-            #(*#p::repr_at_mut::<#tys>(&mut image.0, #offsets) =
-                <#tys as #p::PlcType>::to_repr(&self.#idents);)*
+            #store
         }
     }
+}
+
+/// `offset_of!` each of `fields` in the struct, as a `const` array named `name`.
+pub fn struct_offsets(c: &Container, name: &syn::Ident, fields: &[usize]) -> TokenStream {
+    let p = private(c);
+    let ident = c.ident;
+    let len = Literal::usize_unsuffixed(fields.len());
+    let fields = fields.iter().map(|&i| c.vars[i].ident);
+    quote!(const #name: [usize; #len] = [#(#p::core::mem::offset_of!(#ident, #fields),)*];)
+}
+
+/// The load and the store loop of a run: one pass per repetition, one conversion per column.
+fn run_loops(c: &Container, run: Run) -> (TokenStream, TokenStream) {
+    let p = private(c);
+    let ident = c.ident;
+    let st = syn::Ident::new("__PLC_RUN_FIELDS", Span::call_site());
+    let fields: Vec<usize> = (run.start..run.start + run.len()).collect();
+    let table = struct_offsets(c, &st, &fields);
+    let (period, reps) = (
+        Literal::usize_unsuffixed(run.period),
+        Literal::usize_unsuffixed(run.reps),
+    );
+    let len = Literal::usize_unsuffixed(run.len());
+    let start = Literal::usize_unsuffixed(run.start);
+    let next = Literal::usize_unsuffixed(run.start + run.period);
+    // Where field (r, j) is: in the struct, from the column's step when every column steps
+    // evenly (a `const`: the other arm is compiled away), else from the table; in the image
+    // the run's fields are one after the other, so each repetition is the first one's size on.
+    let setup = quote! {
+        #table
+        const __PLC_STEPS: ::core::option::Option<[usize; #period]> =
+            #p::run_steps::<#period>(&__PLC_RUN_FIELDS);
+        const __PLC_IMAGE_STEP: usize = __PLC_OFFSETS[#next] - __PLC_OFFSETS[#start];
+        let __plc_fields: &'static [usize; #len] = &__PLC_RUN_FIELDS;
+    };
+    let mut load = TokenStream::new();
+    let mut store = TokenStream::new();
+    for j in 0..run.period {
+        let ty = c.vars[run.start + j].ty;
+        let col = Literal::usize_unsuffixed(j);
+        let first = Literal::usize_unsuffixed(run.start + j);
+        let place = quote! {
+            let __plc_field = match __PLC_STEPS {
+                ::core::option::Option::Some(__plc_steps) =>
+                    __plc_fields[#col] + __plc_r * __plc_steps[#col],
+                ::core::option::Option::None => __plc_fields[__plc_r * #period + #col],
+            };
+            let __plc_image = __plc_at[#first] + __plc_r * __PLC_IMAGE_STEP;
+        };
+        // SAFETY (both): `__plc_field` is `offset_of!` of field `run.start + r * period + j`,
+        // whose type has the same tokens as this column's first field, so it is `#ty`.
+        load.extend(quote! {{
+            #place
+            *unsafe { #p::field_at_mut::<#ident, #ty>(self, __plc_field) } =
+                <#ty as #p::PlcType>::from_repr(#p::repr_at::<#ty>(&image.0, __plc_image));
+        }});
+        store.extend(quote! {{
+            #place
+            *#p::repr_at_mut::<#ty>(&mut image.0, __plc_image) =
+                <#ty as #p::PlcType>::to_repr(unsafe { #p::field_at::<#ident, #ty>(self, __plc_field) });
+        }});
+    }
+    let wrap = |body: TokenStream| {
+        quote! {{
+            #setup
+            let mut __plc_r = 0usize;
+            while __plc_r < #reps {
+                #body
+                __plc_r += 1;
+            }
+        }}
+    };
+    (wrap(load), wrap(store))
 }

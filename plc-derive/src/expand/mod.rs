@@ -10,6 +10,7 @@ mod fallback;
 mod image;
 mod located;
 mod metadata;
+mod runs;
 mod structure;
 
 use crate::ast::{self, Container, Kind, Var};

@@ -106,7 +106,7 @@ where
     }
 
     /// One cycle: exchange, unpack bits, writes from outside, tick, pack bits, publish, retain,
-    /// report.
+    /// report. Returns when its work ended (before the report).
     fn once(
         &mut self,
         backend: &mut (dyn IoBackend<T> + Send),
@@ -156,7 +156,8 @@ where
         {
             writer.offer(self.image.0);
         }
-        self.report(start.elapsed(), &io);
+        let end = Instant::now();
+        self.report(end - start, &io);
         #[cfg(feature = "cycle-probe")]
         if let (Some(probe), Some(bus), Some(exchange_end), Some((tick_start, tick_end))) = (
             self.probe.as_mut(),
@@ -164,7 +165,6 @@ where
             exchange_end,
             tick_times,
         ) {
-            let end = Instant::now();
             // The backend's own stamps of its frame exchange, if it made them; otherwise the
             // whole exchange counts as the bus's.
             let (bus_start, bus_end) = super::probe::take_bus().unwrap_or((bus, exchange_end));
