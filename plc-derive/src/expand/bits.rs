@@ -143,14 +143,12 @@ pub fn expand(c: &Container) -> TokenStream {
         .map(|(f, ty)| quote!(<#ty as #p::PlcType>::__pack_bits(&mut self.#f);));
     quote! {
         #[inline]
-        #[allow(unsafe_code)]
         fn unpack_bits(&mut self) {
             #unpack
             #(#unpack_nested)*
         }
 
         #[inline]
-        #[allow(unsafe_code)]
         fn pack_bits(&mut self) {
             #(#pack_nested)*
             #pack

@@ -128,15 +128,16 @@ pub fn expand(c: &Container) -> TokenStream {
             }
         }
 
+        // The loops over runs use `unsafe` (`field_at`), with no `#[allow(unsafe_code)]`:
+        // rustc does not apply that lint to what a derive expands, and an `allow` would be an
+        // error in a crate that forbids unsafe code (tests/pass/forbid_unsafe_code.rs).
         #[inline]
-        #[allow(unsafe_code)]
         fn load_image(&mut self, image: &#image) {
             #at
             #load
         }
 
         #[inline]
-        #[allow(unsafe_code)]
         fn store_image(&self, image: &mut #image) {
             #at
             #store

@@ -93,14 +93,12 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
             }
 
             #[inline]
-            #[allow(unsafe_code)]
             fn __unpack_bits(&mut self) {
                 #unpack
                 #(<#tys as #p::PlcType>::__unpack_bits(&mut self.#idents);)*
             }
 
             #[inline]
-            #[allow(unsafe_code)]
             fn __pack_bits(&mut self) {
                 #(<#tys as #p::PlcType>::__pack_bits(&mut self.#idents);)*
                 #pack
