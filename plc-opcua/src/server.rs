@@ -123,6 +123,13 @@ async fn run(options: &ServeOptions, users: Arc<Users>) -> Result<(), ServeError
         limits.operational.max_nodes_per_read = 100_000;
         limits.operational.max_monitored_items_per_call = 100_000;
         limits.operational.max_nodes_per_browse = 100_000;
+        // One Read (or CreateMonitoredItems) of every variable of a large program: 10,000
+        // nodes are a request of about 300 KB holding an array of 10,000, which
+        // async-opcua's defaults (arrays of 1,000 elements, messages of 5 chunks of 64 KiB)
+        // refuse. Up to the node limits above, still bounded: 16 MiB a message.
+        limits.max_array_length = 100_000;
+        limits.max_message_size = 16 << 20;
+        limits.max_chunk_count = 256;
     }
     builder = builder.subscription_poll_interval_ms(fastest_ms as u64);
     let (server, handle) = builder.build().map_err(ServeError)?;

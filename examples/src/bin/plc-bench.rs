@@ -2,9 +2,10 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import` runs some groups
-//! of figures.
-//! `cycle_10k` and `derive` compile generated crates: their first run takes minutes.
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,tools,opcua` runs
+//! some groups of figures.
+//! `cycle_10k`, `derive`, `tools` and `opcua` compile generated crates: their first run takes
+//! minutes.
 
 use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
 use examples::bench::derive_check::{Crate, Flavour};
@@ -24,7 +25,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 7] = [
+const GROUPS: [&str; 9] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -32,6 +33,8 @@ const GROUPS: [&str; 7] = [
     "process_image",
     "derive",
     "import",
+    "tools",
+    "opcua",
 ];
 
 fn main() {
@@ -70,6 +73,14 @@ fn main() {
             "snapshot" => snapshot_latency(&segment, if quick { 3 } else { 10 }),
             "process_image" => process_image(batches),
             "derive" => derive_check(if quick { 1 } else { 3 }),
+            "tools" => match examples::bench::tools::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&e),
+            },
+            "opcua" => match examples::bench::opcua::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&e),
+            },
             _ => import_10k(),
         }
     }
