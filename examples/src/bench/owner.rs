@@ -15,7 +15,8 @@
 //!
 //! Both have `cycle` (the cycle count, every cycle) and `event_utc_ns` (every
 //! [`EVENT_EVERY`]th cycle: the wall-clock time, CLOCK_REALTIME in ns, read in that cycle's
-//! tick), and a tenth of the other variables change every cycle. `event_utc_ns` is what the
+//! tick); every cycle, a tenth of the other top-level variables and two members of every tenth
+//! axis change (about 380 of `Flat4k`'s values, 340 of `Mixed10k`'s). `event_utc_ns` is what the
 //! notification figure matches: a client that receives a new value knows from the value itself
 //! which cycle changed it and when.
 //!
