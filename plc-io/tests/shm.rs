@@ -345,7 +345,11 @@ fn a_tool_finds_every_name_as_the_descriptor_does_in_any_case() {
     assert_eq!(seg.index_of("Speed"), Machine::index_of("speed"));
     assert_eq!(seg.index_of("no_such_variable"), None);
     assert_eq!(seg.index_of(""), None);
-    assert_eq!(seg.index_of("table[1]"), None, "an element is not a variable's name");
+    assert_eq!(
+        seg.index_of("table[1]"),
+        None,
+        "an element is not a variable's name"
+    );
 }
 
 #[test]

@@ -25,9 +25,9 @@
 use super::owner::{self, Owner, PERIOD};
 use opcua::client::{ClientBuilder, DataChangeCallback, IdentityToken, Session};
 use opcua::types::{
-    DataValue, EndpointDescription, ExtensionObject, MessageSecurityMode, MonitoredItemCreateRequest,
-    MonitoringMode, MonitoringParameters, NodeId, ReadValueId, TimestampsToReturn,
-    UserTokenPolicy, VariableId, Variant,
+    DataValue, EndpointDescription, ExtensionObject, MessageSecurityMode,
+    MonitoredItemCreateRequest, MonitoringMode, MonitoringParameters, NodeId, ReadValueId,
+    TimestampsToReturn, UserTokenPolicy, VariableId, Variant,
 };
 use plc_io::shm::DynSegment;
 use std::fmt::Write;
@@ -109,8 +109,16 @@ async fn measure(
     }
     let rounds = if quick { 5 } else { 15 };
     let load = cycle_ratio(&clients, seg, &nodes, rounds).await?;
-    let _ = writeln!(out, "cycle_without_opcua_clients_us: {:.1}", load.idle.median_us);
-    let _ = writeln!(out, "cycle_with_opcua_clients_us: {:.1}", load.busy.median_us);
+    let _ = writeln!(
+        out,
+        "cycle_without_opcua_clients_us: {:.1}",
+        load.idle.median_us
+    );
+    let _ = writeln!(
+        out,
+        "cycle_with_opcua_clients_us: {:.1}",
+        load.busy.median_us
+    );
     let _ = writeln!(
         out,
         "cycle_with_opcua_clients_ratio: {:.2}",
@@ -121,11 +129,7 @@ async fn measure(
         "cycle_with_opcua_clients_mean_ratio: {:.2}",
         load.busy.mean_us / load.idle.mean_us
     );
-    let _ = writeln!(
-        out,
-        "opcua_clients_values_per_s: {:.0}",
-        load.values_per_s
-    );
+    let _ = writeln!(out, "opcua_clients_values_per_s: {:.0}", load.values_per_s);
     for c in clients {
         c.close().await;
     }
@@ -206,10 +210,6 @@ async fn notify_latency(session: &Session, event: NodeId, seconds: u64) -> Resul
                     && stamp > 0
                 {
                     let now = utc_ns();
-                    if std::env::var_os("PLC_BENCH_DEBUG").is_some() {
-                        let ns = |d: Option<opcua::types::DateTime>| d.and_then(|d| d.as_chrono().timestamp_nanos_opt()).unwrap_or(0) - stamp as i64;
-                        eprintln!("src {:.2} srv {:.2} client {:.2}", ns(value.source_timestamp) as f64 / 1e6, ns(value.server_timestamp) as f64 / 1e6, (now - stamp) as f64 / 1e6);
-                    }
                     let mut l = sink.lock().unwrap_or_else(|e| e.into_inner());
                     l.push(now as i64 - stamp as i64);
                 }
@@ -217,11 +217,8 @@ async fn notify_latency(session: &Session, event: NodeId, seconds: u64) -> Resul
         )
         .await
         .map_err(|e| format!("create subscription: {e}"))?;
-    let item = MonitoredItemCreateRequest::new(
-        event.into(),
-        MonitoringMode::Reporting,
-        parameters(1),
-    );
+    let item =
+        MonitoredItemCreateRequest::new(event.into(), MonitoringMode::Reporting, parameters(1));
     let created = session
         .create_monitored_items(subscription, TimestampsToReturn::Both, vec![item])
         .await
@@ -329,7 +326,10 @@ async fn cycle_ratio(
     for _ in 0..rounds.max(1) {
         idle.push(owner_cycle_us(seg, WINDOW).await);
         let mut subscriptions = Vec::new();
-        for (c, share) in clients.iter().zip(nodes.chunks(nodes.len() / clients.len())) {
+        for (c, share) in clients
+            .iter()
+            .zip(nodes.chunks(nodes.len() / clients.len()))
+        {
             let counter = values.clone();
             let id = c
                 .session
@@ -401,7 +401,10 @@ struct Window {
 async fn owner_cycle_us(seg: &DynSegment, window: Duration) -> Window {
     let total = |seg: &DynSegment| {
         let s = seg.status();
-        (s.cycle_count, s.stats.mean.as_secs_f64() * s.cycle_count as f64)
+        (
+            s.cycle_count,
+            s.stats.mean.as_secs_f64() * s.cycle_count as f64,
+        )
     };
     let (c1, t1) = total(seg);
     let end = Instant::now() + window;

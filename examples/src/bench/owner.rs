@@ -34,8 +34,11 @@ pub const EVENT_EVERY: u64 = 20;
 /// The owner's period.
 pub const PERIOD: Duration = Duration::from_millis(1);
 
-/// The members of one axis of `Mixed10k`: name, type, bit mapping.
-const AXIS: [(&str, &str, Option<(&str, u8)>); 10] = [
+/// A member of an axis: name, type, and the word and bit of a bit-mapped bool.
+type AxisMember = (&'static str, &'static str, Option<(&'static str, u8)>);
+
+/// The members of one axis of `Mixed10k`.
+const AXIS: [AxisMember; 10] = [
     ("pos", "f64", None),
     ("target", "f64", None),
     ("speed", "f32", None),
@@ -215,11 +218,7 @@ pub fn build() -> Result<PathBuf, String> {
     write_if_changed(&dir.join("Cargo.toml"), &manifest).map_err(io)?;
     std::fs::copy(workspace.join("Cargo.lock"), dir.join("Cargo.lock")).map_err(io)?;
     write_if_changed(&dir.join("src/main.rs"), &main_source()).map_err(io)?;
-    write_if_changed(
-        &dir.join("src/flat4k.rs"),
-        &declaration("Flat4k", 4000, 0),
-    )
-    .map_err(io)?;
+    write_if_changed(&dir.join("src/flat4k.rs"), &declaration("Flat4k", 4000, 0)).map_err(io)?;
     write_if_changed(
         &dir.join("src/mixed10k.rs"),
         &declaration("Mixed10k", 2000, 800),
@@ -247,7 +246,15 @@ pub fn plc_binary() -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let target = workspace.join("target");
     let built = Command::new(&cargo)
-        .args(["build", "--release", "--quiet", "-p", "plc-cli", "--bin", "plc"])
+        .args([
+            "build",
+            "--release",
+            "--quiet",
+            "-p",
+            "plc-cli",
+            "--bin",
+            "plc",
+        ])
         .current_dir(&workspace)
         .env("CARGO_TARGET_DIR", &target)
         .status()
@@ -324,7 +331,11 @@ pub fn leaf_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
             }
         } else {
             for e in 0..v.elements() {
-                out.extend(v.members.iter().map(|m| format!("{}[{e}].{}", v.name, m.name)));
+                out.extend(
+                    v.members
+                        .iter()
+                        .map(|m| format!("{}[{e}].{}", v.name, m.name)),
+                );
             }
         }
     }

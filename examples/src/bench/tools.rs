@@ -40,13 +40,21 @@ pub fn run(quick: bool) -> Result<String, String> {
     let mut out = String::new();
     let (hashed, scan) = read_by_name(&seg, &names, if quick { 15 } else { 61 })?;
     let _ = writeln!(out, "tools_read_4000_us: {:.0}", hashed.as_secs_f64() * 1e6);
-    let _ = writeln!(out, "tools_read_4000_scan_us: {:.0}", scan.as_secs_f64() * 1e6);
+    let _ = writeln!(
+        out,
+        "tools_read_4000_scan_us: {:.0}",
+        scan.as_secs_f64() * 1e6
+    );
     let get = plc_get(&plc, &segment, &names, if quick { 5 } else { 15 })?;
     let _ = writeln!(out, "plc_get_4000_ms: {:.1}", get.as_secs_f64() * 1e3);
     let seconds = if quick { 10 } else { 30 };
     match watch_frames(&plc, &segment, seconds) {
         Ok((p99, frames)) => {
-            let _ = writeln!(out, "watch_4000_frame_p99_ms: {:.1}", p99.as_secs_f64() * 1e3);
+            let _ = writeln!(
+                out,
+                "watch_4000_frame_p99_ms: {:.1}",
+                p99.as_secs_f64() * 1e3
+            );
             let _ = writeln!(out, "watch_4000_frames: {frames}");
         }
         Err(why) => {
