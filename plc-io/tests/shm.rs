@@ -334,6 +334,27 @@ pub struct Other {
 }
 
 #[test]
+fn a_tool_finds_every_name_as_the_descriptor_does_in_any_case() {
+    let name = unique("names");
+    let _owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
+    let seg = DynSegment::attach(&name).unwrap();
+    for (i, v) in seg.descriptor().variables.iter().enumerate() {
+        for spelled in [v.name.clone(), v.name.to_ascii_uppercase()] {
+            assert_eq!(seg.index_of(&spelled), Some(i), "{spelled}");
+            assert_eq!(seg.descriptor().index_of(&spelled), Some(i), "{spelled}");
+        }
+    }
+    assert_eq!(seg.index_of("Speed"), Machine::index_of("speed"));
+    assert_eq!(seg.index_of("no_such_variable"), None);
+    assert_eq!(seg.index_of(""), None);
+    assert_eq!(
+        seg.index_of("table[1]"),
+        None,
+        "an element is not a variable's name"
+    );
+}
+
+#[test]
 fn attaching_checks_name_layout_and_size() {
     assert_eq!(
         DynSegment::attach("no_such_segment_here").err(),

@@ -2,9 +2,10 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus` runs some groups
-//! of figures.
-//! `cycle_10k` and `derive` compile generated crates: their first run takes minutes.
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua`
+//! runs some groups of figures.
+//! `cycle_10k`, `derive`, `tools` and `opcua` compile generated crates: their first run takes
+//! minutes.
 //! `--full` adds the opt-in group `cycle_100k` (a 100,000-variable crate: its build takes far
 //! longer than CI can spend), which `--only cycle_100k` also names.
 
@@ -26,7 +27,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 8] = [
+const GROUPS: [&str; 10] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -35,6 +36,8 @@ const GROUPS: [&str; 8] = [
     "derive",
     "import",
     "bus",
+    "tools",
+    "opcua",
 ];
 
 /// Groups that run only when asked for (`--full`, or by name in `--only`).
@@ -95,6 +98,14 @@ fn main() {
             "bus" => match examples::bench::bus::run(quick) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("bus: {e}")),
+            },
+            "tools" => match examples::bench::tools::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&e),
+            },
+            "opcua" => match examples::bench::opcua::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&e),
             },
             _ => import_10k(),
         }

@@ -35,7 +35,6 @@ pub fn is_path(seg: &DynSegment, spec: &str) -> bool {
     let head = spec.split(['[', '.']).next().unwrap_or(spec);
     spec.contains(['.', ','])
         || seg
-            .descriptor()
             .index_of(head.trim())
             .is_some_and(|i| !seg.descriptor().variables[i].members.is_empty())
 }
@@ -74,7 +73,7 @@ pub fn resolve<'a>(
         }
         None => (spec, None),
     };
-    let i = seg.descriptor().index_of(name).ok_or_else(|| {
+    let i = seg.index_of(name).ok_or_else(|| {
         format!(
             "segment `{}` has no variable `{name}` (`plc list {}` shows them)",
             seg.name(),

@@ -2,7 +2,8 @@
 //! PgUp/PgDn select, Enter write a value to the selected variable (checked as `plc set`
 //! checks), `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
 //! changed in the last second are highlighted. Structures and arrays of structures are a tree:
-//! Right (or Enter) opens the selected one, Left closes it.
+//! Right (or Enter) opens the selected one, Left closes it. `PLC_WATCH_FRAME_LOG=FILE` appends
+//! each refresh's time to FILE (see [`frame_log`]).
 
 use super::{Error, period_of, set, show, type_text};
 use plc_io::shm::{DynSegment, PathLocation, PathTarget};
@@ -12,6 +13,7 @@ use ratatui::style::{Modifier, Style, Stylize};
 use ratatui::text::Line;
 use ratatui::widgets::{Block, Paragraph, Row, Table, TableState};
 use std::collections::{HashMap, HashSet};
+use std::io::Write;
 use std::time::{Duration, Instant};
 
 enum Mode {
@@ -65,16 +67,21 @@ struct Watch {
 impl Watch {
     fn new(seg: DynSegment, filter: Option<String>) -> Watch {
         let vars = &seg.descriptor().variables;
+        // Each word's bools in one pass: a scan of all variables per word is quadratic, and
+        // a program of 4,000 variables would wait for it at every start.
+        let mut bits: Vec<Vec<usize>> = vec![Vec::new(); vars.len()];
+        for (j, b) in vars.iter().enumerate() {
+            if let Some(m) = b.bit
+                && let Some(under) = bits.get_mut(m.source)
+            {
+                under.push(j);
+            }
+        }
         let mut order = Vec::with_capacity(vars.len());
         for (i, v) in vars.iter().enumerate() {
             if v.bit.is_none() {
                 order.push(i);
-                order.extend(
-                    vars.iter()
-                        .enumerate()
-                        .filter(|(_, b)| b.bit.is_some_and(|m| m.source == i))
-                        .map(|(j, _)| j),
-                );
+                order.extend(&bits[i]);
             }
         }
         let mut w = Watch {
@@ -400,14 +407,21 @@ pub fn run(segment: &str, filter: Option<String>, rate: f64) -> Result<(), Error
     let seg = DynSegment::attach(segment)?;
     let mut w = Watch::new(seg, filter);
     w.refresh()?;
+    let mut frame_log = frame_log()?;
     let mut terminal = ratatui::init();
     let outcome = (|| -> Result<Option<String>, Error> {
         let mut next = Instant::now();
         loop {
+            let started = Instant::now();
             if let Err(e) = w.refresh() {
                 return Ok(Some(format!("plc watch: {e}")));
             }
             terminal.draw(|f| w.draw(f))?;
+            if let Some(log) = &mut frame_log {
+                // One short line per frame, flushed so a reader sees every finished frame.
+                let _ = writeln!(log, "{}", started.elapsed().as_micros());
+                let _ = log.flush();
+            }
             next += period;
             while event::poll(next.saturating_duration_since(Instant::now()))? {
                 if let Event::Key(k) = event::read()?
@@ -428,6 +442,21 @@ pub fn run(segment: &str, filter: Option<String>, rate: f64) -> Result<(), Error
         eprintln!("{message}");
     }
     outcome.map(|_| ())
+}
+
+/// `PLC_WATCH_FRAME_LOG=FILE`: each refresh's time (snapshot, values, drawing the window,
+/// written to the terminal) in microseconds, one line per frame, appended to FILE (what
+/// plc-bench's `watch_4000_frame_p99_ms` reads). Not set: nothing is timed or written.
+fn frame_log() -> Result<Option<std::io::BufWriter<std::fs::File>>, Error> {
+    let Some(path) = std::env::var_os("PLC_WATCH_FRAME_LOG") else {
+        return Ok(None);
+    };
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(&path)
+        .map_err(|e| format!("PLC_WATCH_FRAME_LOG {}: {e}", path.to_string_lossy()))?;
+    Ok(Some(std::io::BufWriter::new(file)))
 }
 
 /// The last step of a path, as a tree line shows it under its parent: `pos`, `[1]`.

@@ -51,6 +51,20 @@ impl DynSegment {
         self.view.owner_state()
     }
 
+    /// Index of a top-level variable by name, case-insensitively: what
+    /// [`LayoutDescriptor::index_of`] finds, from an index built at the first lookup, so
+    /// finding each of thousands of names costs the same as finding one.
+    ///
+    /// ```no_run
+    /// let seg = plc_io::shm::DynSegment::attach("tensile_tester")?;
+    /// let i = seg.index_of("SPEED_SETPOINT").expect("declared");
+    /// assert_eq!(seg.descriptor().variables[i].name, "speed_setpoint");
+    /// # Ok::<(), plc_io::shm::ShmError>(())
+    /// ```
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        self.view.index_of(name)
+    }
+
     /// A consistent copy of the whole image.
     pub fn snapshot_bytes(&self) -> Result<Vec<u8>, ShmError> {
         self.view.snapshot_bytes()

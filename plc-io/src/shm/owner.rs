@@ -145,6 +145,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
                 desc,
                 generation,
                 checked_alive: Default::default(),
+                names: Default::default(),
             },
             inbox: Inbox {
                 rx: Mutex::new(rx),

@@ -10,7 +10,8 @@ use super::segment::{self, Segment};
 use super::status::{OwnerState, RunState, Status};
 use super::{ShmError, bytes};
 use plc_core::Value;
-use std::cell::Cell;
+use std::cell::{Cell, OnceCell};
+use std::collections::HashMap;
 use std::sync::atomic::{Ordering, fence};
 use std::time::{Duration, Instant};
 
@@ -35,6 +36,10 @@ pub(crate) struct View {
     pub desc: LayoutDescriptor,
     pub generation: u64,
     pub checked_alive: Cell<Option<Instant>>,
+    /// Top-level variables by lower-case name, built at the first lookup: a tool that names
+    /// thousands of variables (`plc get` of 4,000 names) finds each in constant time, where a
+    /// scan of the descriptor per name is quadratic.
+    pub names: OnceCell<HashMap<String, usize>>,
 }
 
 impl View {
@@ -150,6 +155,7 @@ impl View {
             off,
             desc,
             checked_alive: Cell::new(None),
+            names: OnceCell::new(),
         })
     }
 
@@ -221,9 +227,25 @@ impl View {
         Ok(buf)
     }
 
+    /// Index of a top-level variable by name, case-insensitively (as
+    /// [`LayoutDescriptor::index_of`], the first of equal names).
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        let names = self.names.get_or_init(|| {
+            let mut names = HashMap::with_capacity(self.desc.variables.len());
+            for (i, v) in self.desc.variables.iter().enumerate() {
+                names.entry(v.name.to_ascii_lowercase()).or_insert(i);
+            }
+            names
+        });
+        if name.bytes().any(|b| b.is_ascii_uppercase()) {
+            names.get(&name.to_ascii_lowercase()).copied()
+        } else {
+            names.get(name).copied()
+        }
+    }
+
     pub fn var_index(&self, name: &str) -> Result<usize, ShmError> {
-        self.desc
-            .index_of(name)
+        self.index_of(name)
             .ok_or_else(|| ShmError::UnknownVariable {
                 segment: self.name().to_string(),
                 variable: name.to_string(),
