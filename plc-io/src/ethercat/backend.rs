@@ -30,6 +30,7 @@ struct Running {
     maindevice: MainDevice<'static>,
     group: Option<Stage>,
     driver: Option<DriverGuard>,
+    frame_thread: super::transport::FrameThread,
     /// What ethercrab configured on each SubDevice, in ring order, to restore after a fault.
     configured: Vec<Configured>,
     recovery: RecoveryTimer,
@@ -162,11 +163,12 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         let transport = self.transport.take().ok_or(EtherCatError::State(
             "this EtherCAT backend was started before: build a new one to start again",
         ))?;
-        let (maindevice, driver) = super::transport::open(transport, &self.options)?;
+        let (maindevice, driver, frame_thread) = super::transport::open(transport, &self.options)?;
         let mut running = Running {
             maindevice,
             group: None,
             driver: Some(driver),
+            frame_thread,
             configured: Vec::new(),
             recovery: RecoveryTimer::new(self.options.recovery_interval),
         };
@@ -183,8 +185,14 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
                 Ok(())
             }
             Err(e) => {
+                let ended = running.frame_thread.ended();
                 running.release();
-                Err(e)
+                Err(match ended {
+                    Some(problem) => {
+                        EtherCatError::Transport(format!("{problem} (while bringing it up: {e})"))
+                    }
+                    None => e,
+                })
             }
         }
     }
@@ -219,11 +227,12 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         }
         let in_op_stage = matches!(running.group, Some(Stage::Op(_)));
         if self.status.state == BusState::NoAnswer {
-            self.set_problems(vec![
+            let problem = running.frame_thread.ended().unwrap_or_else(|| {
                 "no frame came back from the bus: check the cable from the network interface \
                  to the first SubDevice, and its power"
-                    .into(),
-            ]);
+                    .into()
+            });
+            self.set_problems(vec![problem]);
         } else if in_op_stage
             && running.recovery.due(Instant::now())
             && let Some(Stage::Op(g)) = &running.group

@@ -103,7 +103,7 @@ impl std::error::Error for ScanError {}
 /// Scans the bus behind `transport`: see the module documentation. The SubDevices are left
 /// in INIT.
 pub fn scan(transport: Transport, options: &Options) -> Result<ScannedBus, ScanError> {
-    let (maindevice, driver) =
+    let (maindevice, driver, _) =
         super::transport::open(transport, options).map_err(ScanError::Bus)?;
     let result = scan_group(&maindevice);
     // SAFETY: every ethercrab call in `scan_group` was awaited to its end, so no frame is in
