@@ -58,7 +58,9 @@ pub(crate) mod sealed {
             plc_core::Time, a #[derive(PlcStruct)] structure, or an array of these with up to 3 \
             dimensions"
 )]
-pub trait PlcType: Copy + sealed::Sealed + 'static {
+// `Clone`, not `Copy`: a structure (`#[derive(PlcStruct)]`) need only be `Clone`, as a
+// GlobalMemory struct is; the image conversions work through references.
+pub trait PlcType: Clone + sealed::Sealed + 'static {
     /// IEC type of one element, as the Rust type maps it (a `u16` is `UINT`).
     const IEC_TYPE: IecType;
     /// Number of array dimensions, 0 for a scalar.
