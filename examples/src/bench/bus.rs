@@ -1,6 +1,6 @@
 //! plc-bench group `bus`: `plc_io::Runtime` driving the simulated tensile-tester bus over a
 //! veth pair with raw sockets, as on a real NIC, against the loop a user writes directly on
-//! ethercrab instead ([`direct`]), on the same bus with the same process data and the same
+//! ethercrab instead (`bus/direct.rs`), on the same bus with the same process data and the same
 //! tick. The two run in alternating blocks of a fixed number of cycles (so both see the same
 //! machine load), each block on a thread of its own pinned to the same CPU, under SCHED_FIFO
 //! where it is permitted; each figure is the median over the blocks. The same comparison on
