@@ -134,6 +134,20 @@ pub trait PlcType: Clone + sealed::Sealed + 'static {
         let _ = (n, v);
         self
     }
+    /// An integer's bits, zero-extended to 64; 0 for other types.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __bits(self) -> u64 {
+        0
+    }
+    /// The integer with the bits of `mask` taken from `bits`, the others unchanged; other
+    /// types unchanged.
+    #[doc(hidden)]
+    #[inline(always)]
+    fn __with_bits(self, mask: u64, bits: u64) -> Self {
+        let _ = (mask, bits);
+        self
+    }
     /// A bool's value; `false` for other types.
     #[doc(hidden)]
     #[inline(always)]
@@ -284,6 +298,14 @@ macro_rules! bits {
         #[inline(always)]
         fn __with_bit(self, n: u32, v: bool) -> Self {
             (self & !(1 << n)) | ((v as $t) << n)
+        }
+        #[inline(always)]
+        fn __bits(self) -> u64 {
+            (self as u64) & (u64::MAX >> (64 - <$t>::BITS))
+        }
+        #[inline(always)]
+        fn __with_bits(self, mask: u64, bits: u64) -> Self {
+            (((self as u64) & !mask) | (bits & mask)) as $t
         }
     };
 }

@@ -92,6 +92,83 @@ pub fn with_bit<S: PlcType>(source: S, bit: u32, value: bool) -> S {
     source.__with_bit(bit, value)
 }
 
+/// Bits `bit..bit + 8` of a source word as the bytes of eight bools (each 0 or 1), bit `bit`
+/// in the lowest byte: a long bit run moves eight bools with one table lookup instead of
+/// eight shifts.
+///
+/// ```
+/// # use plc_core::__private::bools_from_byte;
+/// assert_eq!(bools_from_byte(0b1_0000_0110u16, 1).to_le_bytes(), [1, 1, 0, 0, 0, 0, 0, 1]);
+/// ```
+#[inline(always)]
+pub fn bools_from_byte<S: PlcType>(source: S, bit: u32) -> u64 {
+    BOOL_LANES[((source.__bits() >> bit) & 0xff) as usize]
+}
+
+/// Each byte's eight bits as eight lanes of 0 or 1 (2 KiB, computed at compile time).
+static BOOL_LANES: [u64; 256] = {
+    let mut table = [0u64; 256];
+    let mut byte = 0;
+    while byte < 256 {
+        // The byte in every lane, lane i keeping its bit i; then each lane made 0 or 1
+        // (adding 0x7f to a lane that is not zero sets its top bit, and cannot carry out).
+        let lanes = (byte as u64).wrapping_mul(0x0101_0101_0101_0101) & 0x8040_2010_0804_0201;
+        table[byte] = ((lanes + 0x7f7f_7f7f_7f7f_7f7f) & 0x8080_8080_8080_8080) >> 7;
+        byte += 1;
+    }
+    table
+};
+
+/// A source word with bits `bit..bit + 8` set from the bytes of eight bools (each 0 or 1,
+/// the lowest byte to bit `bit`), its other bits unchanged.
+///
+/// ```
+/// # use plc_core::__private::with_byte_from_bools;
+/// let bools = u64::from_le_bytes([1, 1, 0, 0, 0, 0, 0, 1]);
+/// assert_eq!(with_byte_from_bools(0xf001u16, 1, bools), 0xf107);
+/// ```
+#[inline(always)]
+pub fn with_byte_from_bools<S: PlcType>(source: S, bit: u32, bools: u64) -> S {
+    // Lane i times 2^(7 - i) lands in the top byte at bit i; no lane sum carries.
+    let byte = bools.wrapping_mul(0x0102_0408_1020_4080) >> 56;
+    source.__with_bits(0xff << bit, byte << bit)
+}
+
+/// The bytes of the eight bools at `offset` of `s`.
+///
+/// # Safety
+///
+/// Bytes `offset..offset + 8` of `s` are eight `bool` fields.
+#[inline(always)]
+pub unsafe fn bool_bytes<S>(s: &S, offset: usize) -> u64 {
+    // SAFETY: by the caller's promise the eight bytes are initialised fields of `s`.
+    u64::from_le(unsafe {
+        (s as *const S)
+            .cast::<u8>()
+            .add(offset)
+            .cast::<u64>()
+            .read_unaligned()
+    })
+}
+
+/// Sets the eight bools at `offset` of `s` from `bytes` (each 0 or 1).
+///
+/// # Safety
+///
+/// As [`bool_bytes`], and every byte of `bytes` is 0 or 1 (a valid `bool`).
+#[inline(always)]
+pub unsafe fn set_bool_bytes<S>(s: &mut S, offset: usize, bytes: u64) {
+    // SAFETY: by the caller's promise the eight bytes are `bool` fields of `s` and each value
+    // is a valid `bool`; the `&mut S` makes the write exclusive.
+    unsafe {
+        (s as *mut S)
+            .cast::<u8>()
+            .add(offset)
+            .cast::<u64>()
+            .write_unaligned(bytes.to_le())
+    }
+}
+
 /// A bit-mapped bool's value.
 #[inline(always)]
 pub fn to_bit<T: PlcType>(value: T) -> bool {
@@ -318,7 +395,32 @@ pub fn write_located<T: PlcType, B: AsRef<[u8]> + AsMut<[u8]>>(
 
 #[cfg(test)]
 mod tests {
-    use super::facts;
+    use super::{bools_from_byte, facts, get_bit, with_bit, with_byte_from_bools};
+
+    #[test]
+    fn eight_bools_at_once_are_the_eight_single_bit_moves() {
+        for word in (0..=u16::MAX).step_by(7).chain([u16::MAX]) {
+            for bit in 0..=8 {
+                let lanes = bools_from_byte(word, bit).to_le_bytes();
+                let bools: [bool; 8] = std::array::from_fn(|i| get_bit(word, bit + i as u32));
+                assert_eq!(lanes, bools.map(u8::from), "{word:#06x} from bit {bit}");
+                // Packed back over another word: those eight bits change, no other.
+                let other = word.rotate_left(5) ^ 0xa5a5;
+                let one_by_one = (0..8).fold(other, |w, i| with_bit(w, bit + i, bools[i as usize]));
+                let packed = with_byte_from_bools(other, bit, u64::from_le_bytes(lanes));
+                assert_eq!(
+                    packed, one_by_one,
+                    "{word:#06x} into {other:#06x} at bit {bit}"
+                );
+            }
+        }
+        let signed = with_byte_from_bools(-1i64, 56, 0);
+        assert_eq!(
+            signed, 0x00ff_ffff_ffff_ffff,
+            "the top byte of a signed word"
+        );
+        assert_eq!(bools_from_byte(i8::MIN, 0).to_le_bytes()[7], 1);
+    }
 
     #[test]
     fn real_initials_must_be_finite_and_in_range() {

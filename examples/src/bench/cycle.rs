@@ -190,7 +190,9 @@ where
     let mut floor = MemcpyFloor::new(size_of::<T::Image>());
     let (mut ours, mut memcpy) = (Vec::new(), Vec::new());
     let mut batch_start: Option<Instant> = None;
-    let mut count = 0u32;
+    // A countdown, not `count % iters`: the tick is the program's, and a division in it
+    // would be timed as the runtime's.
+    let mut left = 0u32;
     let cycles = batches as u64 * u64::from(iters) + 1;
     plc_io::Runtime::<T>::builder()
         .segment(segment)
@@ -199,14 +201,15 @@ where
         .handle_signals(false)
         .build()
         .run(|_| {
-            if count.is_multiple_of(iters) {
+            if left == 0 {
                 if let Some(start) = batch_start {
                     ours.push(start.elapsed() / iters);
                 }
                 memcpy.push(super::timing::median_per_iter(1, iters, || floor.step()));
                 batch_start = Some(Instant::now());
+                left = iters;
             }
-            count += 1;
+            left -= 1;
         })?;
     let median = |mut v: Vec<Duration>| {
         v.sort();

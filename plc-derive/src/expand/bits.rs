@@ -38,7 +38,8 @@ pub fn moves(c: &Container) -> (TokenStream, TokenStream) {
     (unpack, pack)
 }
 
-/// The unpack and pack loops of a bit run: one pass per source word, one move per bit.
+/// The unpack and pack loops of a bit run: one pass per source word, one move per bit or,
+/// where the bools are one byte apart, per eight bits.
 fn bit_loops(c: &Container, run: BitRun) -> (TokenStream, TokenStream) {
     let p = private(c);
     let ident = c.ident;
@@ -83,14 +84,27 @@ fn bit_loops(c: &Container, run: BitRun) -> (TokenStream, TokenStream) {
         };
         let __plc_bit = #first + __plc_j as u32;
     };
-    let each = |word: TokenStream, bit: TokenStream, after: TokenStream| {
+    // Bools one byte apart (as the compiler lays out a struct's bools): eight at a time,
+    // through their bytes; the rest bit by bit.
+    let bytes_at = quote! {
+        let __plc_at = __plc_bools[0] + __plc_w * #bits + __plc_j;
+        let __plc_bit = #first + __plc_j as u32;
+    };
+    let each = |word: TokenStream, byte: TokenStream, bit: TokenStream, after: TokenStream| {
         quote! {{
             #setup
+            const __PLC_BYTEWISE: bool = ::core::mem::size_of::<#bool_ty>() == 1
+                && ::core::matches!(__PLC_BOOL_STEP, ::core::option::Option::Some([1]));
             let mut __plc_w = 0usize;
             while __plc_w < #n_words {
                 #word_at
                 #word
                 let mut __plc_j = 0usize;
+                while __PLC_BYTEWISE && __plc_j + 8 <= #bits {
+                    #bytes_at
+                    #byte
+                    __plc_j += 8;
+                }
                 while __plc_j < #bits {
                     #bool_at
                     #bit
@@ -103,10 +117,15 @@ fn bit_loops(c: &Container, run: BitRun) -> (TokenStream, TokenStream) {
     };
     // SAFETY (all): `__plc_word` and `__plc_bool` are `offset_of!` of the run's words and
     // bools, each of the same type tokens as the run's first, so of `src_ty` and `bool_ty`;
-    // no two of the references are alive at once.
+    // no two of the references are alive at once. Bytewise, `__plc_at..__plc_at + 8` are
+    // eight of the run's bools (one byte each, one byte apart: `__PLC_BYTEWISE`), written
+    // only with bytes of 0 or 1.
     let unpack = each(
         quote!(let __plc_value: #src_ty =
             *unsafe { #p::field_at::<#ident, #src_ty>(self, __plc_word) };),
+        quote!(unsafe {
+            #p::set_bool_bytes(self, __plc_at, #p::bools_from_byte(__plc_value, __plc_bit))
+        };),
         quote!(#p::set_from_bit(
             unsafe { #p::field_at_mut::<#ident, #bool_ty>(self, __plc_bool) },
             #p::get_bit(__plc_value, __plc_bit),
@@ -116,6 +135,11 @@ fn bit_loops(c: &Container, run: BitRun) -> (TokenStream, TokenStream) {
     let pack = each(
         quote!(let mut __plc_value: #src_ty =
             *unsafe { #p::field_at::<#ident, #src_ty>(self, __plc_word) };),
+        quote!(__plc_value = #p::with_byte_from_bools(
+            __plc_value,
+            __plc_bit,
+            unsafe { #p::bool_bytes(self, __plc_at) },
+        );),
         quote!(__plc_value = #p::with_bit(__plc_value, __plc_bit, #p::to_bit(
             *unsafe { #p::field_at::<#ident, #bool_ty>(self, __plc_bool) },
         ));),

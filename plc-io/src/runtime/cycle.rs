@@ -1,7 +1,9 @@
 //! The steps of [`Runtime::run`](super::Runtime::run): start, one cycle repeated at the period,
 //! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
 
+use super::clock::{CycleClock, monotonic_ns};
 use super::schedule::Schedule;
+use super::stats::RunningMean;
 use super::{
     Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
 };
@@ -10,7 +12,8 @@ use crate::shm::{RunState, SharedGlobalMemory, ShmOwner};
 use plc_core::{GlobalMemory, Time};
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::time::{Duration, Instant};
+#[cfg(feature = "cycle-probe")]
+use std::time::Instant;
 use zerocopy::{Immutable, IntoBytes};
 
 /// What a running program owns besides its settings.
@@ -26,8 +29,10 @@ where
     retained: RetainedBytes,
     retain: Option<RetainWriter<T::Image>>,
     shm: Option<ShmOwner<T>>,
-    /// Where `Context::now` counts from: the runtime's start, on the monotonic clock.
-    epoch: Instant,
+    /// The cycle's clock (`Context::now`'s, the schedule's, the published values' time).
+    clock: CycleClock,
+    /// The mean of all cycles' times.
+    mean: RunningMean,
     /// Called with each cycle's timestamps (benchmarks only).
     #[cfg(feature = "cycle-probe")]
     probe: Option<super::probe::Probe>,
@@ -73,13 +78,14 @@ where
             image,
             retain,
             shm,
-            epoch: Instant::now(),
+            clock: CycleClock::start(),
+            mean: RunningMean::default(),
             #[cfg(feature = "cycle-probe")]
             probe: s.probe.take(),
         };
         // The initial and restored values go out before the bus starts (which can take
         // seconds): a tool attaching meanwhile reads them, not a zeroed image.
-        cycle.publish_image();
+        cycle.publish_image(monotonic_ns());
         s.backend.start().map_err(RuntimeError::Io)?;
         if let Some(shm) = &cycle.shm {
             shm.set_run_state(RunState::Running);
@@ -99,20 +105,21 @@ where
     ) -> Result<(), RuntimeError> {
         let mut schedule = Schedule::start(s.period);
         while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
-            self.once(&mut *s.backend, tick)?;
-            schedule.wait();
+            let end = self.once(&mut *s.backend, tick)?;
+            schedule.wait(end);
         }
         Ok(())
     }
 
     /// One cycle: exchange, unpack bits, writes from outside, tick, pack bits, publish, retain,
-    /// report. Returns when its work ended (before the report).
+    /// report. Returns when its work ended (before the report), in CLOCK_MONOTONIC
+    /// nanoseconds: the clock is read twice, at the start and at the end (`clock`).
     fn once(
         &mut self,
         backend: &mut (dyn IoBackend<T> + Send),
         tick: &mut impl FnMut(&mut Context<T>),
-    ) -> Result<(), RuntimeError> {
-        let start = Instant::now();
+    ) -> Result<u64, RuntimeError> {
+        let start = monotonic_ns();
         #[cfg(feature = "cycle-probe")]
         let probing = self.probe.is_some();
         #[cfg(feature = "cycle-probe")]
@@ -120,7 +127,9 @@ where
         let ctx = &mut self.ctx;
         ctx.cycle += 1;
         // Beyond LTIME only after 292 years of running.
-        ctx.set_now(Time::try_from(start.duration_since(self.epoch)).unwrap_or(Time::MAX));
+        ctx.set_now(Time::from_nanos(
+            i64::try_from(self.clock.since_start(start)).unwrap_or(i64::MAX),
+        ));
         let io = backend.exchange(&mut ctx.gm);
         #[cfg(feature = "cycle-probe")]
         let exchange_end = probing.then(Instant::now);
@@ -150,14 +159,14 @@ where
         }
         ctx.gm.pack_bits();
         ctx.gm.store_image(&mut self.image.0);
-        self.publish_image();
+        self.publish_image(start);
         if let Some(writer) = &self.retain
             && self.retained.changed(&self.image.0)
         {
             writer.offer(self.image.0);
         }
-        let end = Instant::now();
-        self.report(end - start, &io);
+        let end = monotonic_ns();
+        self.report(start, end, &io);
         #[cfg(feature = "cycle-probe")]
         if let (Some(probe), Some(bus), Some(exchange_end), Some((tick_start, tick_end))) = (
             self.probe.as_mut(),
@@ -169,15 +178,15 @@ where
             // whole exchange counts as the bus's.
             let (bus_start, bus_end) = super::probe::take_bus().unwrap_or((bus, exchange_end));
             probe(&super::probe::CycleTimes {
-                start,
+                start: self.clock.instant(start),
                 bus_start,
                 bus_end,
                 tick_start,
                 tick_end,
-                end,
+                end: self.clock.instant(end),
             });
         }
-        Ok(())
+        Ok(end)
     }
 
     /// The tick panicked: outputs to zero, on the bus and in the segment, and the I/O in its
@@ -244,9 +253,10 @@ where
         Ok(self.ctx.gm)
     }
 
-    fn publish_image(&self) {
+    /// The last cycle's image out, with a heartbeat of `now` (CLOCK_MONOTONIC nanoseconds).
+    fn publish_image(&self, now: u64) {
         if let Some(shm) = &self.shm
-            && let Err(e) = shm.publish_image(&self.image.0)
+            && let Err(e) = shm.publish_image_at(&self.image.0, now)
         {
             // The runtime created the segment, so it owns it and the publish succeeds; were
             // that ever not so, tools would see stale values: say so rather than hide it.
@@ -257,10 +267,13 @@ where
         }
     }
 
-    fn report(&mut self, took: Duration, io: &IoStatus) {
-        self.ctx.stats.add(took, self.ctx.cycle);
+    /// The cycle's figures, and the time of its values: its end, when they were published.
+    fn report(&mut self, start: u64, end: u64, io: &IoStatus) {
+        let cycle = self.ctx.cycle;
+        let took_ns = end.saturating_sub(start);
+        self.ctx.stats.add(took_ns, cycle, &mut self.mean);
         if let Some(shm) = &self.shm {
-            shm.report(self.ctx.cycle, &self.ctx.stats, io);
+            shm.report_published(cycle, &self.ctx.stats, io, self.clock.utc_ns(end));
             if let Some(writer) = &self.retain {
                 shm.set_retain_failures(writer.failed_saves());
             }

@@ -3,6 +3,7 @@
 
 mod backend;
 mod bus_state;
+mod clock;
 mod context;
 mod cycle;
 #[cfg(feature = "cycle-probe")]

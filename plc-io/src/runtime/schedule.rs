@@ -9,6 +9,7 @@
 //! can be merged with others: a cycle's start is worth more than that saving. Realtime
 //! threads have no slack; setting it changes nothing for them.
 
+use super::clock::monotonic_ns;
 use std::time::Duration;
 
 /// The deadline of the next cycle.
@@ -31,12 +32,12 @@ impl Schedule {
         }
     }
 
-    /// After a cycle: waits for the next one's deadline, one period after the last one's.
-    /// A late cycle is followed at once, and the schedule goes on from then: no burst of
-    /// catch-up cycles.
-    pub(super) fn wait(&mut self) {
+    /// After a cycle that ended at `now` (CLOCK_MONOTONIC nanoseconds, from the cycle's own
+    /// end time: no clock read here): waits for the next one's deadline, one period after the
+    /// last one's. A late cycle is followed at once, and the schedule goes on from then: no
+    /// burst of catch-up cycles.
+    pub(super) fn wait(&mut self, now: u64) {
         self.next = self.next.saturating_add(self.period);
-        let now = monotonic_ns();
         if self.next <= now {
             self.next = now;
             return;
@@ -64,19 +65,6 @@ impl Schedule {
     }
 }
 
-/// CLOCK_MONOTONIC in nanoseconds: the clock `std::time::Instant` reads on Linux.
-fn monotonic_ns() -> u64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid timespec to write; CLOCK_MONOTONIC always exists on Linux.
-    unsafe { libc::clock_gettime(libc::CLOCK_MONOTONIC, &mut ts) };
-    (ts.tv_sec as u64)
-        .saturating_mul(1_000_000_000)
-        .saturating_add(ts.tv_nsec as u64)
-}
-
 #[cfg(test)]
 mod tests {
     use super::{Schedule, monotonic_ns};
@@ -89,18 +77,18 @@ mod tests {
         let period = Duration::from_millis(2);
         let mut schedule = Schedule::start(period);
         let first = schedule.next;
-        schedule.wait();
-        schedule.wait();
+        schedule.wait(monotonic_ns());
+        schedule.wait(monotonic_ns());
         assert_eq!(schedule.next, first + 4_000_000);
         assert!(monotonic_ns() >= schedule.next, "it slept to the deadline");
         // A cycle that takes three periods: the next starts at once and the schedule goes on
         // from then, not from the missed deadlines.
         std::thread::sleep(period * 3);
         let late = monotonic_ns();
-        schedule.wait();
+        schedule.wait(late);
         assert!(schedule.next >= late, "the missed deadlines are dropped");
         let resumed = schedule.next;
-        schedule.wait();
+        schedule.wait(monotonic_ns());
         assert_eq!(schedule.next, resumed + 2_000_000);
     }
 }

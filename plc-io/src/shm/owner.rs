@@ -9,7 +9,7 @@ use super::policy::{Policy, Sharing};
 use super::protocol::Code;
 use super::segment::{self, Segment};
 use super::server::{QUEUE, Setup};
-use super::status::{OwnerState, RunState, Status, now_ns, write_report};
+use super::status::{OwnerState, RunState, Status, now_ns, utc_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
 use crate::runtime::{CycleStats, IoStatus};
@@ -218,6 +218,17 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// Publishes an image already built (the runtime reuses one buffer). Readers have no such
     /// call: a second seqlock writer would let readers take torn images.
     pub fn publish_image(&self, image: &T::Image) -> Result<(), ShmError> {
+        self.publish_image_at(image, now_ns())
+    }
+
+    /// [`publish_image`](Self::publish_image) with the heartbeat `heartbeat_ns` on
+    /// CLOCK_MONOTONIC (the runtime's cycle has just read that clock: the coarse one the
+    /// heartbeat is compared with is the same clock, read at a lower resolution).
+    pub(crate) fn publish_image_at(
+        &self,
+        image: &T::Image,
+        heartbeat_ns: u64,
+    ) -> Result<(), ShmError> {
         let base = &self.view.base;
         let seq = base.word(H_SEQ);
         // Even: no write in progress. Wrapping keeps the parity.
@@ -227,7 +238,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         bytes::store(base, IMAGE, image.as_bytes());
         seq.store(s.wrapping_add(2), Ordering::Release);
         self.seq.set(s.wrapping_add(2));
-        base.store(S_HEARTBEAT_NS, now_ns());
+        base.store(S_HEARTBEAT_NS, heartbeat_ns);
         self.inbox.answer_applied();
         Ok(())
     }
@@ -267,9 +278,23 @@ impl<T: GlobalMemory> ShmOwner<T> {
         self.view.seg.damaged()
     }
 
-    /// Publishes the figures of cycle `cycle_count` and a heartbeat.
+    /// Publishes the figures of cycle `cycle_count` and a heartbeat, stamped with the time
+    /// now.
     pub fn report(&self, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
-        write_report(&self.view.base, cycle_count, stats, io);
+        self.view.base.store(S_HEARTBEAT_NS, now_ns());
+        write_report(&self.view.base, cycle_count, stats, io, utc_ns());
+    }
+
+    /// The runtime's [`report`](Self::report), right after its publish (which stamped the
+    /// heartbeat): the cycle's values published at `utc_ns`.
+    pub(crate) fn report_published(
+        &self,
+        cycle_count: u64,
+        stats: &CycleStats,
+        io: &IoStatus,
+        utc_ns: u64,
+    ) {
+        write_report(&self.view.base, cycle_count, stats, io, utc_ns);
     }
 
     /// Test hook: stores `data` at byte `offset` of the segment (8-aligned) through the

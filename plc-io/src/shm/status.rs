@@ -203,8 +203,21 @@ impl Status {
 }
 
 /// Stores one cycle's figures and a heartbeat.
-pub(crate) fn write_report(base: &Base, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
-    let ns = |d: Duration| u64::try_from(d.as_nanos()).unwrap_or(u64::MAX);
+/// The figures of cycle `cycle_count`, whose values were published at `utc_ns` (the heartbeat
+/// is the publish's).
+pub(crate) fn write_report(
+    base: &Base,
+    cycle_count: u64,
+    stats: &CycleStats,
+    io: &IoStatus,
+    utc_ns: u64,
+) {
+    // In u64 arithmetic (`as_nanos` is u128): this runs every cycle.
+    let ns = |d: Duration| {
+        d.as_secs()
+            .saturating_mul(1_000_000_000)
+            .saturating_add(u64::from(d.subsec_nanos()))
+    };
     base.store(S_PERIOD_NS, ns(stats.period));
     base.store(S_CYCLES, cycle_count);
     base.store(S_LAST_NS, ns(stats.last));
@@ -215,6 +228,5 @@ pub(crate) fn write_report(base: &Base, cycle_count: u64, stats: &CycleStats, io
     base.store(S_BUS_STATE, u64::from(io.bus_state.code()));
     let flags = (io.bus_fault as u64 * BUS_FAULT) | (io.inputs_valid as u64 * INPUTS_VALID);
     base.store(S_BUS_FLAGS, flags);
-    base.store(S_HEARTBEAT_NS, now_ns());
-    base.store(S_CYCLE_UTC_NS, utc_ns());
+    base.store(S_CYCLE_UTC_NS, utc_ns);
 }
