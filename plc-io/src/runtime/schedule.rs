@@ -34,13 +34,13 @@ impl Schedule {
 
     /// After a cycle that ended at `now` (CLOCK_MONOTONIC nanoseconds, from the cycle's own
     /// end time: no clock read here): waits for the next one's deadline, one period after the
-    /// last one's. A late cycle is followed at once, and the schedule goes on from then: no
-    /// burst of catch-up cycles.
-    pub(super) fn wait(&mut self, now: u64) {
+    /// last one's, and says whether it slept. A late cycle is followed at once, and the
+    /// schedule goes on from then: no burst of catch-up cycles.
+    pub(super) fn wait(&mut self, now: u64) -> bool {
         self.next = self.next.saturating_add(self.period);
         if self.next <= now {
             self.next = now;
-            return;
+            return false;
         }
         let deadline = libc::timespec {
             tv_sec: (self.next / 1_000_000_000) as libc::time_t,
@@ -62,6 +62,7 @@ impl Schedule {
                 break;
             }
         }
+        true
     }
 }
 
@@ -77,7 +78,7 @@ mod tests {
         let period = Duration::from_millis(2);
         let mut schedule = Schedule::start(period);
         let first = schedule.next;
-        schedule.wait(monotonic_ns());
+        assert!(schedule.wait(monotonic_ns()), "a cycle on time sleeps");
         schedule.wait(monotonic_ns());
         assert_eq!(schedule.next, first + 4_000_000);
         assert!(monotonic_ns() >= schedule.next, "it slept to the deadline");
@@ -85,7 +86,7 @@ mod tests {
         // from then, not from the missed deadlines.
         std::thread::sleep(period * 3);
         let late = monotonic_ns();
-        schedule.wait(late);
+        assert!(!schedule.wait(late), "a late cycle is followed at once");
         assert!(schedule.next >= late, "the missed deadlines are dropped");
         let resumed = schedule.next;
         schedule.wait(monotonic_ns());
