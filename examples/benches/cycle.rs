@@ -3,7 +3,7 @@
 //! BENCHMARKS.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor};
+use examples::bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor, runtime_cycles};
 use examples::bench::gm1k::{Gm1k, Hand1k, IMAGE_SIZE};
 use examples::bench::located;
 
@@ -28,6 +28,27 @@ fn cycle_1k(c: &mut Criterion) {
     g.finish();
 }
 
+/// The real `Runtime`'s cycles: on `Gm1k` without I/O (what `cycle_1k_runtime_vs_memcpy`
+/// times), and the framework's own time per cycle on the in-process simulated bus (what
+/// `bus_framework_us_per_cycle` times over the veth pair). Each sample starts a runtime (and
+/// the bus) afresh; only its cycles are timed.
+fn runtime(c: &mut Criterion) {
+    let segment = format!("plc_criterion_rt_{}", std::process::id());
+    let mut g = c.benchmark_group("runtime");
+    g.bench_function("gm1k_cycle", |b| {
+        b.iter_custom(|iters| runtime_cycles::<Gm1k>(&segment, iters).expect("runtime"))
+    });
+    g.sample_size(10)
+        .warm_up_time(std::time::Duration::from_millis(200))
+        .measurement_time(std::time::Duration::from_secs(1));
+    g.bench_function("bus_inproc_framework", |b| {
+        b.iter_custom(|iters| {
+            examples::bench::bus::framework_time_in_process(iters as usize).expect("bus")
+        })
+    });
+    g.finish();
+}
+
 fn process_image(c: &mut Criterion) {
     let (mut ours, mut theirs) = ([0u8; located::BUFFER], [0u8; located::BUFFER]);
     let mut g = c.benchmark_group("process_image");
@@ -40,5 +61,5 @@ fn process_image(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, cycle_1k, process_image);
+criterion_group!(benches, cycle_1k, runtime, process_image);
 criterion_main!(benches);

@@ -101,6 +101,22 @@ pub fn run(quick: bool) -> Result<String, String> {
     Ok(out)
 }
 
+/// The framework's own time (the cycle less the bus exchange and the tick) summed over
+/// `cycles` cycles of the `Runtime` on ethercat-sim's in-process tensile-tester bus, at period
+/// zero, after the warm-up: the criterion bench of the bus cycle's framework code.
+pub fn framework_time_in_process(cycles: usize) -> Result<Duration, String> {
+    let segment = format!("plc_bench_bus_criterion_{}", std::process::id());
+    let plan = Plan {
+        cycle_cpu: 0,
+        fifo: false,
+        segment: &segment,
+        quick: true,
+    };
+    let wire = Wire::InProcess(tensile::simulated_bus());
+    let (times, _) = plan.runtime_block(wire, Duration::ZERO, cycles)?;
+    Ok(times.iter().map(CycleTimes::framework).sum())
+}
+
 /// Where the bus is.
 enum Place<'a> {
     /// Behind the veth pair, served in its namespace.

@@ -218,6 +218,32 @@ where
     Ok((median(ours), median(memcpy)))
 }
 
+/// `plc_io::Runtime` on `T` with a segment `segment`, no I/O and an empty tick, at period
+/// zero, for `cycles` cycles: the time from the first tick to the last, over `cycles - 1`
+/// cycles' worth of work (the criterion bench's measure of the runtime's cycle).
+pub fn runtime_cycles<T>(segment: &str, cycles: u64) -> Result<Duration, plc_io::RuntimeError>
+where
+    T: GlobalMemory + Default + Clone + Send + 'static,
+    T::Image: Send,
+{
+    let (mut first, mut last) = (None, None);
+    plc_io::Runtime::<T>::builder()
+        .segment(segment)
+        .period(Duration::ZERO)
+        .max_cycles(cycles + 1)
+        .handle_signals(false)
+        .build()
+        .run(|_| {
+            let now = Instant::now();
+            first.get_or_insert(now);
+            last = Some(now);
+        })?;
+    Ok(match (first, last) {
+        (Some(first), Some(last)) => last - first,
+        _ => Duration::ZERO,
+    })
+}
+
 /// The physical floor: two plain copies of an image of the same size.
 pub struct MemcpyFloor {
     a: Vec<u8>,

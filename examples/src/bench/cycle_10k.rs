@@ -43,6 +43,22 @@ fn main() {
     println!("cycle_10k_ns: {}", ten_k.as_nanos());
     println!("cycle_10k_vs_handwritten: {:.2}", ratio(ours, theirs));
     println!("cycle_10k_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
+    // Where the growth is: each part of one 10k cycle against the same part of ten 1k ones.
+    let parts = FrameworkCycle::<gm10k::Gm10k>::parts().into_iter();
+    for ((name, part), (_, small_part)) in parts.zip(FrameworkCycle::<Gm1k>::parts()) {
+        let (one_k, ten_k) = side_by_side(
+            batches / 4,
+            200,
+            || {
+                for _ in 0..10 {
+                    small_part(&mut small);
+                }
+            },
+            || part(&mut large),
+        );
+        println!("cycle_10k_{name}_ns: {}", ten_k.as_nanos());
+        println!("cycle_10k_{name}_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
+    }
 }
 "#;
 

@@ -85,7 +85,10 @@ fn main() {
             "cycle" => cycle(&segment, cycle_batches),
             "structures" => structures(&segment, cycle_batches),
             "cycle_10k" => match examples::bench::cycle_10k::run(batches) {
-                Ok(lines) => print!("{lines}"),
+                Ok(lines) => {
+                    print!("{lines}");
+                    memcpy_growth(batches);
+                }
                 Err(e) => fail(&e),
             },
             "cycle_100k" => match examples::bench::cycle_10k::run_100k(batches) {
@@ -154,6 +157,27 @@ fn cycle(segment: &str, batches: usize) {
         println!("cycle_1k_{name}_ns: {}", ours.as_nanos());
         println!("cycle_1k_{name}_handwritten_ns: {}", theirs.as_nanos());
     }
+}
+
+/// How the memcpy floor itself grows from the 1k image to the 10k one (two copies of 44,880
+/// bytes against ten of two copies of 4,488): the part of `cycle_10k_over_1k` that is the
+/// memory hierarchy's (the 1k cycle's buffers fit the L1 data cache, the 10k cycle's do not).
+fn memcpy_growth(batches: usize) {
+    let (mut small, mut large) = (
+        MemcpyFloor::new(IMAGE_SIZE),
+        MemcpyFloor::new(10 * IMAGE_SIZE),
+    );
+    let (one_k, ten_k) = side_by_side(
+        batches,
+        200,
+        || {
+            for _ in 0..10 {
+                small.step();
+            }
+        },
+        || large.step(),
+    );
+    println!("memcpy_10k_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
 }
 
 /// The cycle on 100 ten-member structures against the same 1,000 variables flat: what the
@@ -225,17 +249,20 @@ fn snapshot_latency(segment: &str, seconds: u64) {
 
 /// Three reads and three writes by IEC address, ours against the `process-image` crate.
 fn process_image(batches: usize) {
+    // An access takes about a nanosecond, below the resolution of a `Duration` per
+    // iteration: each iteration is a hundred of them.
+    const EACH: usize = 100;
     let (mut buf, mut theirs_buf) = ([0u8; located::BUFFER], [0u8; located::BUFFER]);
     let (ours, theirs) = side_by_side(
         batches,
-        20000,
-        || located::ours(&mut buf, &located::ADDRESSES),
-        || located::theirs(&mut theirs_buf),
+        200,
+        || (0..EACH).for_each(|_| located::ours(&mut buf, &located::ADDRESSES)),
+        || (0..EACH).for_each(|_| located::theirs(&mut theirs_buf)),
     );
     // The same accesses with addresses parsed at run time (a tool reading a variable list).
     let parsed = located::TEXTS.map(|t| t.parse::<IecAddress>().expect("address"));
-    let runtime = median_per_iter(batches, 20000, || {
-        located::ours(&mut buf, black_box(&parsed))
+    let runtime = median_per_iter(batches, 200, || {
+        (0..EACH).for_each(|_| located::ours(&mut buf, black_box(&parsed)))
     });
     println!(
         "process_image_vs_process_image_crate: {:.2}",
