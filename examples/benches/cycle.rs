@@ -38,12 +38,16 @@ fn runtime(c: &mut Criterion) {
     g.bench_function("gm1k_cycle", |b| {
         b.iter_custom(|iters| runtime_cycles::<Gm1k>(&segment, iters).expect("runtime"))
     });
+    // A bring-up takes a quarter of a second: each iteration stands for a thousand cycles,
+    // and the figure is the framework's time per cycle.
+    const CYCLES: u32 = 1000;
     g.sample_size(10)
-        .warm_up_time(std::time::Duration::from_millis(200))
-        .measurement_time(std::time::Duration::from_secs(1));
+        .warm_up_time(std::time::Duration::from_millis(500))
+        .measurement_time(std::time::Duration::from_secs(5));
     g.bench_function("bus_inproc_framework", |b| {
         b.iter_custom(|iters| {
-            examples::bench::bus::framework_time_in_process(iters as usize).expect("bus")
+            let cycles = iters as usize * CYCLES as usize;
+            examples::bench::bus::framework_time_in_process(cycles).expect("bus") / CYCLES
         })
     });
     g.finish();
