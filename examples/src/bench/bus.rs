@@ -113,7 +113,7 @@ pub fn framework_time_in_process(cycles: usize) -> Result<Duration, String> {
         quick: true,
     };
     let wire = Wire::InProcess(tensile::simulated_bus());
-    let (times, _) = plan.runtime_block(wire, Duration::ZERO, cycles)?;
+    let (times, _) = plan.runtime_block(wire, Duration::ZERO, cycles, process_tick)?;
     Ok(times.iter().map(CycleTimes::framework).sum())
 }
 
@@ -193,12 +193,13 @@ impl Plan<'_> {
                 };
                 place::pin(self.cycle_cpu)?;
                 if framework {
-                    self.runtime_block(wire, period, cycles)
+                    self.runtime_block(wire, period, cycles, process_tick)
                 } else {
                     if self.fifo {
                         place::set_fifo(place::CYCLE_PRIORITY)?;
                     }
-                    direct::run(wire, Options::simulated().timeouts, period, WARMUP, cycles)
+                    let timeouts = Options::simulated().timeouts;
+                    direct::run(wire, timeouts, period, WARMUP, cycles, process_tick)
                 }
             })
             .join()
@@ -206,14 +207,15 @@ impl Plan<'_> {
         })
     }
 
-    /// The framework's side: the tensile tester's declaration and tick in a `Runtime` with its
-    /// EtherCAT backend and a shared-memory segment (as the example runs), the cycle's
-    /// timestamps from the runtime's probe.
+    /// The framework's side: the tensile tester's declaration and the program `tick` in a
+    /// `Runtime` with its EtherCAT backend and a shared-memory segment (as the example runs),
+    /// the cycle's timestamps from the runtime's probe.
     fn runtime_block(
         &self,
         wire: Wire,
         period: Duration,
         cycles: usize,
+        mut tick: impl FnMut(&mut Gm, TickInfo),
     ) -> Result<(Vec<CycleTimes>, usize), String> {
         let config = BusConfig::from_toml_str(tensile::BUS_TOML).map_err(|e| e.to_string())?;
         let transport = match wire {
@@ -256,7 +258,7 @@ impl Plan<'_> {
                     inputs_valid: ctx.inputs_valid,
                     now: ctx.now(),
                 };
-                process_tick(&mut ctx.gm, info);
+                tick(&mut ctx.gm, info);
             })
             .map_err(|e| format!("the Runtime: {e}"))?;
         if in_a_row >= direct::GIVE_UP {
@@ -352,4 +354,94 @@ fn figure_names(label: &str) -> Vec<String> {
     }
     names.push(format!("{label}_framework_us_per_cycle"));
     names
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tensile::position;
+    use ethercat_sim::SimBus;
+
+    /// What one loop's bus and program saw, cycle by cycle: the EL2889's and the EL2004's
+    /// outputs as the simulated terminals hold them, and the limit switches the program read.
+    type Seen = Vec<Cycle>;
+
+    /// One cycle's EL2889 and EL2004 outputs and the inputs the program read.
+    type Cycle = (Vec<u8>, Vec<u8>, [bool; 4]);
+
+    /// A program that depends on its cycle count alone: every output bit from a scrambled
+    /// count, and the EL1004's inputs set from it for the next exchange. Each tick records
+    /// what the terminals hold (the outputs of the exchange just made) and the inputs it got.
+    fn pattern(bus: SimBus, seen: &mut Seen) -> impl FnMut(&mut Gm, TickInfo) + '_ {
+        let mut k = 0u32;
+        move |gm, _| {
+            seen.push((
+                bus.outputs(position::OUTPUTS),
+                bus.outputs(position::LAMPS),
+                [
+                    gm.ls_centering_neg,
+                    gm.ls_centering_pos,
+                    gm.ls_lift_neg,
+                    gm.specimen_broken,
+                ],
+            ));
+            k += 1;
+            let scrambled = k.wrapping_mul(2_654_435_761);
+            let bit = |n: u32| (scrambled >> (8 + n)) & 1 != 0;
+            (
+                gm.cr_lift_brake,
+                gm.cr_centering_drive,
+                gm.cr_lift_up,
+                gm.cr_test_drive,
+            ) = (bit(0), bit(1), bit(2), bit(3));
+            (gm.lamp_green, gm.lamp_yellow, gm.lamp_red, gm.horn) =
+                (bit(4), bit(5), bit(6), bit(7));
+            bus.set_inputs(position::INPUTS, &[(scrambled >> 20) as u8 & 0x0f]);
+        }
+    }
+
+    // What makes the bus figures a comparison of like with like: with the same program, the
+    // Runtime (through the links of the example's declaration) and the direct loop (through
+    // its hand-written bit moves) put the same bits on the wire in the same cycles and hand the
+    // program the same inputs.
+    #[test]
+    fn both_loops_exchange_the_same_process_data() {
+        let segment = format!("plc_bench_bus_test_{}", std::process::id());
+        let plan = Plan {
+            cycle_cpu: 0,
+            fifo: false,
+            segment: &segment,
+            quick: true,
+        };
+        let (period, cycles) = (Duration::from_millis(1), 60);
+        let (mut ours, mut theirs) = (Seen::new(), Seen::new());
+        let bus = tensile::simulated_bus();
+        let tick = pattern(bus.clone(), &mut ours);
+        let (_, invalid) = plan
+            .runtime_block(Wire::InProcess(bus), period, cycles, tick)
+            .expect("the Runtime's block");
+        assert_eq!(invalid, 0);
+        let bus = tensile::simulated_bus();
+        let tick = pattern(bus.clone(), &mut theirs);
+        let timeouts = Options::simulated().timeouts;
+        let (_, invalid) =
+            direct::run(Wire::InProcess(bus), timeouts, period, WARMUP, cycles, tick)
+                .expect("the direct loop's block");
+        assert_eq!(invalid, 0);
+        assert_eq!(ours.len(), WARMUP + cycles);
+        assert_eq!(ours, theirs);
+        // The pattern reached the terminals and came back as inputs, in many combinations.
+        let distinct = |f: fn(&Cycle) -> Vec<u8>| {
+            let mut v: Vec<_> = ours.iter().map(f).collect();
+            v.sort();
+            v.dedup();
+            v.len()
+        };
+        assert!(distinct(|s| s.0.clone()) >= 12, "EL2889 outputs");
+        assert!(distinct(|s| s.1.clone()) >= 12, "EL2004 outputs");
+        assert!(
+            distinct(|s| s.2.map(u8::from).to_vec()) >= 12,
+            "EL1004 inputs"
+        );
+    }
 }

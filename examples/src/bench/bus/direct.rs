@@ -7,7 +7,9 @@
 //! on the calling thread: the caller pins it and sets its scheduling, and the frame thread it
 //! starts inherits both, as the Runtime's does.
 
-use crate::tensile::{Gm, TickInfo, position, process_tick};
+#[cfg(doc)]
+use crate::tensile::process_tick;
+use crate::tensile::{Gm, TickInfo, position};
 use async_io::block_on;
 use ethercat_sim::SimBus;
 use ethercrab::std::{ethercat_now, tx_rx_task};
@@ -38,14 +40,16 @@ pub enum Wire {
     InProcess(SimBus),
 }
 
-/// Runs `warmup + cycles` cycles at `period`; the timestamps of the last `cycles`, and how
-/// many of them had a bad working counter or no answer.
+/// Runs `warmup + cycles` cycles at `period` with the program `tick` (the tensile tester's
+/// [`process_tick`] in the benchmark); the timestamps of the last `cycles`, and how many of
+/// them had a bad working counter or no answer.
 pub fn run(
     wire: Wire,
     timeouts: Timeouts,
     period: Duration,
     warmup: usize,
     cycles: usize,
+    tick: impl FnMut(&mut Gm, TickInfo),
 ) -> Result<(Vec<CycleTimes>, usize), String> {
     // ethercrab wants the storage `'static`; a benchmark run leaks one per block (about 20 KiB).
     let storage: &'static PduStorage<MAX_FRAMES, MAX_PDU_DATA> =
@@ -77,7 +81,7 @@ pub fn run(
             ..MainDeviceConfig::default()
         },
     );
-    let mut result = cycle_in_op(&md, period, warmup, cycles);
+    let mut result = cycle_in_op(&md, period, warmup, cycles, tick);
     // SAFETY: every group made with `md` is gone (`cycle_in_op` owns and drops it) and every
     // ethercrab call was awaited to its end, so no frame is in flight; this tells the frame
     // thread to exit.
@@ -110,6 +114,7 @@ fn cycle_in_op(
     period: Duration,
     warmup: usize,
     cycles: usize,
+    mut tick: impl FnMut(&mut Gm, TickInfo),
 ) -> Result<(Vec<CycleTimes>, usize), String> {
     let crab = |what: &'static str| move |e: ethercrab::error::Error| format!("{what}: {e}");
     let group = block_on(md.init_single_group::<MAX_SUBDEVICES, MAX_PDI>(ethercat_now))
@@ -154,7 +159,7 @@ fn cycle_in_op(
         gm.ls_lift_neg = byte & 4 != 0;
         gm.specimen_broken = byte & 8 != 0;
         let tick_start = Instant::now();
-        process_tick(
+        tick(
             &mut gm,
             TickInfo {
                 period,
