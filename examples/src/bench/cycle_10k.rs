@@ -10,6 +10,7 @@
 //! `cargo check` of that crate (dependencies checked before, incremental compilation off, so
 //! the two declarations are checked whole).
 
+use std::os::unix::process::ExitStatusExt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -167,15 +168,27 @@ fn check(dir: &Path) -> Result<f64, String> {
             .status()
             .map_err(|e| format!("{}: {e}", cargo()))
     };
-    if !run()?.success() {
-        return Err(format!("checking {} failed", dir.display()));
+    let failed = |status: std::process::ExitStatus| {
+        // The OOM killer ends a check that needs more memory than the machine has (a
+        // 100,000-variable declaration needed more than 24 GiB: BENCHMARKS.md).
+        let hint = if status.signal() == Some(libc::SIGKILL) {
+            ": killed, most likely for want of memory (see the kernel log)"
+        } else {
+            ""
+        };
+        Err(format!("checking {} failed ({status}){hint}", dir.display()))
+    };
+    let status = run()?;
+    if !status.success() {
+        return failed(status);
     }
     let main = dir.join("src/main.rs");
     let text = std::fs::read_to_string(&main).map_err(|e| format!("{}: {e}", main.display()))?;
     std::fs::write(&main, text).map_err(|e| format!("{}: {e}", main.display()))?;
     let start = std::time::Instant::now();
-    if !run()?.success() {
-        return Err(format!("checking {} failed", dir.display()));
+    let status = run()?;
+    if !status.success() {
+        return failed(status);
     }
     Ok(start.elapsed().as_secs_f64())
 }
