@@ -176,7 +176,10 @@ fn check(dir: &Path) -> Result<f64, String> {
         } else {
             ""
         };
-        Err(format!("checking {} failed ({status}){hint}", dir.display()))
+        Err(format!(
+            "checking {} failed ({status}){hint}",
+            dir.display()
+        ))
     };
     let status = run()?;
     if !status.success() {
