@@ -142,7 +142,7 @@ fn write_crate(name: &str, main: &str, workloads: &[(usize, bool)]) -> Result<Pa
 }
 
 /// The workspace and its target directory, which the generated crates share.
-fn target() -> Result<PathBuf, String> {
+pub(crate) fn target() -> Result<PathBuf, String> {
     let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     workspace
         .canonicalize()
@@ -150,7 +150,8 @@ fn target() -> Result<PathBuf, String> {
         .map_err(|e| format!("{}: {e}", workspace.display()))
 }
 
-fn cargo() -> String {
+/// The cargo that runs plc-bench, to build the generated crates.
+pub(crate) fn cargo() -> String {
     std::env::var("CARGO").unwrap_or_else(|_| "cargo".into())
 }
 
@@ -222,7 +223,7 @@ fn build_and_run(dir: &Path, bin: &str, batches: usize) -> Result<String, String
 }
 
 /// Writes `text` unless the file already holds it, so cargo sees no change and reuses the build.
-fn write_if_changed(path: &Path, text: &str) -> std::io::Result<()> {
+pub(crate) fn write_if_changed(path: &Path, text: &str) -> std::io::Result<()> {
     if std::fs::read_to_string(path).is_ok_and(|old| old == text) {
         return Ok(());
     }

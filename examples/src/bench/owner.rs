@@ -23,6 +23,7 @@
 //! The owner stops on SIGTERM (the runtime's clean stop removes its socket), when the process
 //! that started it is gone, or after an hour.
 
+use super::cycle_10k::{cargo, target, write_if_changed};
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command};
@@ -33,23 +34,6 @@ pub const EVENT_EVERY: u64 = 20;
 
 /// The owner's period.
 pub const PERIOD: Duration = Duration::from_millis(1);
-
-/// A member of an axis: name, type, and the word and bit of a bit-mapped bool.
-type AxisMember = (&'static str, &'static str, Option<(&'static str, u8)>);
-
-/// The members of one axis of `Mixed10k`.
-const AXIS: [AxisMember; 10] = [
-    ("pos", "f64", None),
-    ("target", "f64", None),
-    ("speed", "f32", None),
-    ("torque", "f32", None),
-    ("status", "u16", None),
-    ("ready", "bool", Some(("status", 0))),
-    ("fault", "bool", Some(("status", 1))),
-    ("enable", "bool", None),
-    ("moves", "u32", None),
-    ("mode", "i16", None),
-];
 
 /// The types of the top-level variables after the words and their bits, in turn.
 const KINDS: [&str; 12] = [
@@ -142,7 +126,7 @@ fn main_source() -> String {
          /// One axis of a machine.\n\
          #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]\npub struct Axis {\n",
     );
-    for (name, ty, map) in AXIS {
+    for (name, ty, map) in super::workload::AXIS_MEMBERS {
         if let Some((word, bit)) = map {
             let _ = writeln!(s, "    #[plc(source = \"{word}\", bit = {bit})]");
         }
@@ -224,8 +208,7 @@ pub fn build() -> Result<PathBuf, String> {
         &declaration("Mixed10k", 2000, 800),
     )
     .map_err(io)?;
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let target = workspace.join("target");
+    let (cargo, target) = (cargo(), target()?);
     let built = Command::new(&cargo)
         .args(["build", "--release", "--quiet"])
         .current_dir(&dir)
@@ -243,8 +226,7 @@ pub fn build() -> Result<PathBuf, String> {
 /// this tree.
 pub fn plc_binary() -> Result<PathBuf, String> {
     let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let target = workspace.join("target");
+    let (cargo, target) = (cargo(), target()?);
     let built = Command::new(&cargo)
         .args([
             "build",
@@ -301,21 +283,27 @@ impl Owner {
 
 impl Drop for Owner {
     fn drop(&mut self) {
-        if let Ok(pid) = i32::try_from(self.child.id()) {
-            // SAFETY: kill(2) on our own child's pid; it has not been waited for, so the pid
-            // is still its own.
-            unsafe { libc::kill(pid, libc::SIGTERM) };
-        }
-        let deadline = Instant::now() + Duration::from_secs(5);
-        while Instant::now() < deadline {
-            if let Ok(Some(_)) = self.child.try_wait() {
-                return;
-            }
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        let _ = self.child.kill();
-        let _ = self.child.wait();
+        stop_child(&mut self.child);
     }
+}
+
+/// Asks `child` to stop (SIGTERM, so a runtime stops cleanly and removes its files), gives
+/// it 5 s, then kills it.
+pub fn stop_child(child: &mut Child) {
+    if let Ok(pid) = i32::try_from(child.id()) {
+        // SAFETY: kill(2) on our own child's pid; it has not been waited for, so the pid is
+        // still its own.
+        unsafe { libc::kill(pid, libc::SIGTERM) };
+    }
+    let deadline = Instant::now() + Duration::from_secs(5);
+    while Instant::now() < deadline {
+        if let Ok(Some(_)) = child.try_wait() {
+            return;
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let _ = child.kill();
+    let _ = child.wait();
 }
 
 /// Every basic value of a segment by the path a tool names it with (`v17`, `axes[3].pos`),
@@ -340,12 +328,4 @@ pub fn leaf_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
         }
     }
     out
-}
-
-/// Writes `text` unless the file already holds it, so cargo sees no change and reuses the build.
-fn write_if_changed(path: &Path, text: &str) -> std::io::Result<()> {
-    if std::fs::read_to_string(path).is_ok_and(|old| old == text) {
-        return Ok(());
-    }
-    std::fs::write(path, text)
 }

@@ -233,11 +233,12 @@ pub fn source(k: usize, hand_trait: &str) -> String {
     s
 }
 
-/// A member of `BenchAxis`: name, type, and the word and bit of a bit-mapped bool.
-type AxisMember = (&'static str, &'static str, Option<(&'static str, u8)>);
+/// A member of an axis: name, type, and the word and bit of a bit-mapped bool.
+pub type AxisMember = (&'static str, &'static str, Option<(&'static str, u8)>);
 
-/// The members of the structure workload's `BenchAxis`: ten, as an axis of a machine has.
-const AXIS_MEMBERS: [AxisMember; 10] = [
+/// The members of an axis, ten as a machine's has: the structure workload's `BenchAxis` and
+/// the tools owner's axes (`owner.rs`).
+pub const AXIS_MEMBERS: [AxisMember; 10] = [
     ("pos", "f64", None),
     ("target", "f64", None),
     ("speed", "f32", None),
