@@ -95,6 +95,13 @@ impl<const N: usize> FixedString<N> {
         FixedString([0; N])
     }
 
+    /// An empty string without the capacity check, for `PlcType::__ZERO`: a declaration with
+    /// a wrong capacity gets its one spanned error from the derive, not a second from here.
+    #[doc(hidden)]
+    pub(crate) const fn __zeroed() -> Self {
+        FixedString([0; N])
+    }
+
     /// A string holding `s`, truncated as [`set`](Self::set) does.
     ///
     /// ```

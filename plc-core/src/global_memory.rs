@@ -200,11 +200,24 @@ pub const fn layout_hash(vars: &[VarInfo]) -> u64 {
 
 /// Each variable; a structured one's type name and then its members, recursively.
 const fn hash_vars(
-    mut h: plc_rules::layout::LayoutHasher,
+    h: plc_rules::layout::LayoutHasher,
     vars: &[VarInfo],
 ) -> plc_rules::layout::LayoutHasher {
-    let mut i = 0;
-    while i < vars.len() {
+    hash_range(h, vars, 0, vars.len())
+}
+
+/// [`layout_hash`] of a large declaration in parts: variables `start..end` of `vars` fed to
+/// `h`. The derive gives each part a `const` of its own, so that no one const evaluation
+/// runs into the compiler's guard against endless loops (100,000 variables did).
+#[doc(hidden)]
+pub const fn hash_range(
+    mut h: plc_rules::layout::LayoutHasher,
+    vars: &[VarInfo],
+    start: usize,
+    end: usize,
+) -> plc_rules::layout::LayoutHasher {
+    let mut i = start;
+    while i < end {
         let v = &vars[i];
         let bit = match v.bit {
             Some(b) => Some((b.source, b.bit)),

@@ -5,7 +5,7 @@ pub use core;
 pub use plc_rules;
 pub use zerocopy;
 
-pub use crate::global_memory::layout_hash;
+pub use crate::global_memory::{hash_range, layout_hash};
 pub use crate::image_bytes::{
     field_at, field_at_mut, image_size, offsets, repr_at, repr_at_mut, run_steps,
 };
@@ -41,6 +41,86 @@ pub struct VarInfoParts {
     pub type_name: Option<&'static str>,
 }
 
+/// The parts of a variable of type `T` with every attribute at its default (no link, address,
+/// bit mapping, description, initial value or quantity; internal, read-write, volatile): the
+/// derive calls the setters below only for what a field declares, so a large declaration
+/// stays small for the compiler (each field costs one call, not a literal of every part).
+pub const fn var<T: PlcType>(
+    name: &'static str,
+    rust_type: &'static str,
+    offset: usize,
+    size: usize,
+) -> VarInfoParts {
+    VarInfoParts {
+        name,
+        iec_type: T::IEC_TYPE,
+        rust_type,
+        offset,
+        size,
+        dims: T::DIMS,
+        bit: None,
+        link: None,
+        address: None,
+        description: "",
+        initial: None,
+        nonvolatile: false,
+        access: Access::ReadWrite,
+        direction: Direction::Internal,
+        ux: false,
+        quantity: None,
+        members: T::MEMBERS,
+        type_name: T::TYPE_NAME,
+    }
+}
+
+/// Setters for what a field declares beyond [`var`]'s defaults.
+impl VarInfoParts {
+    pub const fn iec(mut self, iec_type: IecType) -> Self {
+        self.iec_type = iec_type;
+        self
+    }
+    pub const fn bit(mut self, source: usize, bit: u8) -> Self {
+        self.bit = Some(BitMapping { source, bit });
+        self
+    }
+    pub const fn link(mut self, link: &'static str) -> Self {
+        self.link = Some(link);
+        self
+    }
+    pub const fn address(mut self, address: &'static str) -> Self {
+        self.address = Some(address);
+        self
+    }
+    pub const fn description(mut self, description: &'static str) -> Self {
+        self.description = description;
+        self
+    }
+    pub const fn initial(mut self, json: &'static str) -> Self {
+        self.initial = Some(json);
+        self
+    }
+    pub const fn nonvolatile(mut self) -> Self {
+        self.nonvolatile = true;
+        self
+    }
+    pub const fn read_only(mut self) -> Self {
+        self.access = Access::ReadOnly;
+        self
+    }
+    pub const fn direction(mut self, direction: Direction) -> Self {
+        self.direction = direction;
+        self
+    }
+    pub const fn ux(mut self) -> Self {
+        self.ux = true;
+        self
+    }
+    pub const fn quantity(mut self, quantity: &'static str) -> Self {
+        self.quantity = Some(quantity);
+        self
+    }
+}
+
 /// The deepest of a structure's members' depths, in a `const`.
 pub const fn max_depth(depths: &[usize]) -> usize {
     let mut max = 0;
@@ -64,20 +144,22 @@ pub const fn bit_mapping(source: usize, bit: u8) -> BitMapping {
     BitMapping { source, bit }
 }
 
-/// Sets element `element` of a field, turning an element error into a [`SetError`] that names
-/// the variable.
+/// Sets element `element` of a field described by `info`, turning an element error into a
+/// [`SetError`] that names the variable.
 #[inline]
 pub fn set_field<T: PlcType>(
     field: &mut T,
-    name: &'static str,
-    ty: IecType,
+    info: &crate::VarInfo,
     element: usize,
     value: Value,
 ) -> Result<(), SetError> {
-    field.set_element(element, value, ty).map_err(|e| match e {
-        ElementError::OutOfRange { len } => SetError::ElementOutOfRange { name, element, len },
-        ElementError::Value(error) => SetError::Value { name, error },
-    })
+    let name = info.name;
+    field
+        .set_element(element, value, info.iec_type)
+        .map_err(|e| match e {
+            ElementError::OutOfRange { len } => SetError::ElementOutOfRange { name, element, len },
+            ElementError::Value(error) => SetError::Value { name, error },
+        })
 }
 
 /// Bit `bit` of a source word (through `PlcType` so no other bound is needed).

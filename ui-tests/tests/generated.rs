@@ -52,6 +52,30 @@ fn main() {
     let mut stored = Big::default().to_image();
     loaded.store_image(&mut stored);
     assert_eq!(stored.as_bytes(), bytes);
+    // Access by index on both sides of the chunks `try_get` and `set` are split into (1,024
+    // variables each), and a bool in the second chunk mapped onto a word in the first.
+    use plc_core::{SetError, Value};
+    let mut gm = Big::default();
+    let at = |name: &str| Big::index_of(name).unwrap();
+    for (name, value) in [("v7", 7), ("v1017", 1017), ("v1027", 1027), ("v1997", 1997)] {
+        gm.set(at(name), 0, Value::UInt(value)).unwrap();
+        assert_eq!(gm.try_get(at(name), 0), Some(Value::UInt(value)), "{name}");
+    }
+    assert_eq!((gm.v7, gm.v1017, gm.v1027, gm.v1997), (7, 1017, 1027, 1997));
+    gm.set(at("v1017"), 0, Value::UInt(0)).unwrap();
+    gm.set(at("v1030"), 0, Value::Bool(true)).unwrap();
+    assert_eq!(gm.v1017, 1 << 9, "the bool set its bit of the word in the chunk before");
+    gm.set(at("v1017"), 0, Value::UInt(1 << 3)).unwrap();
+    assert!(!gm.v1030 && gm.v1020, "the word set the bools mapped onto it");
+    assert_eq!(gm.try_get(2000, 0), None);
+    assert!(matches!(gm.set(2000, 0, Value::Bool(true)), Err(SetError::UnknownIndex { index: 2000 })));
+    // The layout hash, computed in parts of 1,024 variables, is that of the whole list.
+    assert_eq!(Big::LAYOUT_HASH, plc_core::__private::layout_hash(Big::VARIABLES));
+    // A fresh struct is all zero where no initial value says otherwise.
+    let fresh = Big::default();
+    assert_eq!((fresh.v7, fresh.v1997, fresh.v1996, fresh.v0), (0, 0, 0.0, false));
+    assert_eq!(fresh.v1995, 1.0, "its initial value");
+    assert_eq!(fresh.v8.len(), 0);
 }
 "#;
 
@@ -69,6 +93,10 @@ fn two_thousand_fields() -> String {
         // Every 20th a bool mapped onto the u16 three fields before it, bits 0..=15 in turn.
         if i % 20 == 0 && i > 0 {
             keys.push(format!("source = \"v{}\", bit = {}", i - 3, (i / 20) % 16));
+        }
+        // A bool of `set`'s second chunk mapped onto a word of its first.
+        if i == 1030 {
+            keys.push("source = \"v1017\", bit = 9".to_string());
         }
         // Every 7th number that is not 64 bits wide or a u16 source word gets an initial value.
         if i % 7 == 0 && matches!(i % 10, 1 | 2 | 3 | 5 | 6) {

@@ -9,7 +9,7 @@
 
 mod direct;
 mod jitter;
-mod place;
+use super::place;
 mod veth;
 
 use crate::tensile::{self, Gm, TickInfo, process_tick};

@@ -9,6 +9,7 @@ pub mod hand_seqlock;
 pub mod located;
 pub mod opcua;
 pub mod owner;
+pub mod place;
 pub mod timing;
 pub mod tools;
 pub mod workload;

@@ -1,5 +1,6 @@
 //! Group `opcua`: the real `plc opcua serve` on a running program of 10,000 variables
-//! ([`super::owner`]'s `Mixed10k`, a real owner process at 1 ms), asked by real OPC UA clients:
+//! ([`super::owner`]'s `Mixed10k`, a real owner process at 1 ms) and on the main example
+//! (`tensile_tester`, its own process on its simulated bus), asked by real OPC UA clients:
 //! async-opcua's client crate (the library the server is built on), in this process, over
 //! TCP on localhost, security None, anonymous. The clients' own cost is in the figures, and
 //! they run on the same machine as the server and the program.
@@ -15,15 +16,23 @@
 //!   publishing interval + 1 cycle = 3 ms is what the path allows.
 //!   `opcua_notify_wakeup_late_p99_ms`: meanwhile, how late a thread that sleeps 1 ms wakes
 //!   on this machine (context: a notification crosses four sleeping threads).
-//! - `cycle_with_opcua_clients_ratio`: the owner's cycle time (its own `stats.last` in the
-//!   status block, sampled about once a millisecond, median of a window) while 10 clients hold a
-//!   subscription of 1,000 monitored items each (every node once; sampling at the owner's
-//!   period, publishing every 100 ms, queue 1; about 340 of the 10,000 values change every cycle),
+//! - `cycle_with_opcua_clients_ratio`: the main example's cycle time (`tensile_tester` on its
+//!   simulated bus at 1 ms, its own `stats.last` in the status block, sampled about once a
+//!   millisecond, median of a window) while 10 clients each hold a subscription of every
+//!   variable node of it (sampling at the owner's period, publishing every 100 ms, queue 1),
 //!   against windows in which the same sessions hold no subscription; alternating windows of
 //!   2 s, the median of each side's windows. `..._mean_ratio`: the same with each window's
 //!   mean cycle (from the owner's running mean), which a preempted cycle moves.
+//!   `cycle_with_opcua_clients_ratio_10k`: the same on the 10,000-variable program, the 10
+//!   clients monitoring 1,000 nodes each (about 340 of the values change every cycle).
+//!
+//! The owner runs on a CPU of its own (the last this process may use), the server and the
+//! clients on the others, as a machine builder gives the program its own core
+//! (`opcua_placement` says which); with one CPU all share it. Without that the figure measures
+//! the scheduler: whatever runs on the owner's core between two cycles evicts its caches.
 
 use super::owner::{self, Owner, PERIOD};
+use super::place;
 use opcua::client::{ClientBuilder, DataChangeCallback, IdentityToken, Session};
 use opcua::types::{
     DataValue, EndpointDescription, ExtensionObject, MessageSecurityMode,
@@ -44,7 +53,11 @@ pub fn run(quick: bool) -> Result<String, String> {
     let binary = owner::build()?;
     let plc = owner::plc_binary()?;
     let segment = format!("plc_bench_opcua_{}", std::process::id());
-    let program = Owner::start(&binary, "10k", &segment)?;
+    let placement = Placement::split();
+    let program = Owner::spawn(
+        placement.owner(Command::new(&binary).args(["10k", &segment]))?,
+        &segment,
+    )?;
     let seg = DynSegment::attach(&segment).map_err(|e| e.to_string())?;
     let paths = owner::leaf_paths(&seg);
     if paths.len() != 10_000 {
@@ -54,28 +67,87 @@ pub fn run(quick: bool) -> Result<String, String> {
         ));
     }
     let work = Path::new(env!("CARGO_MANIFEST_DIR")).join("../target/plc-bench/opcua");
-    let result = Server::start(&plc, &segment, &work).and_then(|server| {
-        let runtime = tokio::runtime::Builder::new_multi_thread()
-            .worker_threads(2)
-            .enable_all()
-            .build()
-            .map_err(|e| format!("tokio: {e}"))?;
+    // The clients' threads (the runtime's workers) start on the others' CPUs.
+    placement.others_here()?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()
+        .map_err(|e| format!("tokio: {e}"));
+    placement.restore()?;
+    let runtime = runtime?;
+    let result = Server::start(&plc, &segment, &work, &placement).and_then(|server| {
         let lines = runtime.block_on(measure(&server, &seg, &paths, &work, quick));
         drop(server);
         lines
     });
     drop(seg);
     drop(program);
-    Ok(result.unwrap_or_else(|why| {
-        [
-            "opcua_read_10k_ms",
-            "opcua_notify_p99_ms",
-            "cycle_with_opcua_clients_ratio",
-        ]
-        .iter()
-        .map(|name| format!("{name}: unavailable ({why})\n"))
-        .collect()
-    }))
+    let unavailable = |names: &[&str], why: String| -> String {
+        names
+            .iter()
+            .map(|name| format!("{name}: unavailable ({why})\n"))
+            .collect()
+    };
+    let mut out = format!("opcua_placement: {}\n", placement.describe());
+    out += &result.unwrap_or_else(|why| {
+        unavailable(
+            &[
+                "opcua_read_10k_ms",
+                "opcua_notify_p99_ms",
+                "cycle_with_opcua_clients_ratio_10k",
+            ],
+            why,
+        )
+    });
+    let main = runtime.block_on(main_example(
+        &plc,
+        &work.join("tensile_tester"),
+        &placement,
+        quick,
+    ));
+    out.push_str(&main.unwrap_or_else(|why| unavailable(&["cycle_with_opcua_clients_ratio"], why)));
+    Ok(out)
+}
+
+/// `cycle_with_opcua_clients_ratio`: the main example (`tensile_tester` on its simulated bus)
+/// with 10 clients each monitoring every variable node of it, against the same sessions
+/// monitoring nothing.
+async fn main_example(
+    plc: &Path,
+    work: &Path,
+    placement: &Placement,
+    quick: bool,
+) -> Result<String, String> {
+    let binary = owner::workspace_binary("examples", "tensile_tester")?;
+    let segment = format!("plc_bench_tensile_{}", std::process::id());
+    let program = Owner::spawn(
+        placement.owner(
+            Command::new(binary)
+                .args(["--segment", &segment, "--retain"])
+                .arg(work.join("retain"))
+                .stdout(std::process::Stdio::null()),
+        )?,
+        &segment,
+    )?;
+    let seg = DynSegment::attach(&segment).map_err(|e| e.to_string())?;
+    let paths = owner::variable_node_paths(&seg);
+    let server = Server::start(plc, &segment, work, placement)?;
+    let mut clients = Vec::new();
+    while clients.len() < 10 {
+        clients.push(Client::connect(&server.url, work).await?);
+    }
+    let ns = namespace(&clients[0].session, &format!("urn:plc-vars:{segment}")).await?;
+    let nodes: Vec<NodeId> = paths.iter().map(|p| NodeId::new(ns, p.as_str())).collect();
+    let shares = vec![&nodes[..]; clients.len()];
+    let load = cycle_ratio(&clients, &seg, &shares, if quick { 5 } else { 15 }).await;
+    for c in clients {
+        c.close().await;
+    }
+    drop((server, seg, program));
+    let mut out = format!("opcua_main_example_nodes: {}\n", nodes.len());
+    load?.write(&mut out, "");
+    Ok(out)
 }
 
 async fn measure(
@@ -109,28 +181,9 @@ async fn measure(
         clients.push(Client::connect(&server.url, work).await?);
     }
     let rounds = if quick { 5 } else { 15 };
-    let load = cycle_ratio(&clients, seg, &nodes, rounds).await?;
-    let _ = writeln!(
-        out,
-        "cycle_without_opcua_clients_us: {:.1}",
-        load.idle.median_us
-    );
-    let _ = writeln!(
-        out,
-        "cycle_with_opcua_clients_us: {:.1}",
-        load.busy.median_us
-    );
-    let _ = writeln!(
-        out,
-        "cycle_with_opcua_clients_ratio: {:.2}",
-        load.busy.median_us / load.idle.median_us
-    );
-    let _ = writeln!(
-        out,
-        "cycle_with_opcua_clients_mean_ratio: {:.2}",
-        load.busy.mean_us / load.idle.mean_us
-    );
-    let _ = writeln!(out, "opcua_clients_values_per_s: {:.0}", load.values_per_s);
+    let shares: Vec<&[NodeId]> = nodes.chunks(nodes.len() / clients.len()).collect();
+    let load = cycle_ratio(&clients, seg, &shares, rounds).await?;
+    load.write(&mut out, "_10k");
     for c in clients {
         c.close().await;
     }
@@ -295,6 +348,38 @@ struct Load {
     values_per_s: f64,
 }
 
+impl Load {
+    /// Its figures, each name ending in `suffix`.
+    fn write(&self, out: &mut String, suffix: &str) {
+        let (idle, busy) = (&self.idle, &self.busy);
+        let _ = writeln!(
+            out,
+            "cycle_without_opcua_clients{suffix}_us: {:.1}",
+            idle.median_us
+        );
+        let _ = writeln!(
+            out,
+            "cycle_with_opcua_clients{suffix}_us: {:.1}",
+            busy.median_us
+        );
+        let _ = writeln!(
+            out,
+            "cycle_with_opcua_clients_ratio{suffix}: {:.2}",
+            busy.median_us / idle.median_us
+        );
+        let _ = writeln!(
+            out,
+            "cycle_with_opcua_clients_mean_ratio{suffix}: {:.2}",
+            busy.mean_us / idle.mean_us
+        );
+        let _ = writeln!(
+            out,
+            "opcua_clients_values_per_s{suffix}: {:.0}",
+            self.values_per_s
+        );
+    }
+}
+
 /// The owner's cycle time over some windows: the median of the windows' medians and means.
 struct Cycles {
     median_us: f64,
@@ -314,10 +399,11 @@ impl Cycles {
     }
 }
 
+/// `shares[i]`: the nodes client `i` monitors.
 async fn cycle_ratio(
     clients: &[Client],
     seg: &DynSegment,
-    nodes: &[NodeId],
+    shares: &[&[NodeId]],
     rounds: usize,
 ) -> Result<Load, String> {
     const WINDOW: Duration = Duration::from_secs(2);
@@ -327,10 +413,7 @@ async fn cycle_ratio(
     for _ in 0..rounds.max(1) {
         idle.push(owner_cycle_us(seg, WINDOW).await);
         let mut subscriptions = Vec::new();
-        for (c, share) in clients
-            .iter()
-            .zip(nodes.chunks(nodes.len() / clients.len()))
-        {
+        for (c, share) in clients.iter().zip(shares) {
             let counter = values.clone();
             let id = c
                 .session
@@ -368,7 +451,7 @@ async fn cycle_ratio(
             }
             subscriptions.push((c, id));
         }
-        // The initial values of 10,000 items delivered before the window starts.
+        // The initial values of every item delivered before the window starts.
         tokio::time::sleep(Duration::from_millis(500)).await;
         let before = values.load(Ordering::Relaxed);
         busy.push(owner_cycle_us(seg, WINDOW).await);
@@ -489,7 +572,12 @@ struct Server {
 }
 
 impl Server {
-    fn start(plc: &Path, segment: &str, work: &Path) -> Result<Server, String> {
+    fn start(
+        plc: &Path,
+        segment: &str,
+        work: &Path,
+        placement: &Placement,
+    ) -> Result<Server, String> {
         std::fs::create_dir_all(work).map_err(|e| format!("{}: {e}", work.display()))?;
         let port = std::net::TcpListener::bind("127.0.0.1:0")
             .and_then(|l| l.local_addr())
@@ -498,7 +586,8 @@ impl Server {
         let log: PathBuf = work.join("server.log");
         let file = std::fs::File::create(&log).map_err(|e| format!("{}: {e}", log.display()))?;
         let err = file.try_clone().map_err(|e| e.to_string())?;
-        let child = Command::new(plc)
+        let child = placement
+            .others(&mut Command::new(plc))?
             .args(["opcua", "serve", segment, "--host", "127.0.0.1", "--port"])
             .arg(port.to_string())
             // Kept between runs: the server makes its key pair once.
@@ -530,6 +619,67 @@ impl Server {
 impl Drop for Server {
     fn drop(&mut self) {
         owner::stop_child(&mut self.child);
+    }
+}
+
+/// Where the group's processes run: the owner on a CPU of its own (the last this process may
+/// use), the server and the clients on the others, as a machine builder isolates the
+/// program's core. With one CPU all share it.
+struct Placement {
+    all: Vec<usize>,
+    owner: Option<usize>,
+    others: Vec<usize>,
+}
+
+impl Placement {
+    fn split() -> Placement {
+        let all = place::allowed_cpus();
+        match all.split_last() {
+            Some((&owner, others)) if !others.is_empty() => Placement {
+                owner: Some(owner),
+                others: others.to_vec(),
+                all,
+            },
+            _ => Placement {
+                owner: None,
+                others: all.clone(),
+                all,
+            },
+        }
+    }
+
+    fn describe(&self) -> String {
+        match self.owner {
+            Some(cpu) => format!(
+                "owner on CPU {cpu}, server and clients on CPUs {:?}",
+                self.others
+            ),
+            None => "all on one CPU (no CPU to give the owner alone)".into(),
+        }
+    }
+
+    /// `command` set to start on the owner's CPU.
+    fn owner<'c>(&self, command: &'c mut Command) -> Result<&'c mut Command, String> {
+        if let Some(cpu) = self.owner {
+            place::pin_command(command, &[cpu])?;
+        }
+        Ok(command)
+    }
+
+    /// `command` set to start on the others' CPUs.
+    fn others<'c>(&self, command: &'c mut Command) -> Result<&'c mut Command, String> {
+        place::pin_command(command, &self.others)?;
+        Ok(command)
+    }
+
+    /// The calling thread (and the threads it starts) on the others' CPUs.
+    fn others_here(&self) -> Result<(), String> {
+        place::pin_to(&self.others)
+    }
+
+    /// The calling thread back on every CPU it had.
+    fn restore(&self) -> Result<(), String> {
+        place::pin_to(&self.all)
     }
 }
 

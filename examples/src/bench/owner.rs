@@ -221,30 +221,29 @@ pub fn build() -> Result<PathBuf, String> {
     Ok(target.join("release/tools-owner"))
 }
 
-/// The `plc` binary of this workspace, built in release (`cargo build --release -p plc-cli
-/// --bin plc`; nothing to do when it is up to date), so the figures are those of the code in
-/// this tree.
+/// The `plc` binary of this workspace, built in release, so the figures are those of the code
+/// in this tree.
 pub fn plc_binary() -> Result<PathBuf, String> {
+    workspace_binary("plc-cli", "plc")
+}
+
+/// Binary `bin` of workspace package `package`, built in release (`cargo build --release -p
+/// PACKAGE --bin BIN`; nothing to do when it is up to date).
+pub fn workspace_binary(package: &str, bin: &str) -> Result<PathBuf, String> {
     let workspace = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let (cargo, target) = (cargo(), target()?);
     let built = Command::new(&cargo)
-        .args([
-            "build",
-            "--release",
-            "--quiet",
-            "-p",
-            "plc-cli",
-            "--bin",
-            "plc",
-        ])
+        .args(["build", "--release", "--quiet", "-p", package, "--bin", bin])
         .current_dir(&workspace)
         .env("CARGO_TARGET_DIR", &target)
         .status()
         .map_err(|e| format!("{cargo}: {e}"))?;
     if !built.success() {
-        return Err("building plc (cargo build --release -p plc-cli) failed".into());
+        return Err(format!(
+            "building {bin} (cargo build --release -p {package} --bin {bin}) failed"
+        ));
     }
-    Ok(target.join("release/plc"))
+    Ok(target.join("release").join(bin))
 }
 
 /// A running owner: stopped with SIGTERM (a clean stop) when dropped.
@@ -258,10 +257,15 @@ impl Owner {
     /// Starts `binary` (from [`build`]) with `Flat4k` (`"4k"`) or `Mixed10k` (`"10k"`) on
     /// segment `segment`; returns once a tool can attach to it.
     pub fn start(binary: &Path, which: &str, segment: &str) -> Result<Owner, String> {
-        let child = Command::new(binary)
-            .args([which, segment])
+        Owner::spawn(Command::new(binary).args([which, segment]), segment)
+    }
+
+    /// Starts `command`, a program that owns segment `segment`; returns once a tool can
+    /// attach to it.
+    pub fn spawn(command: &mut Command, segment: &str) -> Result<Owner, String> {
+        let child = command
             .spawn()
-            .map_err(|e| format!("{}: {e}", binary.display()))?;
+            .map_err(|e| format!("{:?}: {e}", command.get_program()))?;
         let owner = Owner {
             child,
             segment: segment.to_string(),
@@ -307,25 +311,61 @@ pub fn stop_child(child: &mut Child) {
 }
 
 /// Every basic value of a segment by the path a tool names it with (`v17`, `axes[3].pos`),
-/// in declaration order.
+/// in declaration order: each element of an array of basic values, each basic member of a
+/// structure.
 pub fn leaf_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
     let mut out = Vec::new();
     for v in &seg.descriptor().variables {
-        if v.members.is_empty() {
-            if v.dims.is_empty() {
-                out.push(v.name.clone());
-            } else {
-                out.extend((0..v.elements()).map(|e| format!("{}[{e}]", v.name)));
-            }
-        } else {
-            for e in 0..v.elements() {
-                out.extend(
-                    v.members
-                        .iter()
-                        .map(|m| format!("{}[{e}].{}", v.name, m.name)),
-                );
-            }
-        }
+        leaves(v, &v.name, &mut out);
     }
     out
+}
+
+/// The basic values under `v`, named from `path`.
+fn leaves(v: &plc_io::shm::VarDescriptor, path: &str, out: &mut Vec<String>) {
+    let elements = plc_core::rules::access::elements(&v.dims);
+    let element = |e: usize| {
+        if v.dims.is_empty() {
+            path.to_string()
+        } else {
+            format!("{path}[{}]", plc_core::rules::path::coordinates(e, &v.dims))
+        }
+    };
+    if v.members.is_empty() {
+        out.extend((0..elements).map(element));
+        return;
+    }
+    for e in 0..elements {
+        let at = element(e);
+        for m in &v.members {
+            leaves(m, &format!("{at}.{}", m.name), out);
+        }
+    }
+}
+
+/// Every variable node of a segment's OPC UA namespace (`plc opcua serve`): a basic variable
+/// whole (an array is one node), a structure member by member, in declaration order.
+pub fn variable_node_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
+    let mut out = Vec::new();
+    for v in &seg.descriptor().variables {
+        nodes(v, &v.name, &mut out);
+    }
+    out
+}
+
+fn nodes(v: &plc_io::shm::VarDescriptor, path: &str, out: &mut Vec<String>) {
+    if v.members.is_empty() {
+        out.push(path.to_string());
+        return;
+    }
+    for e in 0..plc_core::rules::access::elements(&v.dims) {
+        let at = if v.dims.is_empty() {
+            path.to_string()
+        } else {
+            format!("{path}[{}]", plc_core::rules::path::coordinates(e, &v.dims))
+        };
+        for m in &v.members {
+            nodes(m, &format!("{at}.{}", m.name), out);
+        }
+    }
 }

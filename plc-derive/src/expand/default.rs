@@ -2,7 +2,7 @@
 //! source words reach their bools, then the bools' own initials, then everything is packed (so
 //! a bool's initial wins for its bit).
 
-use super::{image_ident, private};
+use super::private;
 use crate::ast::Container;
 use crate::expand::metadata::iec_type;
 use crate::types::SynType;
@@ -41,7 +41,6 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
     let ident = c.ident;
-    let image = image_ident();
     // Structures among the fields (only the compiler knows which) set their members' initials
     // first; for basic types the call is empty.
     let nested = c
@@ -61,8 +60,7 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
         #[automatically_derived]
         impl ::core::default::Default for #ident #bounds {
             fn default() -> Self {
-                let zeroed = <#image as #p::zerocopy::FromZeros>::new_zeroed();
-                let mut gm = <Self as #krate::GlobalMemory>::from_image(&zeroed);
+                let mut gm = Self::__PLC_ZERO;
                 #(#nested)*
                 #initials
                 gm

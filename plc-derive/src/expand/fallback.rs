@@ -61,6 +61,9 @@ pub fn expand_struct(c: &Container) -> TokenStream {
             const ELEMENTS: usize = 1;
             const STRING_CAPACITY: usize = 0;
             const TYPE_NAME: ::core::option::Option<&'static str> = ::core::option::Option::None;
+            // Not a panic: a declaration that uses this structure would evaluate it and report
+            // one more error. All zero is a value of every member type the derive accepts.
+            const __ZERO: Self = unsafe { ::core::mem::MaybeUninit::<Self>::zeroed().assume_init() };
             type Repr = [u8; 0];
             fn to_repr(&self) -> [u8; 0] { [] }
             fn from_repr(_: &[u8; 0]) -> Self { #unreachable }

@@ -27,16 +27,19 @@ fn respan(tokens: TokenStream, span: Span) -> TokenStream {
         .collect()
 }
 
-/// `__PLC_OFFSETS[i]`: where variable `i` starts in the image, in a `const` context.
+/// Where variable `i` starts in the image, in a `const` context. Read through a reference to
+/// the array: a use of the array `const` itself copies the whole array in the compiler's
+/// const evaluation, twice per variable in `VARIABLES`, which made a 10,000-variable
+/// declaration take 800 MB more memory to compile.
 pub fn offset(i: usize) -> TokenStream {
     let i = Literal::usize_unsuffixed(i);
-    quote!(__PLC_OFFSETS[#i])
+    quote!(__PLC_OFFSETS_REF[#i])
 }
 
-/// `__PLC_SIZES[i]`: the bytes of variable `i` in the image.
+/// The bytes of variable `i` in the image (through a reference, as [`offset`]).
 pub fn size(i: usize) -> TokenStream {
     let i = Literal::usize_unsuffixed(i);
-    quote!(__PLC_SIZES[#i])
+    quote!(__PLC_SIZES_REF[#i])
 }
 
 /// The sizes, offsets and total of the layout, and the image type: `#[repr(C)]` around a byte
@@ -56,6 +59,8 @@ pub fn image_struct(c: &Container) -> TokenStream {
     quote! {
         const __PLC_SIZES: [usize; #n] = [#(#sizes,)*];
         const __PLC_OFFSETS: [usize; #n] = #p::offsets(__PLC_SIZES);
+        const __PLC_SIZES_REF: &'static [usize; #n] = &__PLC_SIZES;
+        const __PLC_OFFSETS_REF: &'static [usize; #n] = &__PLC_OFFSETS;
 
         #[repr(C)]
         #[derive(
@@ -71,6 +76,17 @@ pub fn image_struct(c: &Container) -> TokenStream {
         #[doc(hidden)]
         pub struct #image([u8; #p::image_size(&__PLC_SIZES)]);
     }
+}
+
+/// `__PLC_ZERO`, the struct whose image is all zero bytes, as a constant (an associated one,
+/// so it can have the impls' bounds): `from_image` and `Default` start from it with one copy.
+/// Filling each field from its bytes in one struct literal made a function the optimiser
+/// took minutes and gigabytes over for 10,000 variables.
+pub fn zero(c: &Container) -> TokenStream {
+    let p = private(c);
+    let idents = c.vars.iter().map(|v| v.ident);
+    let tys = c.vars.iter().map(|v| v.ty);
+    quote!(const __PLC_ZERO: Self = Self { #(#idents: <#tys as #p::PlcType>::__ZERO,)* };)
 }
 
 pub fn expand(c: &Container) -> TokenStream {
@@ -120,12 +136,9 @@ pub fn expand(c: &Container) -> TokenStream {
 
         #[inline]
         fn from_image(image: &#image) -> Self {
-            #at
-            Self {
-                #(#idents: <#tys as #p::PlcType>::from_repr(
-                    #p::repr_at::<#tys>(&image.0, #offsets)
-                ),)*
-            }
+            let mut gm = Self::__PLC_ZERO;
+            <Self as #krate::GlobalMemory>::load_image(&mut gm, image);
+            gm
         }
 
         // The loops over runs use `unsafe` (`field_at`), with no `#[allow(unsafe_code)]`:

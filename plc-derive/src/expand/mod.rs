@@ -13,7 +13,7 @@ mod metadata;
 mod runs;
 mod structure;
 
-use crate::ast::{self, Container, Kind, Var};
+use crate::ast::{self, Container, Kind};
 use crate::check;
 use crate::ctxt::Ctxt;
 use proc_macro2::TokenStream;
@@ -57,17 +57,20 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
             };
         };
     }
+    let bounds = alias_bounds(&c);
+    let (access, access_chunks) = access::expand(&c);
+    let zero = image::zero(&c);
+    let hash_parts = metadata::hash_parts(&c);
     let body = [
         image::expand(&c),
         metadata::expand(&c),
         bits::expand(&c),
-        access::expand(&c),
+        access,
         located::expand(&c),
     ];
     let ident = c.ident;
     let krate = &c.krate;
     let image_ident = image_ident();
-    let bounds = alias_bounds(&c);
     let default = default::expand(&c, &bounds);
     quote! {
         const _: () = {
@@ -79,6 +82,14 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
             impl #krate::GlobalMemory for #ident #bounds {
                 type Image = #image_ident;
                 #(#body)*
+            }
+
+            #[automatically_derived]
+            #[doc(hidden)]
+            impl #ident #bounds {
+                #zero
+                #hash_parts
+                #access_chunks
             }
 
             #default
@@ -115,14 +126,14 @@ pub fn image_ident() -> syn::Ident {
     syn::Ident::new(IMAGE, proc_macro2::Span::call_site())
 }
 
-/// The bools mapped onto source `s`, with their bits.
-pub fn mapped_onto<'c, 'a>(
-    c: &'c Container<'a>,
-    s: usize,
-) -> impl Iterator<Item = (&'c Var<'a>, u8)> {
-    c.vars.iter().filter_map(move |v| {
-        v.mapped_to
-            .filter(|(src, _)| *src == s)
-            .map(|(_, b)| (v, b))
-    })
+/// For each variable, the bools mapped onto it with their bits (empty for all but source
+/// words). Built once: a search per variable was quadratic in the number of variables.
+pub fn mapped_onto(c: &Container) -> Vec<Vec<(usize, u8)>> {
+    let mut onto = vec![Vec::new(); c.vars.len()];
+    for (i, v) in c.vars.iter().enumerate() {
+        if let Some((s, bit)) = v.mapped_to {
+            onto[s].push((i, bit));
+        }
+    }
+    onto
 }

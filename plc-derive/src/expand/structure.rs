@@ -47,6 +47,7 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
             const DIMS: &'static [usize] = &[];
             const ELEMENTS: usize = 1;
             const STRING_CAPACITY: usize = 0;
+            const __ZERO: Self = Self { #(#idents: <#tys as #p::PlcType>::__ZERO,)* };
             const LEAVES: usize = 0 #(+ <#tys as #p::PlcType>::LEAVES)*;
             const MEMBERS: &'static [#krate::VarInfo] = &[#(#members,)*];
             const TYPE_NAME: ::core::option::Option<&'static str> =
@@ -144,12 +145,14 @@ fn leaf_get(c: &Container) -> TokenStream {
 /// source words consistent as `GlobalMemory::set` does.
 fn leaf_set(c: &Container) -> TokenStream {
     let p = private(c);
+    let onto = super::mapped_onto(c);
+    let place = super::access::self_place(c);
     c.vars
         .iter()
         .enumerate()
         .map(|(i, v)| {
             let (ident, ty) = (v.ident, v.ty);
-            let bits = super::access::after_set(c, i);
+            let bits = super::access::after_set(c, &onto, i, &place);
             quote! {
                 if leaf < <#ty as #p::PlcType>::LEAVES {
                     <#ty as #p::PlcType>::set_element(

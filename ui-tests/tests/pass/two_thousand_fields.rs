@@ -1242,6 +1242,7 @@ pub struct Big {
     pub v1027: u16,
     pub v1028: FixedString<16>,
     pub v1029: [u8; 4],
+    #[plc(source = "v1017", bit = 9)]
     pub v1030: bool,
     pub v1031: u8,
     pub v1032: i16,
@@ -2437,4 +2438,28 @@ fn main() {
     let mut stored = Big::default().to_image();
     loaded.store_image(&mut stored);
     assert_eq!(stored.as_bytes(), bytes);
+    // Access by index on both sides of the chunks `try_get` and `set` are split into (1,024
+    // variables each), and a bool in the second chunk mapped onto a word in the first.
+    use plc_core::{SetError, Value};
+    let mut gm = Big::default();
+    let at = |name: &str| Big::index_of(name).unwrap();
+    for (name, value) in [("v7", 7), ("v1017", 1017), ("v1027", 1027), ("v1997", 1997)] {
+        gm.set(at(name), 0, Value::UInt(value)).unwrap();
+        assert_eq!(gm.try_get(at(name), 0), Some(Value::UInt(value)), "{name}");
+    }
+    assert_eq!((gm.v7, gm.v1017, gm.v1027, gm.v1997), (7, 1017, 1027, 1997));
+    gm.set(at("v1017"), 0, Value::UInt(0)).unwrap();
+    gm.set(at("v1030"), 0, Value::Bool(true)).unwrap();
+    assert_eq!(gm.v1017, 1 << 9, "the bool set its bit of the word in the chunk before");
+    gm.set(at("v1017"), 0, Value::UInt(1 << 3)).unwrap();
+    assert!(!gm.v1030 && gm.v1020, "the word set the bools mapped onto it");
+    assert_eq!(gm.try_get(2000, 0), None);
+    assert!(matches!(gm.set(2000, 0, Value::Bool(true)), Err(SetError::UnknownIndex { index: 2000 })));
+    // The layout hash, computed in parts of 1,024 variables, is that of the whole list.
+    assert_eq!(Big::LAYOUT_HASH, plc_core::__private::layout_hash(Big::VARIABLES));
+    // A fresh struct is all zero where no initial value says otherwise.
+    let fresh = Big::default();
+    assert_eq!((fresh.v7, fresh.v1997, fresh.v1996, fresh.v0), (0, 0, 0.0, false));
+    assert_eq!(fresh.v1995, 1.0, "its initial value");
+    assert_eq!(fresh.v8.len(), 0);
 }

@@ -26,22 +26,51 @@ pub fn allowed_cpus() -> Vec<usize> {
 
 /// Pins the calling thread to `cpu`; threads it starts afterwards inherit the pin.
 pub fn pin(cpu: usize) -> Result<(), String> {
-    // SAFETY: cpu_set_t is plain data; all-zero is the empty set.
-    let mut set: libc::cpu_set_t = unsafe { std::mem::zeroed() };
-    if cpu >= libc::CPU_SETSIZE as usize {
-        return Err(format!("CPU {cpu} is beyond what sched_setaffinity takes"));
-    }
-    // SAFETY: `cpu` was checked against the set's size above.
-    unsafe { libc::CPU_SET(cpu, &mut set) };
+    pin_to(&[cpu])
+}
+
+/// Lets the calling thread run on `cpus` only; threads it starts afterwards inherit that.
+pub fn pin_to(cpus: &[usize]) -> Result<(), String> {
+    let set = cpu_set(cpus)?;
     // SAFETY: `set` is a valid cpu_set_t of the size passed; pid 0 is the calling thread.
     let rc = unsafe { libc::sched_setaffinity(0, std::mem::size_of_val(&set), &set) };
     if rc != 0 {
         return Err(format!(
-            "pinning to CPU {cpu}: {}",
+            "pinning to CPUs {cpus:?}: {}",
             std::io::Error::last_os_error()
         ));
     }
     Ok(())
+}
+
+/// Starts `command`'s process on `cpus` only (all its threads).
+pub fn pin_command(command: &mut std::process::Command, cpus: &[usize]) -> Result<(), String> {
+    use std::os::unix::process::CommandExt;
+    let set = cpu_set(cpus)?;
+    // SAFETY: the hook runs in the forked child before exec and only makes one
+    // async-signal-safe system call on data copied into the closure.
+    unsafe {
+        command.pre_exec(move || {
+            if libc::sched_setaffinity(0, std::mem::size_of_val(&set), &set) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        })
+    };
+    Ok(())
+}
+
+fn cpu_set(cpus: &[usize]) -> Result<libc::cpu_set_t, String> {
+    // SAFETY: cpu_set_t is plain data; all-zero is the empty set.
+    let mut set: libc::cpu_set_t = unsafe { std::mem::zeroed() };
+    for &cpu in cpus {
+        if cpu >= libc::CPU_SETSIZE as usize {
+            return Err(format!("CPU {cpu} is beyond what sched_setaffinity takes"));
+        }
+        // SAFETY: `cpu` was checked against the set's size above.
+        unsafe { libc::CPU_SET(cpu, &mut set) };
+    }
+    Ok(set)
 }
 
 /// Puts the calling thread under SCHED_FIFO at `priority`; threads it starts afterwards
