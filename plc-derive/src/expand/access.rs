@@ -17,35 +17,22 @@ use quote::{format_ident, quote};
 const CHUNK: usize = 1024;
 
 /// After field `i` changed: a bit-mapped bool updates its bit of the source word, a source
-/// word its bools (`onto`: [`mapped_onto`]; `place(j)`: the place expression of field `j`).
-pub fn after_set(
-    c: &Container,
-    onto: &[Vec<(usize, u8)>],
-    i: usize,
-    place: &dyn Fn(usize) -> TokenStream,
-) -> TokenStream {
+/// word its bools (`onto`: [`mapped_onto`]).
+pub fn after_set(c: &Container, onto: &[Vec<(usize, u8)>], i: usize) -> TokenStream {
     let p = private(c);
     let v = &c.vars[i];
-    let this = place(i);
+    let ident = v.ident;
     let to_source = v.mapped_to.map(|(s, bit)| {
-        let src = place(s);
+        let src = c.vars[s].ident;
         let bit = bit as u32;
-        quote!(#src = #p::with_bit(#src, #bit, #p::to_bit(#this));)
+        quote!(self.#src = #p::with_bit(self.#src, #bit, #p::to_bit(self.#ident));)
     });
     let to_bools = onto[i].iter().map(|&(b, bit)| {
-        let b = place(b);
+        let b = c.vars[b].ident;
         let bit = bit as u32;
-        quote!(#p::set_from_bit(&mut #b, #p::get_bit(#this, #bit));)
+        quote!(#p::set_from_bit(&mut self.#b, #p::get_bit(self.#ident, #bit));)
     });
     quote!(#to_source #(#to_bools)*)
-}
-
-/// `self.field` for field `i`.
-pub fn self_place<'c>(c: &'c Container<'_>) -> impl Fn(usize) -> TokenStream + 'c {
-    move |i| {
-        let ident = c.vars[i].ident;
-        quote!(self.#ident)
-    }
 }
 
 /// `try_get` and `set` for the `GlobalMemory` impl, and their chunk functions for an inherent
@@ -55,15 +42,15 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
     let krate = &c.krate;
     let ident = c.ident;
     let onto = mapped_onto(c);
-    let get_arm = |i: usize, place: &dyn Fn(usize) -> TokenStream| {
-        let (ty, at) = (c.vars[i].ty, place(i));
-        quote!(#i => <#ty as #p::PlcType>::get_element(&#at, element),)
+    let get_arm = |i: usize| {
+        let (ty, field) = (c.vars[i].ty, c.vars[i].ident);
+        quote!(#i => <#ty as #p::PlcType>::get_element(&self.#field, element),)
     };
     // No `?` per arm: the `Try` machinery of 10,000 arms cost the compiler seconds.
-    let set_arm = |i: usize, place: &dyn Fn(usize) -> TokenStream| {
-        let bits = after_set(c, &onto, i, place);
-        let at = place(i);
-        let set = quote!(#p::set_field(&mut #at, &__plc_vars[#i], element, value));
+    let set_arm = |i: usize| {
+        let bits = after_set(c, &onto, i);
+        let field = c.vars[i].ident;
+        let set = quote!(#p::set_field(&mut self.#field, &__plc_vars[#i], element, value));
         if bits.is_empty() {
             quote!(#i => #set,)
         } else {
@@ -98,10 +85,9 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
         }
     };
     let n = c.vars.len();
-    let place = self_place(c);
     if n <= CHUNK {
-        let gets: TokenStream = (0..n).map(|i| get_arm(i, &place)).collect();
-        let sets: TokenStream = (0..n).map(|i| set_arm(i, &place)).collect();
+        let gets: TokenStream = (0..n).map(&get_arm).collect();
+        let sets: TokenStream = (0..n).map(&set_arm).collect();
         let (get, set) = (get_body(gets), set_body(sets));
         let items = quote! {
             fn try_get #get_sig { #get }
@@ -118,8 +104,8 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
             format_ident!("__plc_try_get_{k}"),
             format_ident!("__plc_set_{k}"),
         );
-        let gets: TokenStream = fields.clone().map(|i| get_arm(i, &place)).collect();
-        let sets: TokenStream = fields.map(|i| set_arm(i, &place)).collect();
+        let gets: TokenStream = fields.clone().map(&get_arm).collect();
+        let sets: TokenStream = fields.map(&set_arm).collect();
         let (get, set) = (get_body(gets), set_body(sets));
         chunk_fns.extend(quote! {
             #[inline(never)]

@@ -146,13 +146,12 @@ fn leaf_get(c: &Container) -> TokenStream {
 fn leaf_set(c: &Container) -> TokenStream {
     let p = private(c);
     let onto = super::mapped_onto(c);
-    let place = super::access::self_place(c);
     c.vars
         .iter()
         .enumerate()
         .map(|(i, v)| {
             let (ident, ty) = (v.ident, v.ty);
-            let bits = super::access::after_set(c, &onto, i, &place);
+            let bits = super::access::after_set(c, &onto, i);
             quote! {
                 if leaf < <#ty as #p::PlcType>::LEAVES {
                     <#ty as #p::PlcType>::set_element(
