@@ -139,11 +139,6 @@ pub const fn var_info(parts: VarInfoParts) -> crate::VarInfo {
     crate::VarInfo::__from_parts(parts)
 }
 
-/// A [`BitMapping`] in a `const`.
-pub const fn bit_mapping(source: usize, bit: u8) -> BitMapping {
-    BitMapping { source, bit }
-}
-
 /// Sets element `element` of a field described by `info`, turning an element error into a
 /// [`SetError`] that names the variable.
 #[inline]

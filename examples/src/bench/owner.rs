@@ -314,15 +314,26 @@ pub fn stop_child(child: &mut Child) {
 /// in declaration order: each element of an array of basic values, each basic member of a
 /// structure.
 pub fn leaf_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
+    paths(seg, false)
+}
+
+/// Every variable node of a segment's OPC UA namespace (`plc opcua serve`): a basic variable
+/// whole (an array is one node), a structure member by member, in declaration order.
+pub fn variable_node_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
+    paths(seg, true)
+}
+
+/// The paths of a segment's basic values, an array of them as one path (`arrays_whole`) or
+/// one per element.
+fn paths(seg: &plc_io::shm::DynSegment, arrays_whole: bool) -> Vec<String> {
     let mut out = Vec::new();
     for v in &seg.descriptor().variables {
-        leaves(v, &v.name, &mut out);
+        walk(v, &v.name, arrays_whole, &mut out);
     }
     out
 }
 
-/// The basic values under `v`, named from `path`.
-fn leaves(v: &plc_io::shm::VarDescriptor, path: &str, out: &mut Vec<String>) {
+fn walk(v: &plc_io::shm::VarDescriptor, path: &str, arrays_whole: bool, out: &mut Vec<String>) {
     let elements = plc_core::rules::access::elements(&v.dims);
     let element = |e: usize| {
         if v.dims.is_empty() {
@@ -331,41 +342,16 @@ fn leaves(v: &plc_io::shm::VarDescriptor, path: &str, out: &mut Vec<String>) {
             format!("{path}[{}]", plc_core::rules::path::coordinates(e, &v.dims))
         }
     };
-    if v.members.is_empty() {
-        out.extend((0..elements).map(element));
-        return;
-    }
-    for e in 0..elements {
-        let at = element(e);
-        for m in &v.members {
-            leaves(m, &format!("{at}.{}", m.name), out);
-        }
-    }
-}
-
-/// Every variable node of a segment's OPC UA namespace (`plc opcua serve`): a basic variable
-/// whole (an array is one node), a structure member by member, in declaration order.
-pub fn variable_node_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
-    let mut out = Vec::new();
-    for v in &seg.descriptor().variables {
-        nodes(v, &v.name, &mut out);
-    }
-    out
-}
-
-fn nodes(v: &plc_io::shm::VarDescriptor, path: &str, out: &mut Vec<String>) {
-    if v.members.is_empty() {
-        out.push(path.to_string());
-        return;
-    }
-    for e in 0..plc_core::rules::access::elements(&v.dims) {
-        let at = if v.dims.is_empty() {
-            path.to_string()
-        } else {
-            format!("{path}[{}]", plc_core::rules::path::coordinates(e, &v.dims))
-        };
-        for m in &v.members {
-            nodes(m, &format!("{at}.{}", m.name), out);
+    match (v.members.is_empty(), arrays_whole) {
+        (true, true) => out.push(path.to_string()),
+        (true, false) => out.extend((0..elements).map(element)),
+        (false, _) => {
+            for e in 0..elements {
+                let at = element(e);
+                for m in &v.members {
+                    walk(m, &format!("{at}.{}", m.name), arrays_whole, out);
+                }
+            }
         }
     }
 }
