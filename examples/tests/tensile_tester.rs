@@ -50,6 +50,25 @@ fn tensile_tester_refuses_an_unknown_option_with_its_usage_and_exit_1() {
     );
 }
 
+#[test]
+fn tensile_tester_refuses_a_cpu_the_process_may_not_use_before_the_bus_starts() {
+    let id = std::process::id();
+    let retain = std::env::temp_dir().join(format!("tensile-cpu-{id}"));
+    let out = Command::new(env!("CARGO_BIN_EXE_tensile_tester"))
+        .args(["--cpu", "100000", "--segment", &format!("tt_cpu_{id}")])
+        .arg("--retain")
+        .arg(&retain)
+        .output()
+        .expect("tensile_tester starts");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("the cycle cannot run on CPU 100000: this process may run on CPUs"),
+        "{stderr}"
+    );
+    assert!(!retain.exists(), "nothing was made: {}", retain.display());
+}
+
 /// A running `tensile_tester`, killed if the test fails before stopping it.
 struct Program(Option<std::process::Child>);
 

@@ -244,25 +244,44 @@ where
     })
 }
 
-/// The physical floor: two plain copies of an image of the same size.
+/// The physical floor: plain copies around a ring of buffers of an image's size, each buffer
+/// copied into the next. [`new`](Self::new) is two buffers (in and out: two copies); a ring
+/// of [`CYCLE_BUFFERS`](Self::CYCLE_BUFFERS) the buffers a cycle passes its data through.
 pub struct MemcpyFloor {
-    a: Vec<u8>,
-    b: Vec<u8>,
+    buffers: Vec<Vec<u8>>,
 }
 
 impl MemcpyFloor {
-    /// Buffers of `len` bytes.
+    /// Two buffers of `len` bytes: the image in and the image out.
     pub fn new(len: usize) -> Self {
+        Self::ring(len, 2)
+    }
+
+    /// The buffers of [`FrameworkCycle::step`]: segment, image in, struct, image out. Its four
+    /// copies around them (snapshot, load, store, publish), with none of its conversion work,
+    /// show how the memory hierarchy alone grows a cycle's time with its size.
+    pub const CYCLE_BUFFERS: usize = 4;
+
+    /// `buffers` buffers of `len` bytes (at least two).
+    pub fn ring(len: usize, buffers: usize) -> Self {
         MemcpyFloor {
-            a: vec![1; len],
-            b: vec![0; len],
+            buffers: (0..buffers).map(|i| vec![i as u8; len]).collect(),
         }
     }
 
-    /// Two copies, in and out.
+    /// One copy into each buffer from the one before it.
     #[inline(never)]
     pub fn step(&mut self) {
-        self.b.copy_from_slice(black_box(&self.a));
-        self.a.copy_from_slice(black_box(&self.b));
+        let n = self.buffers.len();
+        for to in 0..n {
+            let from = (to + n - 1) % n;
+            let (low, high) = self.buffers.split_at_mut(to.max(from));
+            let (source, target) = if from < to {
+                (&low[from], &mut high[0])
+            } else {
+                (&high[0], &mut low[to])
+            };
+            target.copy_from_slice(black_box(source));
+        }
     }
 }

@@ -87,12 +87,15 @@ fn main() {
             "cycle_10k" => match examples::bench::cycle_10k::run(batches) {
                 Ok(lines) => {
                     print!("{lines}");
-                    memcpy_growth(batches);
+                    memcpy_growth(batches, 1);
                 }
                 Err(e) => fail(&e),
             },
             "cycle_100k" => match examples::bench::cycle_10k::run_100k(batches) {
-                Ok(lines) => print!("{lines}"),
+                Ok(lines) => {
+                    print!("{lines}");
+                    memcpy_growth(batches, 10);
+                }
                 Err(e) => fail(&e),
             },
             "snapshot" => snapshot_latency(&segment, if quick { 3 } else { 10 }),
@@ -159,25 +162,41 @@ fn cycle(segment: &str, batches: usize) {
     }
 }
 
-/// How the memcpy floor itself grows from the 1k image to the 10k one (two copies of 44,880
-/// bytes against ten of two copies of 4,488): the part of `cycle_10k_over_1k` that is the
-/// memory hierarchy's (the 1k cycle's buffers fit the L1 data cache, the 10k cycle's do not).
-fn memcpy_growth(batches: usize) {
-    let (mut small, mut large) = (
-        MemcpyFloor::new(IMAGE_SIZE),
-        MemcpyFloor::new(10 * IMAGE_SIZE),
-    );
-    let (one_k, ten_k) = side_by_side(
-        batches,
-        200,
-        || {
-            for _ in 0..10 {
-                small.step();
-            }
-        },
-        || large.step(),
-    );
-    println!("memcpy_10k_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
+/// How the memcpy floor itself grows from `small_k` thousand variables to ten times as many (images of
+/// 4,488 bytes per 1,000 variables): the part of the cycle's growth that is the memory
+/// hierarchy's. Two figures: the two copies of `cycle_1k_vs_memcpy`
+/// (`memcpy_<large>_over_<small>`), and the four copies around the cycle's four buffers
+/// (`memcpy_cycle_buffers_<large>_over_<small>`). From 1k to 10k the cycle's buffers leave the
+/// L1 data cache for L2; from 10k to 100k they fill this machine's 2 MiB L2.
+fn memcpy_growth(batches: usize, small_k: usize) {
+    let len = IMAGE_SIZE * small_k;
+    let floors = [
+        ("memcpy", 2),
+        ("memcpy_cycle_buffers", MemcpyFloor::CYCLE_BUFFERS),
+    ];
+    // As many bytes per batch as the 1k cycle's 200 steps of ten.
+    let iters = (200 / small_k).max(2) as u32;
+    for (figure, buffers) in floors {
+        let (mut one, mut ten) = (
+            MemcpyFloor::ring(len, buffers),
+            MemcpyFloor::ring(10 * len, buffers),
+        );
+        let (small_t, large_t) = side_by_side(
+            batches,
+            iters,
+            || {
+                for _ in 0..10 {
+                    one.step();
+                }
+            },
+            || ten.step(),
+        );
+        println!(
+            "{figure}_{}k_over_{small_k}k: {:.2}",
+            10 * small_k,
+            10.0 * ratio(large_t, small_t)
+        );
+    }
 }
 
 /// The cycle on 100 ten-member structures against the same 1,000 variables flat: what the

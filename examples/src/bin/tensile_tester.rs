@@ -11,7 +11,9 @@
 //! bus), `--period-us N` (cycle period, default 1000), `--cycles N` (stop after N cycles),
 //! `--segment NAME` (shared memory for HMIs, default `tensile_tester`), `--retain DIR`
 //! (directory of the retain file, default `plc-vars/tensile_tester` in the user's state
-//! directory, `/var/lib` for root; created private, and refused if others may write it).
+//! directory, `/var/lib` for root; created private, and refused if others may write it),
+//! `--cpu N` (run the cycle and the bus on CPU N, the runtime's other threads elsewhere),
+//! `--realtime-priority P` (SCHED_FIFO at P, 1 to 99: root or CAP_SYS_NICE).
 //!
 //! On the simulated bus (EK1100, EL1004, EL2889, EL2004) a model of the machine runs on a
 //! thread: it reads the drive outputs and sets the limit switches, so the program runs one
@@ -34,10 +36,13 @@ struct Args {
     cycles: Option<u64>,
     segment: String,
     retain: Option<PathBuf>,
+    cpu: Option<usize>,
+    realtime_priority: Option<i32>,
 }
 
 const USAGE: &str = "usage: tensile_tester [--bus FILE] [--interface NAME] [--period-us N] \
-                     [--cycles N] [--segment NAME] [--retain DIR]";
+                     [--cycles N] [--segment NAME] [--retain DIR] [--cpu N] \
+                     [--realtime-priority P]";
 
 fn parse_args() -> Result<Args, String> {
     let mut args = Args {
@@ -47,6 +52,8 @@ fn parse_args() -> Result<Args, String> {
         cycles: None,
         segment: "tensile_tester".into(),
         retain: None,
+        cpu: None,
+        realtime_priority: None,
     };
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
@@ -74,6 +81,11 @@ fn parse_args() -> Result<Args, String> {
             "--cycles" => args.cycles = Some(number(value()?)?),
             "--segment" => args.segment = value()?,
             "--retain" => args.retain = Some(value()?.into()),
+            "--cpu" => args.cpu = Some(number(value()?)? as usize),
+            "--realtime-priority" => match number(value()?)? {
+                p @ 1..=99 => args.realtime_priority = Some(p as i32),
+                p => return Err(format!("--realtime-priority: {p} is not within 1 to 99")),
+            },
             other => return Err(format!("unknown option `{other}`\n{USAGE}")),
         }
     }
@@ -154,6 +166,12 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         .backend(backend);
     if let Some(n) = args.cycles {
         builder = builder.max_cycles(n);
+    }
+    if let Some(cpu) = args.cpu {
+        builder = builder.cpu(cpu);
+    }
+    if let Some(priority) = args.realtime_priority {
+        builder = builder.realtime_priority(priority);
     }
     let stop = builder.stop_handle();
     let monitor = status_line(args.segment.clone(), stop.clone());

@@ -2,6 +2,7 @@
 //! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
 
 use super::clock::{CycleClock, monotonic_ns};
+use super::placement::CpuPlacement;
 use super::schedule::Schedule;
 use super::stats::RunningMean;
 use super::{
@@ -36,15 +37,22 @@ where
     /// Called with each cycle's timestamps (benchmarks only).
     #[cfg(feature = "cycle-probe")]
     probe: Option<super::probe::Probe>,
+    /// The cycle's CPU, if one was asked for; dropped with the cycle, it gives the calling
+    /// thread its CPUs back.
+    placement: Option<CpuPlacement>,
 }
 
 impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
 where
     T::Image: Send,
 {
-    /// Realtime priority and signals as asked, retained values loaded, the segment created
-    /// and the initial image published, then the I/O started.
+    /// The CPU checked, realtime priority and signals as asked, retained values loaded, the
+    /// segment created and the initial image published, the cycle moved to its CPU, then the
+    /// I/O started.
     pub(super) fn start(s: &mut RuntimeBuilder<T>) -> Result<Self, RuntimeError> {
+        // First, so that a CPU the process may not use is refused before anything is made,
+        // and the helper threads below start on the other CPUs.
+        let placement = s.cpu.map(CpuPlacement::keep_free).transpose()?;
         if let Some(p) = s.realtime {
             set_realtime(p)?;
         }
@@ -82,10 +90,15 @@ where
             mean: RunningMean::default(),
             #[cfg(feature = "cycle-probe")]
             probe: s.probe.take(),
+            placement,
         };
         // The initial and restored values go out before the bus starts (which can take
         // seconds): a tool attaching meanwhile reads them, not a zeroed image.
         cycle.publish_image(monotonic_ns());
+        // The helpers have started; the I/O's threads, started next, run with the cycle.
+        if let Some(placement) = &cycle.placement {
+            placement.pin_cycle()?;
+        }
         s.backend.start().map_err(RuntimeError::Io)?;
         if let Some(shm) = &cycle.shm {
             shm.set_run_state(RunState::Running);

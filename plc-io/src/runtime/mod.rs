@@ -6,6 +6,7 @@ mod bus_state;
 mod clock;
 mod context;
 mod cycle;
+mod placement;
 #[cfg(feature = "cycle-probe")]
 pub mod probe;
 mod schedule;
@@ -41,6 +42,9 @@ pub enum RuntimeError {
     RetainNotSaved(RetainError),
     /// Realtime scheduling was asked for but not permitted.
     Realtime(String),
+    /// The cycle could not be placed on the CPU asked for
+    /// ([`RuntimeBuilder::cpu`]): the message names it and the CPUs the process may use.
+    Cpu(String),
     /// The program panicked in its tick: outputs were zeroed and the I/O put in a safe state.
     Panicked {
         /// The cycle it panicked in.
@@ -61,7 +65,7 @@ impl fmt::Display for RuntimeError {
                 "the retained values were not saved at stop: {e}; the file keeps the values of \
                  the last save that succeeded"
             ),
-            RuntimeError::Realtime(e) => write!(f, "{e}"),
+            RuntimeError::Realtime(e) | RuntimeError::Cpu(e) => write!(f, "{e}"),
             RuntimeError::Panicked { cycle, message } => write!(
                 f,
                 "the program panicked in cycle {cycle}: {message}; outputs were set to zero and \
@@ -113,6 +117,7 @@ pub struct RuntimeBuilder<T> {
     retain_interval: Duration,
     backend: Box<dyn IoBackend<T> + Send>,
     realtime: Option<i32>,
+    cpu: Option<usize>,
     max_cycles: Option<u64>,
     signals: bool,
     stop: StopHandle,
@@ -158,6 +163,7 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
             retain_interval: Duration::from_millis(1000),
             backend: Box::new(NoIo),
             realtime: None,
+            cpu: None,
             max_cycles: None,
             signals: true,
             stop: StopHandle::default(),
@@ -228,6 +234,31 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// Runs the cycle thread with SCHED_FIFO at this priority (1..=99).
     pub fn realtime_priority(mut self, priority: i32) -> Self {
         self.realtime = Some(priority);
+        self
+    }
+    /// Runs the cycle on CPU `cpu` (numbered as the kernel does, from 0), with the threads
+    /// its I/O starts (EtherCAT's sending and receiving), and the runtime's other threads
+    /// (the server that answers tools, the retain writer) on the other CPUs the process may
+    /// use, so nothing of the runtime's runs on the cycle's CPU between cycles. With
+    /// `realtime_priority` and a CPU the kernel keeps free of other work (`isolcpus=` on its
+    /// command line), the cycle has that CPU to itself. A CPU the process may not use stops
+    /// the start with [`RuntimeError::Cpu`], before anything is created. The calling thread
+    /// gets its CPUs back when [`Runtime::run`] returns.
+    ///
+    /// ```no_run
+    /// # use plc_core::GlobalMemory;
+    /// # #[derive(GlobalMemory, Debug, Clone)]
+    /// # struct Gm { #[plc(direction = "output")] lamp: bool }
+    /// plc_io::Runtime::<Gm>::builder()
+    ///     .period(std::time::Duration::from_millis(1))
+    ///     .realtime_priority(80)
+    ///     .cpu(3)
+    ///     .build()
+    ///     .run(|ctx| ctx.gm.lamp = !ctx.gm.lamp)?;
+    /// # Ok::<(), plc_io::RuntimeError>(())
+    /// ```
+    pub fn cpu(mut self, cpu: usize) -> Self {
+        self.cpu = Some(cpu);
         self
     }
     /// Stops after this many cycles.
