@@ -5,6 +5,7 @@
 //! `pack_bits`, the image out, a seqlock publish; the program's tick is empty.
 
 use super::hand_seqlock::HandSeqlock;
+use super::timing::{ratio, side_by_side};
 use plc_core::GlobalMemory;
 use plc_io::shm::{SharedGlobalMemory, ShmOwner};
 use std::hint::black_box;
@@ -34,12 +35,14 @@ pub trait HandWritten {
 #[repr(C, align(64))]
 struct Aligned<I>(I);
 
-/// The framework's cycle on a real shared-memory segment.
+/// The framework's cycle on a real shared-memory segment. One image buffer takes the
+/// snapshot in and the image out, as `plc_io::Runtime` keeps one: its data passes through
+/// three buffers (segment, image, struct), not four, which decides how the cycle grows once
+/// they outgrow a cache.
 pub struct FrameworkCycle<T: GlobalMemory> {
     owner: ShmOwner<T>,
     gm: T,
-    image_in: Box<Aligned<T::Image>>,
-    image_out: Box<Aligned<T::Image>>,
+    image: Box<Aligned<T::Image>>,
 }
 
 impl<T: GlobalMemory + Default> FrameworkCycle<T> {
@@ -52,8 +55,7 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
         Ok(FrameworkCycle {
             owner,
             gm,
-            image_in: Box::new(Aligned(image)),
-            image_out: Box::new(Aligned(image)),
+            image: Box::new(Aligned(image)),
         })
     }
 
@@ -61,9 +63,9 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
     #[inline(never)]
     pub fn step(&mut self) {
         self.owner
-            .snapshot_image_into(&mut self.image_in.0)
+            .snapshot_image_into(&mut self.image.0)
             .expect("the benchmark owns its segment");
-        self.gm.load_image(&self.image_in.0);
+        self.gm.load_image(&self.image.0);
         self.bits_and_out();
     }
 }
@@ -78,18 +80,18 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
         [
             ("snapshot", |c| {
                 c.owner
-                    .snapshot_image_into(&mut c.image_in.0)
+                    .snapshot_image_into(&mut c.image.0)
                     .expect("the benchmark owns its segment")
             }),
-            ("load", |c| c.gm.load_image(black_box(&c.image_in.0))),
+            ("load", |c| c.gm.load_image(black_box(&c.image.0))),
             ("bits", |c| {
                 c.gm.unpack_bits();
                 c.gm.pack_bits();
             }),
-            ("store", |c| c.gm.store_image(black_box(&mut c.image_out.0))),
+            ("store", |c| c.gm.store_image(black_box(&mut c.image.0))),
             ("publish", |c| {
                 c.owner
-                    .publish_image(black_box(&c.image_out.0))
+                    .publish_image(black_box(&c.image.0))
                     .expect("the benchmark owns its segment")
             }),
         ]
@@ -109,19 +111,49 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
     fn bits_and_out(&mut self) {
         self.gm.unpack_bits();
         self.gm.pack_bits();
-        self.gm.store_image(&mut self.image_out.0);
+        self.gm.store_image(&mut self.image.0);
         self.owner
-            .publish_image(black_box(&self.image_out.0))
+            .publish_image(black_box(&self.image.0))
             .expect("the benchmark owns its segment");
     }
 }
 
-/// The same cycle, hand-written: its own seqlock, manual conversions.
+/// Where a cycle's growth is: each part of one `large` cycle against the same part of ten
+/// `small` ones (ten times the variables), side by side in `batches` batches of `iters`;
+/// prints `cycle_<large>_<part>_ns` and `cycle_<large>_<part>_over_<small>` (10 = linear)
+/// for `names` = (small, large).
+pub fn growth_by_part<S: GlobalMemory, L: GlobalMemory>(
+    batches: usize,
+    iters: u32,
+    small: &mut FrameworkCycle<S>,
+    large: &mut FrameworkCycle<L>,
+    (small_name, large_name): (&str, &str),
+) {
+    let parts = FrameworkCycle::<L>::parts().into_iter();
+    for ((part, large_part), (_, small_part)) in parts.zip(FrameworkCycle::<S>::parts()) {
+        let (small_t, large_t) = side_by_side(
+            batches,
+            iters,
+            || {
+                for _ in 0..10 {
+                    small_part(small);
+                }
+            },
+            || large_part(large),
+        );
+        println!("cycle_{large_name}_{part}_ns: {}", large_t.as_nanos());
+        println!(
+            "cycle_{large_name}_{part}_over_{small_name}: {:.2}",
+            10.0 * ratio(large_t, small_t)
+        );
+    }
+}
+
+/// The same cycle, hand-written: its own seqlock, manual conversions, one image buffer.
 pub struct HandCycle<H: HandWritten> {
     lock: HandSeqlock,
     hand: H,
-    image_in: Vec<u64>,
-    image_out: Vec<u64>,
+    image: Vec<u64>,
 }
 
 impl<H: HandWritten> Default for HandCycle<H> {
@@ -129,8 +161,7 @@ impl<H: HandWritten> Default for HandCycle<H> {
         HandCycle {
             lock: HandSeqlock::new(H::IMAGE_SIZE.next_multiple_of(8)),
             hand: H::zeroed(),
-            image_in: vec![0; H::IMAGE_SIZE.div_ceil(8)],
-            image_out: vec![0; H::IMAGE_SIZE.div_ceil(8)],
+            image: vec![0; H::IMAGE_SIZE.div_ceil(8)],
         }
     }
 }
@@ -139,10 +170,9 @@ impl<H: HandWritten> HandCycle<H> {
     /// The same five parts as [`FrameworkCycle::parts`].
     pub fn parts() -> Parts<Self> {
         [
-            ("snapshot", |c| c.lock.snapshot(c.image_in.as_mut_bytes())),
+            ("snapshot", |c| c.lock.snapshot(c.image.as_mut_bytes())),
             ("load", |c| {
-                c.hand
-                    .load(black_box(&c.image_in.as_bytes()[..H::IMAGE_SIZE]))
+                c.hand.load(black_box(&c.image.as_bytes()[..H::IMAGE_SIZE]))
             }),
             ("bits", |c| {
                 c.hand.unpack();
@@ -150,11 +180,9 @@ impl<H: HandWritten> HandCycle<H> {
             }),
             ("store", |c| {
                 c.hand
-                    .store(black_box(&mut c.image_out.as_mut_bytes()[..H::IMAGE_SIZE]))
+                    .store(black_box(&mut c.image.as_mut_bytes()[..H::IMAGE_SIZE]))
             }),
-            ("publish", |c| {
-                c.lock.publish(black_box(c.image_out.as_bytes()))
-            }),
+            ("publish", |c| c.lock.publish(black_box(c.image.as_bytes()))),
         ]
     }
 
@@ -162,14 +190,13 @@ impl<H: HandWritten> HandCycle<H> {
     #[inline(never)]
     pub fn step(&mut self) {
         // Word buffers: 8-aligned, as a hand-writer copying words would allocate them.
-        let image_in = self.image_in.as_mut_bytes();
-        self.lock.snapshot(image_in);
-        self.hand.load(&image_in[..H::IMAGE_SIZE]);
+        let image = self.image.as_mut_bytes();
+        self.lock.snapshot(image);
+        self.hand.load(&image[..H::IMAGE_SIZE]);
         self.hand.unpack();
         self.hand.pack();
-        let image_out = self.image_out.as_mut_bytes();
-        self.hand.store(&mut image_out[..H::IMAGE_SIZE]);
-        self.lock.publish(black_box(image_out));
+        self.hand.store(&mut image[..H::IMAGE_SIZE]);
+        self.lock.publish(black_box(image));
     }
 }
 
@@ -244,37 +271,43 @@ where
     })
 }
 
-/// The physical floor: plain copies around a ring of buffers of an image's size, each buffer
-/// copied into the next. [`new`](Self::new) is two buffers (in and out: two copies); a ring
-/// of [`CYCLE_BUFFERS`](Self::CYCLE_BUFFERS) the buffers a cycle passes its data through.
+/// The physical floor: plain copies between buffers of an image's size, along a route of
+/// buffers. [`new`](Self::new) is two copies between two buffers (in and out);
+/// [`cycle_copies`](Self::cycle_copies) the copies a cycle makes through its buffers.
 pub struct MemcpyFloor {
     buffers: Vec<Vec<u8>>,
+    /// The buffers in the order the data goes through them: each step copies every one into
+    /// the next.
+    route: Vec<usize>,
 }
 
 impl MemcpyFloor {
-    /// Two buffers of `len` bytes: the image in and the image out.
+    /// Two buffers of `len` bytes, the image in and the image out, copied one into the other
+    /// and back.
     pub fn new(len: usize) -> Self {
-        Self::ring(len, 2)
+        Self::along(len, 2, vec![0, 1, 0])
     }
 
-    /// The buffers of [`FrameworkCycle::step`]: segment, image in, struct, image out. Its four
-    /// copies around them (snapshot, load, store, publish), with none of its conversion work,
-    /// show how the memory hierarchy alone grows a cycle's time with its size.
-    pub const CYCLE_BUFFERS: usize = 4;
+    /// The copies of [`FrameworkCycle::step`] through its three buffers of `len` bytes
+    /// (segment, image, struct), with none of its conversion work: snapshot (segment to
+    /// image), load (image to struct), store (struct to image), publish (image to segment).
+    /// How the memory hierarchy alone grows a cycle's time with its size.
+    pub fn cycle_copies(len: usize) -> Self {
+        Self::along(len, 3, vec![0, 1, 2, 1, 0])
+    }
 
-    /// `buffers` buffers of `len` bytes (at least two).
-    pub fn ring(len: usize, buffers: usize) -> Self {
+    fn along(len: usize, buffers: usize, route: Vec<usize>) -> Self {
         MemcpyFloor {
             buffers: (0..buffers).map(|i| vec![i as u8; len]).collect(),
+            route,
         }
     }
 
-    /// One copy into each buffer from the one before it.
+    /// One copy along each leg of the route.
     #[inline(never)]
     pub fn step(&mut self) {
-        let n = self.buffers.len();
-        for to in 0..n {
-            let from = (to + n - 1) % n;
+        for leg in self.route.windows(2) {
+            let (from, to) = (leg[0], leg[1]);
             let (low, high) = self.buffers.split_at_mut(to.max(from));
             let (source, target) = if from < to {
                 (&low[from], &mut high[0])

@@ -18,7 +18,7 @@ use std::process::Command;
 const MAIN: &str = r#"
 mod gm10k;
 
-use examples::bench::cycle::{FrameworkCycle, HandCycle};
+use examples::bench::cycle::{FrameworkCycle, HandCycle, growth_by_part};
 use examples::bench::gm1k::Gm1k;
 use examples::bench::timing::{ratio, side_by_side};
 
@@ -44,22 +44,7 @@ fn main() {
     println!("cycle_10k_ns: {}", ten_k.as_nanos());
     println!("cycle_10k_vs_handwritten: {:.2}", ratio(ours, theirs));
     println!("cycle_10k_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
-    // Where the growth is: each part of one 10k cycle against the same part of ten 1k ones.
-    let parts = FrameworkCycle::<gm10k::Gm10k>::parts().into_iter();
-    for ((name, part), (_, small_part)) in parts.zip(FrameworkCycle::<Gm1k>::parts()) {
-        let (one_k, ten_k) = side_by_side(
-            batches / 4,
-            200,
-            || {
-                for _ in 0..10 {
-                    small_part(&mut small);
-                }
-            },
-            || part(&mut large),
-        );
-        println!("cycle_10k_{name}_ns: {}", ten_k.as_nanos());
-        println!("cycle_10k_{name}_over_1k: {:.2}", 10.0 * ratio(ten_k, one_k));
-    }
+    growth_by_part(batches / 4, 200, &mut small, &mut large, ("1k", "10k"));
 }
 "#;
 
@@ -68,7 +53,7 @@ const MAIN_100K: &str = r#"
 mod gm10k;
 mod gm100k;
 
-use examples::bench::cycle::FrameworkCycle;
+use examples::bench::cycle::{FrameworkCycle, growth_by_part};
 use examples::bench::timing::{ratio, side_by_side};
 
 fn main() {
@@ -90,6 +75,7 @@ fn main() {
     );
     println!("cycle_100k_ns: {}", hundred_k.as_nanos());
     println!("cycle_100k_over_10k: {:.2}", 10.0 * ratio(hundred_k, ten_k));
+    growth_by_part(batches / 4, 20, &mut small, &mut large, ("10k", "100k"));
 }
 "#;
 

@@ -162,25 +162,23 @@ fn cycle(segment: &str, batches: usize) {
     }
 }
 
-/// How the memcpy floor itself grows from `small_k` thousand variables to ten times as many (images of
-/// 4,488 bytes per 1,000 variables): the part of the cycle's growth that is the memory
-/// hierarchy's. Two figures: the two copies of `cycle_1k_vs_memcpy`
-/// (`memcpy_<large>_over_<small>`), and the four copies around the cycle's four buffers
+/// How the memcpy floor itself grows from `small_k` thousand variables to ten times as many
+/// (images of 4,488 bytes per 1,000 variables): the part of the cycle's growth that is the
+/// memory hierarchy's. Two figures: the two copies of `cycle_1k_vs_memcpy`
+/// (`memcpy_<large>_over_<small>`), and the cycle's four copies through its three buffers
 /// (`memcpy_cycle_buffers_<large>_over_<small>`). From 1k to 10k the cycle's buffers leave the
-/// L1 data cache for L2; from 10k to 100k they fill this machine's 2 MiB L2.
+/// L1 data cache for L2; from 10k to 100k they fill most of this machine's 2 MiB L2.
 fn memcpy_growth(batches: usize, small_k: usize) {
+    type Floor = fn(usize) -> MemcpyFloor;
     let len = IMAGE_SIZE * small_k;
-    let floors = [
-        ("memcpy", 2),
-        ("memcpy_cycle_buffers", MemcpyFloor::CYCLE_BUFFERS),
+    let floors: [(&str, Floor); 2] = [
+        ("memcpy", MemcpyFloor::new),
+        ("memcpy_cycle_buffers", MemcpyFloor::cycle_copies),
     ];
     // As many bytes per batch as the 1k cycle's 200 steps of ten.
     let iters = (200 / small_k).max(2) as u32;
-    for (figure, buffers) in floors {
-        let (mut one, mut ten) = (
-            MemcpyFloor::ring(len, buffers),
-            MemcpyFloor::ring(10 * len, buffers),
-        );
+    for (figure, floor) in floors {
+        let (mut one, mut ten) = (floor(len), floor(10 * len));
         let (small_t, large_t) = side_by_side(
             batches,
             iters,

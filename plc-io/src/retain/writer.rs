@@ -33,6 +33,9 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
         let thread = std::thread::Builder::new()
             .name("plc-retain".into())
             .spawn(move || {
+                // Saving (converting, writing, syncing the file) must not compete with a
+                // realtime cycle, whose priority this thread would otherwise inherit.
+                crate::runtime::placement::normal_priority();
                 let mut pending: Option<I> = None;
                 // None: nothing saved yet, so the first change is saved at once.
                 let mut last_save: Option<Instant> = None;

@@ -6,7 +6,7 @@ mod bus_state;
 mod clock;
 mod context;
 mod cycle;
-mod placement;
+pub(crate) mod placement;
 #[cfg(feature = "cycle-probe")]
 pub mod probe;
 mod schedule;

@@ -1,7 +1,9 @@
-//! Where the cycle runs ([`RuntimeBuilder::cpu`](super::RuntimeBuilder::cpu)): its thread, and
-//! the I/O threads that take part in each bus exchange, on one CPU; the runtime's other
-//! threads (the shared-memory server answering tools, the retain writer) on the CPUs left, so
-//! they never run on the cycle's CPU between cycles and evict its caches.
+//! Where the runtime's threads run and at what priority. The cycle
+//! ([`RuntimeBuilder::cpu`](super::RuntimeBuilder::cpu)): its thread, and the I/O threads that
+//! take part in each bus exchange, on one CPU; the runtime's other threads (the shared-memory
+//! server answering tools, the retain writer) on the CPUs left, so they never run on the
+//! cycle's CPU between cycles and evict its caches, and at normal priority
+//! ([`normal_priority`]) even when the cycle is realtime.
 //!
 //! Threads inherit the CPUs of the thread that starts them, so the placement is made in two
 //! steps around their start: [`CpuPlacement::keep_free`] before the helpers start,
@@ -59,6 +61,17 @@ impl Drop for CpuPlacement {
         // SAFETY: `original` is a valid cpu_set_t of the size passed; pid 0 is this thread.
         unsafe { libc::sched_setaffinity(0, size_of::<libc::cpu_set_t>(), &self.original) };
     }
+}
+
+/// Puts the calling thread back to normal scheduling. A thread started from a realtime cycle
+/// thread inherits its SCHED_FIFO priority, and a helper (a tools' server, the retain
+/// writer) must never compete with the cycle: under SCHED_FIFO a cycle that wakes waits for a
+/// runnable helper of its own priority on its CPU to block.
+pub(crate) fn normal_priority() {
+    let param = libc::sched_param { sched_priority: 0 };
+    // SAFETY: plain call on the calling thread with a valid parameter struct; failure leaves
+    // the thread as it was.
+    unsafe { libc::pthread_setschedparam(libc::pthread_self(), libc::SCHED_OTHER, &param) };
 }
 
 /// The calling thread's CPUs.

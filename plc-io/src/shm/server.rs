@@ -129,17 +129,8 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// Puts the calling thread back to normal scheduling: a server thread started from a
-/// realtime cycle thread inherits its priority, and tools must never compete with the cycle.
-fn normal_priority() {
-    let param = libc::sched_param { sched_priority: 0 };
-    // SAFETY: plain call on the calling thread with a valid parameter struct; failure leaves
-    // the thread as it was.
-    unsafe { libc::pthread_setschedparam(libc::pthread_self(), libc::SCHED_OTHER, &param) };
-}
-
 fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
-    normal_priority();
+    crate::runtime::placement::normal_priority();
     while !shared.stop.load(Relaxed) {
         match unix::readable(listener.as_raw_fd(), STOP_POLL) {
             Ok(true) => {}
@@ -207,7 +198,7 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
     let spawned = std::thread::Builder::new()
         .name(format!("plc-shm-conn-{}", peer.pid))
         .spawn(move || {
-            normal_priority();
+            crate::runtime::placement::normal_priority();
             serve(&s, &c, &peer);
             // However it ended, the tool sees the connection closed, never a silent one.
             unix::shutdown(c.fd.as_raw_fd());

@@ -1,6 +1,7 @@
-//! `RuntimeBuilder::cpu`: the cycle and the threads its I/O starts on the CPU asked for, the
-//! runtime's helper threads (tools' server, retain writer) on the others, the caller's CPUs
-//! given back at the end, and a CPU the process may not use refused with its number.
+//! Where the runtime's threads run. `RuntimeBuilder::cpu`: the cycle and the threads its I/O
+//! starts on the CPU asked for, the runtime's helper threads (tools' server, retain writer) on
+//! the others, the caller's CPUs given back at the end, and a CPU the process may not use
+//! refused with its number. Under `realtime_priority` the helpers run at normal priority.
 //!
 //! The tests look at every thread of the process by name, so they take turns.
 
@@ -8,7 +9,7 @@ mod common;
 
 use common::unique;
 use plc_core::GlobalMemory;
-use plc_io::{BusState, IoBackend, IoError, IoStatus, Runtime, RuntimeError};
+use plc_io::{BusState, IoBackend, IoError, IoStatus, Runtime, RuntimeBuilder, RuntimeError};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -21,6 +22,9 @@ pub struct Gm {
 }
 
 static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
+
+/// Cycles (of 1 ms) for the helper threads to be found by name.
+const LOOKS: u64 = 2000;
 
 /// The calling thread's CPUs, ascending.
 fn own_cpus() -> Vec<usize> {
@@ -47,9 +51,15 @@ fn pin_self(cpus: &[usize]) {
     assert_eq!(rc, 0, "sched_setaffinity");
 }
 
-/// Each thread of this process whose name starts with `prefix`: its CPUs, as the kernel
-/// lists them (`Cpus_allowed_list`, e.g. "0-1" or "3").
-fn threads_cpus(prefix: &str) -> Vec<String> {
+/// A thread of this process: its id and its CPUs as the kernel lists them
+/// (`Cpus_allowed_list`, e.g. "0-1" or "3").
+struct Thread {
+    tid: libc::pid_t,
+    cpus: String,
+}
+
+/// Each thread of this process whose name starts with `prefix`.
+fn threads(prefix: &str) -> Vec<Thread> {
     let mut found = Vec::new();
     for task in std::fs::read_dir("/proc/self/task").unwrap() {
         let task = task.unwrap().path();
@@ -62,11 +72,15 @@ fn threads_cpus(prefix: &str) -> Vec<String> {
         let Ok(status) = std::fs::read_to_string(task.join("status")) else {
             continue;
         };
-        let line = status
+        let cpus = status
             .lines()
             .find_map(|l| l.strip_prefix("Cpus_allowed_list:"))
             .unwrap();
-        found.push(line.trim().to_string());
+        let tid = task.file_name().unwrap().to_str().unwrap().parse().unwrap();
+        found.push(Thread {
+            tid,
+            cpus: cpus.trim().to_string(),
+        });
     }
     found
 }
@@ -104,50 +118,67 @@ impl IoBackend<Gm> for ThreadedIo {
     fn stop(&mut self) {}
 }
 
-/// What the first tick of a run on `cpu` saw.
+/// Runs a program with a segment and a retain file, its builder finished by `configure`. At
+/// the first cycle by which both helper threads have named themselves (a new thread does so
+/// once it runs), calls `look` on the cycle's thread with them (the socket server's, the
+/// retain writer's) and stops. Returns what `look` returned.
+fn look_at_helpers<R>(
+    name: &str,
+    configure: impl FnOnce(RuntimeBuilder<Gm>) -> RuntimeBuilder<Gm>,
+    mut look: impl FnMut(Vec<Thread>, Vec<Thread>) -> R,
+) -> Result<R, RuntimeError> {
+    let dir = std::env::temp_dir().join(unique(name));
+    std::fs::create_dir_all(&dir).unwrap();
+    let builder = configure(
+        Runtime::<Gm>::builder()
+            .period(Duration::from_millis(1))
+            .segment(unique(name))
+            .retain(dir.join("gm.retain"))
+            .max_cycles(LOOKS)
+            .handle_signals(false),
+    );
+    let stop = builder.stop_handle();
+    let mut seen = None;
+    let run = builder.build().run(|ctx| {
+        ctx.gm.count += 1;
+        let (server, retain_writer) = (threads("plc-shm-"), threads("plc-retain"));
+        if seen.is_none() && !server.is_empty() && !retain_writer.is_empty() {
+            seen = Some(look(server, retain_writer));
+            stop.stop();
+        }
+    });
+    std::fs::remove_dir_all(&dir).unwrap();
+    run?;
+    Ok(seen.expect("both helper threads were found by name"))
+}
+
+/// What a run on `cpu` saw in its cycle.
 struct Seen {
     cycle_cpus: Vec<usize>,
     running_on: usize,
     io_thread: Vec<usize>,
-    server: Vec<String>,
-    retain_writer: Vec<String>,
+    helpers: Vec<String>,
 }
 
 fn run_on(cpu: usize, name: &str) -> Seen {
-    let dir = std::env::temp_dir().join(unique(name));
-    std::fs::create_dir_all(&dir).unwrap();
     let io = ThreadedIo::default();
-    let seen = Arc::new(Mutex::new(None));
-    let record = seen.clone();
     let io_thread = io.io_thread_cpus.clone();
-    Runtime::<Gm>::builder()
-        .period(Duration::from_millis(1))
-        .segment(unique(name))
-        .retain(dir.join("gm.retain"))
-        .backend(io)
-        .cpu(cpu)
-        .max_cycles(3)
-        .handle_signals(false)
-        .build()
-        .run(move |ctx| {
-            ctx.gm.count += 1;
-            let mut seen = record.lock().unwrap();
-            if seen.is_none() {
-                // SAFETY: no arguments; returns the CPU this thread runs on.
-                let running_on = unsafe { libc::sched_getcpu() } as usize;
-                *seen = Some(Seen {
-                    cycle_cpus: own_cpus(),
-                    running_on,
-                    io_thread: io_thread.lock().unwrap().clone().unwrap(),
-                    server: threads_cpus("plc-shm-"),
-                    retain_writer: threads_cpus("plc-retain"),
-                });
-            }
-        })
-        .unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
-    let seen = seen.lock().unwrap().take();
-    seen.expect("the program ran a cycle")
+    look_at_helpers(
+        name,
+        |builder| builder.backend(io).cpu(cpu),
+        |server, retain_writer| Seen {
+            cycle_cpus: own_cpus(),
+            // SAFETY: no arguments; returns the CPU this thread runs on.
+            running_on: unsafe { libc::sched_getcpu() } as usize,
+            io_thread: io_thread.lock().unwrap().clone().unwrap(),
+            helpers: server
+                .into_iter()
+                .chain(retain_writer)
+                .map(|t| t.cpus)
+                .collect(),
+        },
+    )
+    .unwrap()
 }
 
 #[test]
@@ -165,8 +196,7 @@ fn the_cycle_and_its_io_run_on_the_cpu_asked_for_and_the_helpers_on_the_others()
     );
     let others: Vec<usize> = allowed.iter().copied().filter(|&c| c != cpu).collect();
     let helpers = kernel_list(if others.is_empty() { &allowed } else { &others });
-    assert!(!seen.server.is_empty() && !seen.retain_writer.is_empty());
-    for place in seen.server.iter().chain(&seen.retain_writer) {
+    for place in &seen.helpers {
         assert_eq!(place, &helpers, "a helper thread shares the cycle's CPU");
     }
     assert_eq!(own_cpus(), allowed, "the caller's CPUs are given back");
@@ -179,7 +209,7 @@ fn with_one_cpu_allowed_the_helpers_share_it() {
     pin_self(&[cpu]);
     let seen = run_on(cpu, "cpu_only");
     assert_eq!(seen.cycle_cpus, [cpu]);
-    for place in seen.server.iter().chain(&seen.retain_writer) {
+    for place in &seen.helpers {
         assert_eq!(place, &cpu.to_string());
     }
     assert_eq!(own_cpus(), [cpu]);
@@ -217,5 +247,38 @@ fn a_cpu_the_process_may_not_use_is_refused_before_anything_starts() {
             "no segment was created"
         );
         assert_eq!(own_cpus(), allowed);
+    }
+}
+
+#[test]
+fn under_a_realtime_cycle_the_helper_threads_run_at_normal_priority() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|p| p.into_inner());
+    // SAFETY: plain calls with thread ids of this process (0: the calling one).
+    let policy = |tid| unsafe { libc::sched_getscheduler(tid) };
+    let run = look_at_helpers(
+        "cpu_priority",
+        |builder| builder.realtime_priority(10),
+        |server, retain_writer| {
+            let helpers: Vec<(&str, i32)> = (server.iter().map(|t| ("plc-shm-", t.tid)))
+                .chain(retain_writer.iter().map(|t| ("plc-retain", t.tid)))
+                .map(|(name, tid)| (name, policy(tid)))
+                .collect();
+            (policy(0), helpers)
+        },
+    );
+    let (cycle, helpers) = match run {
+        Err(RuntimeError::Realtime(why)) => {
+            eprintln!("skipped: SCHED_FIFO is not permitted here ({why})");
+            return;
+        }
+        other => other.unwrap(),
+    };
+    assert_eq!(cycle, libc::SCHED_FIFO);
+    for (name, policy) in &helpers {
+        assert_eq!(
+            *policy,
+            libc::SCHED_OTHER,
+            "thread {name}* runs at the cycle's priority"
+        );
     }
 }
