@@ -428,8 +428,13 @@ async def run_names(url, segment, expected):
         ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
         while True:
             nodes = []
-            await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
-            names = sorted([(await n.read_browse_name()).Name for n in nodes])
+            try:
+                await browse_variables(client.get_node(ua.NodeId(1, ns)), nodes)
+                names = sorted([(await n.read_browse_name()).Name for n in nodes])
+            except ua.uaerrors.BadNodeIdUnknown:
+                # The server rebuilt the namespace between the browse and the read: the nodes
+                # browsed are gone. Browse again.
+                names = None
             if names == want:
                 break
             check(time.time() < deadline, f"expected the variables {want}, still {names} after 15 s")
