@@ -14,6 +14,8 @@ use std::thread::JoinHandle;
 pub const MAIN: &str = "plcbm0";
 /// The simulator's end of the pair.
 const SIM: &str = "plcbs0";
+/// The namespace's name before the process id of the plc-bench that made it.
+const PREFIX: &str = "plcbench";
 
 /// A network namespace holding the veth pair [`MAIN`] - `plcbs0`; deleted (with the pair)
 /// when dropped.
@@ -26,8 +28,9 @@ impl Veth {
     /// Makes the namespace and the pair, both ends up. The error says why not (no `ip`, no
     /// privilege), in `ip`'s own words.
     pub fn create() -> Result<Veth, String> {
+        remove_stale();
         let veth = Veth {
-            namespace: format!("plcbench{}", std::process::id()),
+            namespace: format!("{PREFIX}{}", std::process::id()),
         };
         ip(&["netns", "add", &veth.namespace])?;
         // From here on, dropping `veth` deletes what was made.
@@ -125,6 +128,26 @@ impl Server {
 impl Drop for Server {
     fn drop(&mut self) {
         let _ = self.shutdown();
+    }
+}
+
+/// Deletes the namespaces (and their pairs) of plc-bench runs whose process is gone: one that
+/// was killed never dropped its [`Veth`]. Best effort: what cannot be read or deleted stays.
+fn remove_stale() {
+    let Ok(entries) = std::fs::read_dir("/run/netns") else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name.to_str().and_then(|n| n.strip_prefix(PREFIX)) else {
+            continue;
+        };
+        let alive = pid.parse::<u32>().is_ok_and(|pid| {
+            pid == std::process::id() || std::path::Path::new(&format!("/proc/{pid}")).exists()
+        });
+        if !alive && let Some(namespace) = name.to_str() {
+            let _ = ip(&["netns", "del", namespace]);
+        }
     }
 }
 
