@@ -1,18 +1,27 @@
 //! The main example as a user runs it: `tensile_tester --cycles N` on the simulated bus, as a
 //! real process, with its own segment and retain directory.
 
-use std::process::Command;
+use std::path::PathBuf;
+use std::process::{Command, Output};
 
-#[test]
-fn tensile_tester_runs_n_cycles_on_the_simulated_bus_and_exits_0() {
+/// Runs `tensile_tester` with `args` to its end, on a segment and a retain directory of its
+/// own named after `test`; returns its output and that directory.
+fn run_to_end(test: &str, args: &[&str]) -> (Output, PathBuf) {
     let id = std::process::id();
-    let retain = std::env::temp_dir().join(format!("tensile-test-{id}"));
+    let retain = std::env::temp_dir().join(format!("tensile-{test}-{id}"));
     let out = Command::new(env!("CARGO_BIN_EXE_tensile_tester"))
-        .args(["--cycles", "300", "--segment", &format!("tt_test_{id}")])
+        .args(args)
+        .args(["--segment", &format!("tt_{test}_{id}")])
         .arg("--retain")
         .arg(&retain)
         .output()
         .expect("tensile_tester starts");
+    (out, retain)
+}
+
+#[test]
+fn tensile_tester_runs_n_cycles_on_the_simulated_bus_and_exits_0() {
+    let (out, retain) = run_to_end("test", &["--cycles", "300"]);
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -52,14 +61,7 @@ fn tensile_tester_refuses_an_unknown_option_with_its_usage_and_exit_1() {
 
 #[test]
 fn tensile_tester_refuses_a_cpu_the_process_may_not_use_before_the_bus_starts() {
-    let id = std::process::id();
-    let retain = std::env::temp_dir().join(format!("tensile-cpu-{id}"));
-    let out = Command::new(env!("CARGO_BIN_EXE_tensile_tester"))
-        .args(["--cpu", "100000", "--segment", &format!("tt_cpu_{id}")])
-        .arg("--retain")
-        .arg(&retain)
-        .output()
-        .expect("tensile_tester starts");
+    let (out, retain) = run_to_end("cpu", &["--cpu", "100000"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(

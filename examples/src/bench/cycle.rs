@@ -278,14 +278,14 @@ pub struct MemcpyFloor {
     buffers: Vec<Vec<u8>>,
     /// The buffers in the order the data goes through them: each step copies every one into
     /// the next.
-    route: Vec<usize>,
+    route: &'static [usize],
 }
 
 impl MemcpyFloor {
     /// Two buffers of `len` bytes, the image in and the image out, copied one into the other
     /// and back.
     pub fn new(len: usize) -> Self {
-        Self::along(len, 2, vec![0, 1, 0])
+        Self::along(len, &[0, 1, 0])
     }
 
     /// The copies of [`FrameworkCycle::step`] through its three buffers of `len` bytes
@@ -293,10 +293,12 @@ impl MemcpyFloor {
     /// image), load (image to struct), store (struct to image), publish (image to segment).
     /// How the memory hierarchy alone grows a cycle's time with its size.
     pub fn cycle_copies(len: usize) -> Self {
-        Self::along(len, 3, vec![0, 1, 2, 1, 0])
+        Self::along(len, &[0, 1, 2, 1, 0])
     }
 
-    fn along(len: usize, buffers: usize, route: Vec<usize>) -> Self {
+    /// Buffers of `len` bytes, as many as `route` names (numbered from 0).
+    fn along(len: usize, route: &'static [usize]) -> Self {
+        let buffers = route.iter().max().map_or(0, |last| last + 1);
         MemcpyFloor {
             buffers: (0..buffers).map(|i| vec![i as u8; len]).collect(),
             route,
