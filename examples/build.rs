@@ -1,10 +1,6 @@
-//! Generates into `OUT_DIR`: the structs of `project.json` (a JSON variable list) and
+//! Generates into `OUT_DIR` the structs of `project.json` (a JSON variable list) and
 //! `project.csv` (the same kind of list kept as a spreadsheet), as a project moving from such a
-//! file would (edit the file, rebuild); and the `Gm1k` and structure benchmark workloads
-//! (`src/bench/workload.rs`).
-
-#[path = "src/bench/workload.rs"]
-mod workload;
+//! file would (edit the file, rebuild).
 
 fn main() {
     let out =
@@ -15,15 +11,6 @@ fn main() {
     ] {
         if let Err(e) = plc_io::import::generate_from_file(input.as_ref(), &out.join(output)) {
             eprintln!("{e}");
-            std::process::exit(1);
-        }
-    }
-    println!("cargo:rerun-if-changed=src/bench/workload.rs");
-    let gm1k = workload::source(1, "crate::bench::cycle::HandWritten");
-    let axes = workload::axes_source(100);
-    for (file, text) in [("gm1k.rs", gm1k), ("axes.rs", axes)] {
-        if let Err(e) = std::fs::write(out.join(file), text) {
-            eprintln!("{}: {e}", out.join(file).display());
             std::process::exit(1);
         }
     }

@@ -41,6 +41,7 @@ fn owner_role() {
         .period(Duration::from_millis(5))
         .segment(segment)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| {
             ctx.gm.counter += 1;
             ctx.gm.speed_actual = ctx.gm.speed_setpoint;
@@ -216,6 +217,7 @@ fn shared_owner_role() {
         .segment(std::env::var("SEGMENT").unwrap())
         .read_group("nogroup")
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| ctx.gm.counter += 1)
         .unwrap();
 }

@@ -70,6 +70,7 @@ fn owner_role() {
                 .segment(segment)
                 .retain(retain.unwrap())
                 .build()
+                .expect("the runtime's settings are valid")
                 .run(|ctx| {
                     let gm = &mut ctx.gm;
                     gm.counter += 1;
@@ -87,6 +88,7 @@ fn owner_role() {
                 .segment(segment)
                 .retain(retain.unwrap())
                 .build()
+                .expect("the runtime's settings are valid")
                 .run(|ctx| ctx.gm.counter += 1)
                 .unwrap();
         }

@@ -44,6 +44,7 @@ mod global_memory;
 mod image_bytes;
 mod plc_type;
 mod process_image;
+mod raw_bits;
 mod value;
 
 #[doc(hidden)]

@@ -6,6 +6,8 @@
 use crate::attr::{self, ContainerAttr, FieldAttr};
 use crate::ctxt::Ctxt;
 use crate::initial::Initial;
+pub use crate::kind::Kind;
+pub use crate::loc::Loc;
 use crate::types::{self, SynType};
 use darling::util::SpannedValue;
 use darling::{FromDeriveInput, FromField};
@@ -17,64 +19,8 @@ use quote::quote;
 use syn::spanned::Spanned;
 use syn::{Data, DeriveInput, Fields, Ident, Type};
 
-/// Where a declaration was written: a span, or the tokens of a value (syn folds `-1` into one
-/// literal spanned by the `-` alone, and stable Rust cannot join spans, so an error under the
-/// whole value needs its tokens).
-#[derive(Clone, Debug)]
-pub enum Loc {
-    Span(Span),
-    Tokens(TokenStream),
-}
-
-impl Loc {
-    /// The span an error starts at.
-    pub fn span(&self) -> Span {
-        match self {
-            Loc::Span(s) => *s,
-            Loc::Tokens(t) => t
-                .clone()
-                .into_iter()
-                .next()
-                .map_or_else(Span::call_site, |t| t.span()),
-        }
-    }
-}
-
 /// A value and the span of the tokens it came from.
 pub type At<T> = Located<T, Loc>;
-
-/// Which derive: a program's variables, or a structure type for their fields.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    GlobalMemory,
-    PlcStruct,
-}
-
-impl Kind {
-    /// The derive's name, as messages give it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Kind::GlobalMemory => "GlobalMemory",
-            Kind::PlcStruct => "PlcStruct",
-        }
-    }
-
-    /// A struct with named fields of this kind, for messages.
-    fn example(self) -> &'static str {
-        match self {
-            Kind::GlobalMemory => "struct Gm { speed: i32 }",
-            Kind::PlcStruct => "struct Axis { pos: f64 }",
-        }
-    }
-
-    /// What one field is, as messages call it.
-    fn field(self) -> &'static str {
-        match self {
-            Kind::GlobalMemory => "variable",
-            Kind::PlcStruct => "member",
-        }
-    }
-}
 
 pub struct Container<'a> {
     pub kind: Kind,

@@ -29,8 +29,8 @@ pub struct ContainerAttr {
 
 impl ContainerAttr {
     /// Reports the keys given on the wrong derive.
-    pub fn only_on(&self, kind: crate::ast::Kind, cx: &mut crate::ctxt::Ctxt) {
-        use crate::ast::Kind;
+    pub fn only_on(&self, kind: crate::kind::Kind, cx: &mut crate::ctxt::Ctxt) {
+        use crate::kind::Kind;
         let program_only = [
             ("byte_order", self.byte_order.as_ref().map(|v| v.span())),
             ("unaligned", self.unaligned.span()),

@@ -1,6 +1,6 @@
 //! Collects every error of a struct so the user sees all of them at once (serde's `Ctxt`).
 
-use crate::ast::Loc;
+use crate::loc::Loc;
 use crate::symbol::{CONTAINER_KEYS, PLC, expects, field_keys, list};
 use plc_rules::decl::{Issue, Wording};
 use proc_macro2::{Span, TokenStream};

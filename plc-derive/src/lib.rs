@@ -15,6 +15,8 @@ mod check;
 mod ctxt;
 mod expand;
 mod initial;
+mod kind;
+mod loc;
 mod symbol;
 mod types;
 

@@ -9,27 +9,28 @@
 //! - `import`: JSON and CSV variable lists to Rust (feature `import`), and back (feature
 //!   `export`).
 //!
+//! This crate is the one a control program links; each job is a crate of its own
+//! (`plc-shm`, `plc-runtime`, `plc-ethercat`, `plc-import`), re-exported here at these paths.
 //! The first three are feature `runtime` (default); a build script that only imports uses
-//! `default-features = false, features = ["import"]` and compiles none of them.
+//! `default-features = false, features = ["import"]` and compiles none of them, and a tool
+//! that only reads and writes running programs needs `shm` alone.
 #![deny(missing_docs)]
 
 #[cfg(feature = "ethercat")]
-pub mod ethercat;
+pub use plc_ethercat as ethercat;
 #[cfg(any(feature = "import", feature = "export"))]
-pub mod import;
+pub use plc_import as import;
 #[cfg(feature = "runtime")]
-pub mod retain;
-#[cfg(feature = "runtime")]
-pub(crate) mod runtime;
-#[cfg(feature = "runtime")]
-pub mod shm;
+pub use plc_runtime::retain;
+#[cfg(feature = "shm")]
+pub use plc_shm as shm;
 
 /// Per-cycle timestamps for the benchmarks (feature `cycle-probe`).
 #[cfg(feature = "cycle-probe")]
 #[doc(hidden)]
-pub use runtime::probe;
+pub use plc_runtime::probe;
 #[cfg(feature = "runtime")]
-pub use runtime::{
+pub use plc_runtime::{
     BusState, Context, CycleStats, IoBackend, IoError, IoStatus, NoIo, Runtime, RuntimeBuilder,
     RuntimeError, StopHandle, zero_outputs,
 };

@@ -59,6 +59,7 @@ fn bus_period_through_the_runtime_on_the_simulated_bus() {
         .handle_signals(false)
         .max_cycles(cycles)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| {
             starts.push(Instant::now());
             invalid += u64::from(!ctx.inputs_valid);

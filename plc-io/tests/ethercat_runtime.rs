@@ -51,15 +51,18 @@ fn a_program_panic_zeroes_the_outputs_and_leaves_the_subdevices_in_safe_op() {
     bus.set_input_bit(DI, 0, true);
     let mut seen_on_bus = false;
     let probe = bus.clone();
-    let result = runtime(&bus, 1000).build().run(|ctx| {
-        ctx.gm.q4_1 = true;
-        ctx.gm.q16_9 = true;
-        // The outputs of earlier cycles are on the terminals before the program fails.
-        seen_on_bus |= probe.output_bit(DQ4, 0) && probe.output_bit(DQ16, 8);
-        if seen_on_bus && ctx.gm.in1 {
-            panic!("program bug");
-        }
-    });
+    let result = runtime(&bus, 1000)
+        .build()
+        .expect("the runtime's settings are valid")
+        .run(|ctx| {
+            ctx.gm.q4_1 = true;
+            ctx.gm.q16_9 = true;
+            // The outputs of earlier cycles are on the terminals before the program fails.
+            seen_on_bus |= probe.output_bit(DQ4, 0) && probe.output_bit(DQ16, 8);
+            if seen_on_bus && ctx.gm.in1 {
+                panic!("program bug");
+            }
+        });
     let err = result.unwrap_err();
     assert!(
         matches!(&err, RuntimeError::Panicked { message, .. } if message == "program bug"),
@@ -82,6 +85,7 @@ fn a_clean_stop_zeroes_the_outputs_and_returns_the_subdevices_to_init() {
     let probe = bus.clone();
     let gm = runtime(&bus, 50)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| {
             ctx.gm.q16_9 = true;
             outputs_seen |= probe.output_bit(DQ16, 8);

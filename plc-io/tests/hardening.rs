@@ -475,7 +475,7 @@ fn planted_retain_links_and_open_modes_are_refused_and_nothing_outside_is_touche
     assert_eq!(mode(&sub.join("p.retain")), 0o600);
 
     // A link where the next save's temporary file goes: replaced, never written through.
-    let temp = sub.join(format!("p.tmp.{}", std::process::id()));
+    let temp = sub.join(format!(".p.retain.tmp.{}", std::process::id()));
     std::os::unix::fs::symlink(&victim, &temp).unwrap();
     store.save(&Kept::default()).unwrap();
     assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
@@ -542,7 +542,12 @@ fn a_lost_final_retain_save_is_an_error_from_run_and_failed_saves_are_in_the_sta
         .retain_interval(Duration::from_millis(20))
         .handle_signals(false);
     let stop = builder.stop_handle();
-    let runtime = std::thread::spawn(move || builder.build().run(|ctx| ctx.gm.count += 1));
+    let runtime = std::thread::spawn(move || {
+        builder
+            .build()
+            .expect("the runtime's settings are valid")
+            .run(|ctx| ctx.gm.count += 1)
+    });
     wait_for(Duration::from_secs(20), || {
         retain_dir.join("p.retain").exists().then_some(())
     });
@@ -745,6 +750,7 @@ fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_a
                 .segment(name)
                 .handle_signals(false)
                 .build()
+                .expect("the runtime's settings are valid")
                 .run(|ctx| {
                     // Status variables come from the program alone: had a write from outside
                     // been applied to one, this panics, the run ends and the test sees the

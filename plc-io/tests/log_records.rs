@@ -63,6 +63,7 @@ fn a_program_captures_the_runtimes_log_records() {
         .max_cycles(1)
         .handle_signals(false)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|_| {})
         .unwrap();
     assert_eq!(gm.count, 3, "the value still declared is restored");

@@ -71,6 +71,7 @@ fn a_cycle_unpacks_inputs_runs_the_tick_and_packs_outputs() {
         .max_cycles(3)
         .handle_signals(false)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx: &mut Context<Gm>| {
             assert!(
                 ctx.gm.start_button,
@@ -102,6 +103,7 @@ fn a_panicking_program_zeroes_outputs_and_faults_the_io() {
         .backend(io.clone())
         .handle_signals(false)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| {
             ctx.gm.motor_on = true;
             if ctx.cycle == 3 {
@@ -129,6 +131,7 @@ fn a_second_ctrl_c_ends_a_program_whose_cycle_never_returns() {
             .period(Duration::from_millis(1))
             .segment(&name)
             .build()
+            .expect("the runtime's settings are valid")
             .run(|_| {
                 loop {
                     std::thread::sleep(Duration::from_secs(1));
@@ -191,6 +194,7 @@ fn nonvolatile_values_survive_a_restart_and_stop_works_from_outside() {
             .max_cycles(25)
             .handle_signals(false)
             .build()
+            .expect("the runtime's settings are valid")
             .run(|ctx| ctx.gm.total_cycles += 1)
             .unwrap();
         assert_eq!(gm.total_cycles, 25 * run);
@@ -199,7 +203,13 @@ fn nonvolatile_values_survive_a_restart_and_stop_works_from_outside() {
         .period(Duration::from_millis(1))
         .handle_signals(false);
     let stop = builder.stop_handle();
-    let t = std::thread::spawn(move || builder.build().run(|_| {}).unwrap());
+    let t = std::thread::spawn(move || {
+        builder
+            .build()
+            .expect("the runtime's settings are valid")
+            .run(|_| {})
+            .unwrap()
+    });
     std::thread::sleep(Duration::from_millis(50));
     stop.stop();
     assert!(t.join().is_ok());
@@ -216,6 +226,7 @@ fn tools_see_the_running_program_and_their_writes_arrive() {
     let t = std::thread::spawn(move || {
         builder
             .build()
+            .expect("the runtime's settings are valid")
             .run(|ctx| ctx.gm.seen_setpoint = ctx.gm.setpoint)
             .unwrap()
     });
@@ -266,6 +277,7 @@ fn now_is_the_cycles_start_the_same_through_a_tick_and_never_going_back() {
         .max_cycles(40)
         .handle_signals(false)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx: &mut Context<Gm>| {
             let at_start = ctx.now();
             std::thread::sleep(Duration::from_micros(300));
@@ -308,6 +320,7 @@ fn a_panic_keeps_the_last_good_cycles_retained_values() {
         .retain(&path)
         .handle_signals(false)
         .build()
+        .expect("the runtime's settings are valid")
         .run(|ctx| {
             ctx.gm.total_cycles += 1;
             if ctx.cycle == 3 {
@@ -333,6 +346,7 @@ fn after_a_panic_another_process_sees_the_owner_faulted() {
             .segment(std::env::var("SEGMENT").unwrap())
             .handle_signals(false)
             .build()
+            .expect("the runtime's settings are valid")
             .run(|ctx| {
                 if ctx.gm.setpoint == 4242 {
                     panic!("the operator found the bug");
@@ -367,4 +381,83 @@ fn after_a_panic_another_process_sees_the_owner_faulted() {
         }
     );
     assert!(err.to_string().contains("faulted"), "{err}");
+}
+
+/// What `build` refuses, if it refuses.
+fn refusal(builder: plc_io::RuntimeBuilder<Gm>) -> Option<RuntimeError> {
+    builder.handle_signals(false).build().err()
+}
+
+#[test]
+fn build_refuses_a_realtime_priority_outside_sched_fifos_range() {
+    for priority in [0, 100, -1] {
+        let err = refusal(Runtime::builder().realtime_priority(priority))
+            .unwrap_or_else(|| panic!("priority {priority} was accepted"));
+        let RuntimeError::Realtime(message) = &err else {
+            panic!("not a priority error: {err}");
+        };
+        assert_eq!(
+            message,
+            &format!(
+                "realtime priority {priority} is outside SCHED_FIFO's 1..=99; choose one in that \
+                 range (higher runs first)"
+            )
+        );
+    }
+}
+
+#[test]
+fn build_refuses_an_unknown_group_naming_it_and_the_fix() {
+    let name = unique("build_group");
+    let err = refusal(
+        Runtime::builder()
+            .segment(&name)
+            .write_group("no-such-group-plc"),
+    )
+    .expect("an unknown group was accepted");
+    let RuntimeError::Shm(ShmError::Os { what, error, .. }) = &err else {
+        panic!("not a group error: {err}");
+    };
+    assert_eq!(
+        what,
+        "cannot use group `no-such-group-plc` as the write group"
+    );
+    assert!(error.contains("groupadd no-such-group-plc"), "{error}");
+    // Nothing was made: no segment to attach to.
+    assert!(matches!(
+        DynSegment::attach(&name),
+        Err(ShmError::NotFound(_))
+    ));
+}
+
+#[test]
+fn build_accepts_what_the_process_may_do_and_keeps_the_callers_scheduling() {
+    // SAFETY: plain query of the calling thread's policy.
+    let before = unsafe { libc::sched_getscheduler(0) };
+    let built = Runtime::<Gm>::builder()
+        .handle_signals(false)
+        .realtime_priority(10)
+        .build();
+    match built {
+        // Permitted: tried on a thread of its own, the caller stays as it was.
+        Ok(_) => assert_eq!(unsafe { libc::sched_getscheduler(0) }, before),
+        Err(RuntimeError::Realtime(why)) => {
+            assert!(why.contains("is not permitted"), "{why}");
+            assert!(why.contains("CAP_SYS_NICE"), "{why}");
+        }
+        Err(other) => panic!("unexpected refusal: {other}"),
+    }
+    assert!(Runtime::<Gm>::builder().build().is_ok());
+}
+
+#[test]
+fn runtime_errors_keep_their_causes() {
+    use std::error::Error;
+    let io = RuntimeError::Io(IoError::new(std::io::Error::other("cable unplugged")));
+    let cause = io.source().expect("the I/O error");
+    assert_eq!(cause.to_string(), "cable unplugged");
+    let inner = cause.source().expect("the backend's own error");
+    assert!(inner.downcast_ref::<std::io::Error>().is_some());
+    let shm = RuntimeError::Shm(ShmError::NotFound("press".into()));
+    assert!(shm.source().unwrap().downcast_ref::<ShmError>().is_some());
 }

@@ -139,13 +139,15 @@ fn look_at_helpers<R>(
     );
     let stop = builder.stop_handle();
     let mut seen = None;
-    let run = builder.build().run(|ctx| {
-        ctx.gm.count += 1;
-        let (server, retain_writer) = (threads("plc-shm-"), threads("plc-retain"));
-        if seen.is_none() && !server.is_empty() && !retain_writer.is_empty() {
-            seen = Some(look(server, retain_writer));
-            stop.stop();
-        }
+    let run = builder.build().and_then(|runtime| {
+        runtime.run(|ctx| {
+            ctx.gm.count += 1;
+            let (server, retain_writer) = (threads("plc-shm-"), threads("plc-retain"));
+            if seen.is_none() && !server.is_empty() && !retain_writer.is_empty() {
+                seen = Some(look(server, retain_writer));
+                stop.stop();
+            }
+        })
     });
     std::fs::remove_dir_all(&dir).unwrap();
     run?;
@@ -222,14 +224,16 @@ fn a_cpu_the_process_may_not_use_is_refused_before_anything_starts() {
     let list: Vec<String> = allowed.iter().map(usize::to_string).collect();
     for cpu in [allowed.last().unwrap() + 1, usize::MAX] {
         let dir = std::env::temp_dir().join(unique("cpu_refused"));
-        let err = Runtime::<Gm>::builder()
+        // Refused when built, before the program could run a cycle.
+        let Err(err) = Runtime::<Gm>::builder()
             .segment(unique("cpu_refused"))
             .retain(dir.join("gm.retain"))
             .cpu(cpu)
             .handle_signals(false)
             .build()
-            .run(|_| panic!("no cycle runs"))
-            .unwrap_err();
+        else {
+            panic!("CPU {cpu} was accepted");
+        };
         let RuntimeError::Cpu(message) = &err else {
             panic!("not a CPU error: {err}");
         };

@@ -36,6 +36,7 @@ fn a_tool_reads_and_writes_durations_of_a_running_program() {
         let mut settle = Ton::default();
         builder
             .build()
+            .expect("the runtime's settings are valid")
             .run(move |ctx: &mut Context<Gm>| {
                 ctx.gm.clamp_closed = true;
                 ctx.gm.settled = settle.call(ctx.now(), ctx.gm.clamp_closed, ctx.gm.settle_time);

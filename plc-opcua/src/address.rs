@@ -7,7 +7,7 @@ use crate::mapping;
 use opcua::nodes::{ObjectBuilder, VariableBuilder};
 use opcua::server::address_space::AddressSpace;
 use opcua::types::{LocalizedText, NodeId, ObjectId, ObjectTypeId, QualifiedName, VariableTypeId};
-use plc_io::shm::{LayoutDescriptor, VarDescriptor};
+use plc_shm::{LayoutDescriptor, VarDescriptor};
 use std::collections::HashMap;
 use std::time::Duration;
 

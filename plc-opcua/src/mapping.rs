@@ -8,7 +8,7 @@ use opcua::types::{
     VariantScalarTypeId,
 };
 use plc_core::{FixedString, IecType, Value, ValueError};
-use plc_io::shm::{OwnerState, ShmError, VarDescriptor};
+use plc_shm::{OwnerState, ShmError, VarDescriptor};
 
 /// The NodeId of the object that stands for a program (its segment) in its namespace: numeric,
 /// so it never collides with a variable's string NodeId.

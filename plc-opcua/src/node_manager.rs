@@ -39,7 +39,7 @@ pub struct SegmentNodes {
 /// and inserts the nodes of the segment's first layout. `ns` receives the namespace index.
 pub fn builder(
     segment: String,
-    first: plc_io::shm::LayoutDescriptor,
+    first: plc_shm::LayoutDescriptor,
     period: Duration,
     users: Arc<UsersFile>,
     make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,

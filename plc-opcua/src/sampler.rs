@@ -17,7 +17,7 @@ use opcua::sync::RwLock;
 use opcua::types::{
     AttributeId, DataValue, DateTime, NodeId, NumericRange, StatusCode, TimestampsToReturn,
 };
-use plc_io::shm::{DynSegment, OwnerState};
+use plc_shm::{DynSegment, OwnerState};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc::{Receiver, RecvTimeoutError};

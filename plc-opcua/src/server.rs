@@ -10,7 +10,7 @@ use crate::writer::Writer;
 use opcua::crypto::SecurityPolicy;
 use opcua::server::{ANONYMOUS_USER_TOKEN_ID, ServerBuilder, ServerEndpoint};
 use opcua::types::{MessageSecurityMode, TypeLoaderCollection};
-use plc_io::shm::DynSegment;
+use plc_shm::DynSegment;
 use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};

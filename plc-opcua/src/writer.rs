@@ -10,7 +10,7 @@ use crate::mapping;
 use crate::shared::{Shared, WriteJob};
 use opcua::types::StatusCode;
 use plc_core::Value;
-use plc_io::shm::{DynSegment, ShmError};
+use plc_shm::{DynSegment, ShmError};
 use std::sync::Arc;
 use std::sync::mpsc::Receiver;
 

@@ -176,13 +176,15 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let stop = builder.stop_handle();
     let monitor = status_line(args.segment.clone(), stop.clone());
     let period = args.period;
-    let result = builder.build().run(|ctx| {
-        let info = TickInfo {
-            period,
-            inputs_valid: ctx.inputs_valid,
-            now: ctx.now(),
-        };
-        process_tick(&mut ctx.gm, info);
+    let result = builder.build().and_then(|runtime| {
+        runtime.run(|ctx| {
+            let info = TickInfo {
+                period,
+                inputs_valid: ctx.inputs_valid,
+                now: ctx.now(),
+            };
+            process_tick(&mut ctx.gm, info);
+        })
     });
     stop.stop();
     let _ = monitor.join();

@@ -3,15 +3,14 @@
 //! entry's direction, place (byte and bit in the device's input or output data), width and type.
 //!
 //! `plc bus scan --interface IFACE | --sim MODELS [--out FILE]`: a bus description read from
-//! the SubDevices themselves (`plc_io::ethercat::scan`).
+//! the SubDevices themselves (`plc_ethercat::scan`).
 
 use super::Error;
 use ethercat_sim::{Device, SimBus};
-use plc_io::ethercat::scan::scan as scan_bus;
-use plc_io::ethercat::{MAX_SUBDEVICES, Options, Transport};
+use plc_ethercat::scan::scan as scan_bus;
+use plc_ethercat::{MAX_SUBDEVICES, Options, Transport};
 use plc_rules::bus::{BusConfig, BusLayout};
 use std::fmt::Write;
-use std::io::Write as _;
 use std::path::Path;
 
 pub fn scan(interface: Option<String>, sim: &[String], out: Option<&Path>) -> Result<(), Error> {
@@ -23,7 +22,8 @@ pub fn scan(interface: Option<String>, sim: &[String], out: Option<&Path>) -> Re
     match out {
         None => print!("{text}"),
         Some(path) => {
-            write_replacing(path, &text)
+            // Whole or not at all; a symlink at `path` is replaced, not followed.
+            plc_files::write_atomically(path, text.as_bytes(), 0o644)
                 .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
             eprintln!("plc: wrote {}", path.display());
         }
@@ -58,33 +58,6 @@ fn simulated(models: &[String]) -> Result<Transport, Error> {
     Ok(Transport::custom(move |tx, rx| {
         Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?))
     }))
-}
-
-/// Writes `text` to `path` through a new temporary file beside it, renamed over `path`: a
-/// reader never sees half a file, and a symlink at `path` is replaced, not followed.
-fn write_replacing(path: &Path, text: &str) -> std::io::Result<()> {
-    use std::os::unix::fs::OpenOptionsExt;
-    let name = path
-        .file_name()
-        .ok_or_else(|| std::io::Error::other("the path names no file"))?;
-    let mut tmp_name = std::ffi::OsString::from(".");
-    tmp_name.push(name);
-    tmp_name.push(format!(".{}.tmp", std::process::id()));
-    let tmp = path.with_file_name(tmp_name);
-    let written = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .custom_flags(libc::O_NOFOLLOW)
-        .open(&tmp)
-        .and_then(|mut f| {
-            f.write_all(text.as_bytes())?;
-            f.sync_all()
-        })
-        .and_then(|()| std::fs::rename(&tmp, path));
-    if written.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    written
 }
 
 pub fn show(file: &Path) -> Result<(), Error> {

@@ -3,14 +3,14 @@
 //! table `plc import --csv` reads.
 
 use super::Error;
-use plc_io::shm::DynSegment;
+use plc_shm::DynSegment;
 
 pub fn run(segment: &str, csv: bool) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
     if csv {
-        print!("{}", plc_io::import::descriptor_to_csv(seg.descriptor())?);
+        print!("{}", plc_import::descriptor_to_csv(seg.descriptor())?);
     } else {
-        let json = plc_io::import::descriptor_to_json(seg.descriptor())?;
+        let json = plc_import::descriptor_to_json(seg.descriptor())?;
         println!("{}", serde_json::to_string_pretty(&json)?);
     }
     Ok(())

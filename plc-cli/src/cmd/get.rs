@@ -1,13 +1,13 @@
 //! `plc get <segment> <name>...`: one consistent snapshot, every name from it.
 
 use super::{Error, is_path, leaves_of, resolve, show};
-use plc_io::shm::DynSegment;
+use plc_shm::DynSegment;
 
 /// One name of the command line: a variable or array element as before, or the values a
 /// path reaches inside structures.
 enum Wanted {
     Flat(usize, Option<usize>),
-    Paths(Vec<plc_io::shm::PathLocation>),
+    Paths(Vec<plc_shm::PathLocation>),
 }
 
 pub fn run(segment: &str, names: &[String]) -> Result<(), Error> {

@@ -3,7 +3,7 @@
 //! nothing is written, and the output file is replaced whole or not at all.
 
 use super::Error;
-use plc_io::import::{Options, generate, generate_csv, is_csv, write_atomically};
+use plc_import::{Options, generate, generate_csv, is_csv, write_atomically};
 use std::path::Path;
 
 pub fn run(input: &Path, csv: bool, output: Option<&Path>, struct_name: &str) -> Result<(), Error> {

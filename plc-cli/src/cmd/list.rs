@@ -1,7 +1,7 @@
 //! `plc list [segment] [--json]`.
 
 use super::{Error, type_text};
-use plc_io::shm::{DynSegment, OwnerState, SegmentInfo, ShmError, list_segments};
+use plc_shm::{DynSegment, OwnerState, SegmentInfo, ShmError, list_segments};
 
 /// The state column: the owner's, `gone` for a killed owner's leftover, or `damaged` for a
 /// segment that cannot be read.
@@ -69,7 +69,7 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
 
 /// One line per variable of a level, a structure's members indented under it (bit-mapped
 /// bools under their source word, within the same level).
-fn print_level(vars: &[plc_io::shm::VarDescriptor], depth: usize) {
+fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize) {
     let indent = "  ".repeat(depth);
     for v in vars {
         let (name, bit_of) = match v.bit {

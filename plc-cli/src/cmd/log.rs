@@ -5,11 +5,12 @@
 //! also flushed every second, so `tail -f` follows it and a `kill -9` loses at most a second.
 
 use super::{Error, is_path, leaves_of, period_of, resolve, show};
-use plc_io::StopHandle;
-use plc_io::shm::DynSegment;
-use plc_io::shm::PathLocation;
+use plc_shm::DynSegment;
+use plc_shm::PathLocation;
 use std::io::Write;
 use std::path::Path;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// How often the CSV file is flushed while logging.
@@ -22,6 +23,19 @@ fn field(s: &str) -> String {
     } else {
         s.to_string()
     }
+}
+
+/// A flag that SIGINT (Ctrl-C) and SIGTERM set instead of ending the process, so the rows
+/// still buffered are written; a second signal while the first is pending ends it at once.
+fn stop_on_signals() -> std::io::Result<Arc<AtomicBool>> {
+    let stop = Arc::new(AtomicBool::new(false));
+    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        // First the exit if a stop is already pending, then the flag: handlers of one signal
+        // run in the order they were registered.
+        signal_hook::flag::register_conditional_shutdown(sig, 1, stop.clone())?;
+        signal_hook::flag::register(sig, stop.clone())?;
+    }
+    Ok(stop)
 }
 
 /// What one column of the log holds.
@@ -40,9 +54,7 @@ pub fn run(
     seconds: Option<f64>,
 ) -> Result<(), Error> {
     let period = period_of(rate, 10_000.0, "samples")?;
-    let stop = StopHandle::default();
-    stop.stop_on_signals()
-        .map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
+    let stop = stop_on_signals().map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
     let seg = DynSegment::attach(segment)?;
     // One column per name: a variable or element as before, or each value a path reaches
     // inside structures (a whole structure gives a column per member).
@@ -71,7 +83,8 @@ pub fn run(
     let mut next = start;
     let mut flushed = start;
     let mut rows = 0u64;
-    while !stop.is_stopped() && seconds.is_none_or(|s| start.elapsed().as_secs_f64() < s) {
+    while !stop.load(Ordering::Acquire) && seconds.is_none_or(|s| start.elapsed().as_secs_f64() < s)
+    {
         let image = match seg.snapshot_bytes() {
             Ok(i) => i,
             Err(e) if rows > 0 => {
@@ -100,7 +113,7 @@ pub fn run(
         }
         next += period;
         // Sleep in short steps: a slow rate must not delay the answer to Ctrl-C.
-        while !stop.is_stopped() {
+        while !stop.load(Ordering::Acquire) {
             let now = Instant::now();
             if next <= now {
                 break;

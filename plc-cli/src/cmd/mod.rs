@@ -10,7 +10,7 @@ pub mod opcua;
 pub mod set;
 pub mod watch;
 
-use plc_io::shm::{DynSegment, PathLocation, PathTarget, VarDescriptor};
+use plc_shm::{DynSegment, PathLocation, PathTarget, VarDescriptor};
 
 /// The error type of the commands: a message for the user.
 pub type Error = Box<dyn std::error::Error>;

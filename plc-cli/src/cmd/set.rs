@@ -5,7 +5,7 @@
 
 use super::{Error, is_path, resolve};
 use plc_core::Value;
-use plc_io::shm::DynSegment;
+use plc_shm::DynSegment;
 
 /// A checked assignment: what the user named, the top-level variable, the element (for a
 /// value inside a structure, its leaf number) and the value.

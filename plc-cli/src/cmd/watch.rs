@@ -6,7 +6,7 @@
 //! each refresh's time to FILE (see [`frame_log`]).
 
 use super::{Error, period_of, set, show, type_text};
-use plc_io::shm::{DynSegment, PathLocation, PathTarget};
+use plc_shm::{DynSegment, PathLocation, PathTarget};
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
 use ratatui::layout::{Constraint, Layout};
 use ratatui::style::{Modifier, Style, Stylize};

@@ -1,0 +1,70 @@
+//! The I/O side of the cycle: a backend moves inputs into the struct and outputs out of it.
+
+pub use plc_shm::IoStatus;
+use std::fmt;
+use std::sync::Arc;
+
+/// Why a backend could not start: the backend's own error, kept whole as this error's
+/// [`source`](std::error::Error::source) (for EtherCAT an `EtherCatError`), or a message.
+///
+/// ```
+/// use plc_runtime::IoError;
+/// let e = IoError::new("the simulated press is not answering; start it first");
+/// assert_eq!(e.to_string(), "the simulated press is not answering; start it first");
+/// ```
+#[derive(Clone, Debug)]
+pub struct IoError(Arc<dyn std::error::Error + Send + Sync + 'static>);
+
+impl IoError {
+    /// Wraps a backend's error, or a message (`&str`, `String`).
+    pub fn new(cause: impl Into<Box<dyn std::error::Error + Send + Sync + 'static>>) -> Self {
+        IoError(Arc::from(cause.into()))
+    }
+
+    /// The backend's error, to look at its type (`downcast_ref`).
+    pub fn cause(&self) -> &(dyn std::error::Error + Send + Sync + 'static) {
+        &*self.0
+    }
+}
+
+impl fmt::Display for IoError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(&self.0, f)
+    }
+}
+
+impl std::error::Error for IoError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&*self.0)
+    }
+}
+
+/// Real I/O for the cycle: EtherCAT (`plc_io::ethercat::EtherCatBackend`), a process image,
+/// a simulation, or nothing ([`NoIo`]). Synchronous: an async bus runs its own executor.
+pub trait IoBackend<T> {
+    /// Brings the I/O up (e.g. the bus to OP). Called once before the first cycle.
+    fn start(&mut self) -> Result<(), IoError>;
+    /// Sends the outputs of the last cycle and receives this cycle's inputs into `gm`.
+    fn exchange(&mut self, gm: &mut T) -> IoStatus;
+    /// The program failed: outputs are already zero in `gm`; put the I/O in a safe state
+    /// (EtherCAT: zero outputs out, SubDevices to SAFE-OP).
+    fn fault(&mut self, gm: &mut T) {
+        let _ = gm;
+    }
+    /// Shuts the I/O down (EtherCAT: back to INIT). Called once at the end.
+    fn stop(&mut self);
+}
+
+/// No I/O: for programs that only talk through shared memory, and for tests.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NoIo;
+
+impl<T> IoBackend<T> for NoIo {
+    fn start(&mut self) -> Result<(), IoError> {
+        Ok(())
+    }
+    fn exchange(&mut self, _: &mut T) -> IoStatus {
+        IoStatus::NONE
+    }
+    fn stop(&mut self) {}
+}

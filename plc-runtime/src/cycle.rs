@@ -1,0 +1,392 @@
+//! The steps of [`Runtime::run`](super::Runtime::run): start, one cycle repeated at the period,
+//! stop. Each step is a method of [`Cycle`], which owns what lives from start to stop.
+
+use super::clock::{CycleClock, monotonic_ns};
+use super::placement::CpuPlacement;
+use super::schedule::Schedule;
+use super::stats::{self, RunningMean};
+use super::{
+    Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
+};
+use crate::retain::{RetainStore, RetainWriter};
+use plc_core::{GlobalMemory, Time};
+use plc_shm::{RunState, SharedGlobalMemory, ShmOwner};
+use std::any::Any;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+#[cfg(feature = "cycle-probe")]
+use std::time::Instant;
+use zerocopy::{Immutable, IntoBytes};
+
+/// What a running program owns besides its settings.
+pub(super) struct Cycle<T: GlobalMemory + 'static>
+where
+    T::Image: Send,
+{
+    ctx: Context<T>,
+    /// The last completed cycle's image. On a cache line: the image type has alignment 1, and
+    /// the word copies into shared memory cost up to three times as much from a buffer that
+    /// straddles lines.
+    image: Box<Aligned<T::Image>>,
+    retained: RetainedBytes,
+    retain: Option<RetainWriter<T::Image>>,
+    shm: Option<ShmOwner<T>>,
+    /// The cycle's clock (`Context::now`'s, the schedule's, the published values' time).
+    clock: CycleClock,
+    /// The mean of all cycles' times.
+    mean: RunningMean,
+    /// Called with each cycle's timestamps (benchmarks only).
+    #[cfg(feature = "cycle-probe")]
+    probe: Option<super::probe::Probe>,
+    /// The cycle's CPU, if one was asked for; dropped with the cycle, it gives the calling
+    /// thread its CPUs back.
+    placement: Option<CpuPlacement>,
+}
+
+impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
+where
+    T::Image: Send,
+{
+    /// The CPU checked, realtime priority and signals as asked, retained values loaded, the
+    /// segment created and the initial image published, the cycle moved to its CPU, then the
+    /// I/O started.
+    pub(super) fn start(s: &mut RuntimeBuilder<T>) -> Result<Self, RuntimeError> {
+        // First, so that a CPU the process may not use is refused before anything is made,
+        // and the helper threads below start on the other CPUs.
+        let placement = s.cpu.map(CpuPlacement::keep_free).transpose()?;
+        if let Some(p) = s.realtime {
+            set_realtime(p)?;
+        }
+        if s.signals
+            && let Err(e) = s.stop.stop_on_signals()
+        {
+            // Ctrl-C still ends the program, only without the clean stop.
+            log::warn!(target: "plc_io::runtime", "Ctrl-C and SIGTERM will end the program without a clean stop: {e}");
+        }
+        let mut gm = T::default();
+        let retain = match &s.retain {
+            Some(path) => {
+                let store = RetainStore::new(path);
+                let report = store.load(&mut gm).map_err(RuntimeError::Retain)?;
+                report.log(path);
+                Some(RetainWriter::spawn::<T>(store, s.retain_interval))
+            }
+            None => None,
+        };
+        let shm = match &s.segment {
+            Some(name) => Some(
+                SharedGlobalMemory::<T>::create_with(name, &s.sharing)
+                    .map_err(RuntimeError::Shm)?,
+            ),
+            None => None,
+        };
+        let image = Box::new(Aligned(gm.to_image()));
+        let cycle = Cycle {
+            retained: RetainedBytes::new::<T>(&image.0),
+            ctx: Context::before_first_cycle(gm, s.period),
+            image,
+            retain,
+            shm,
+            clock: CycleClock::start(),
+            mean: RunningMean::default(),
+            #[cfg(feature = "cycle-probe")]
+            probe: s.probe.take(),
+            placement,
+        };
+        // The initial and restored values go out before the bus starts (which can take
+        // seconds): a tool attaching meanwhile reads them, not a zeroed image.
+        cycle.publish_image(monotonic_ns());
+        // The helpers have started; the I/O's threads, started next, run with the cycle.
+        if let Some(placement) = &cycle.placement {
+            placement.pin_cycle()?;
+        }
+        s.backend.start().map_err(RuntimeError::Io)?;
+        if let Some(shm) = &cycle.shm {
+            shm.set_run_state(RunState::Running);
+        }
+        #[cfg(feature = "cycle-probe")]
+        super::probe::arm(cycle.probe.is_some());
+        Ok(cycle)
+    }
+
+    /// Cycles every period until a stop is asked for, `max_cycles` are done or the tick
+    /// panics. A late cycle is followed at once by the next, timed from then: no burst of
+    /// catch-up cycles. The deadlines are absolute (`schedule`).
+    pub(super) fn repeat(
+        &mut self,
+        s: &mut RuntimeBuilder<T>,
+        tick: &mut impl FnMut(&mut Context<T>),
+    ) -> Result<(), RuntimeError> {
+        let mut schedule = Schedule::start(s.period);
+        let mut start = monotonic_ns();
+        while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
+            let end = self.once(start, &mut *s.backend, tick)?;
+            // A cycle that follows at once (period zero, or the last one overran) starts
+            // where the last one ended: its report, a few nanoseconds, counts in its time, and
+            // a cycle running flat out reads the clock once instead of twice.
+            start = if schedule.wait(end) {
+                monotonic_ns()
+            } else {
+                end
+            };
+        }
+        Ok(())
+    }
+
+    /// One cycle, started at `start`: exchange, unpack bits, writes from outside, tick, pack
+    /// bits, publish, retain, report. Returns when its work ended (before the report). Both
+    /// times are CLOCK_MONOTONIC nanoseconds; the cycle reads the clock once, at its end.
+    fn once(
+        &mut self,
+        start: u64,
+        backend: &mut (dyn IoBackend<T> + Send),
+        tick: &mut impl FnMut(&mut Context<T>),
+    ) -> Result<u64, RuntimeError> {
+        #[cfg(feature = "cycle-probe")]
+        let probing = self.probe.is_some();
+        #[cfg(feature = "cycle-probe")]
+        let exchange_start = probing.then(Instant::now);
+        let ctx = &mut self.ctx;
+        ctx.cycle += 1;
+        // Beyond LTIME only after 292 years of running.
+        ctx.set_now(Time::from_nanos(
+            i64::try_from(self.clock.since_start(start)).unwrap_or(i64::MAX),
+        ));
+        let io = backend.exchange(&mut ctx.gm);
+        #[cfg(feature = "cycle-probe")]
+        let exchange_end = probing.then(Instant::now);
+        ctx.inputs_valid = io.inputs_valid;
+        ctx.bus_fault = io.bus_fault;
+        ctx.bus_state = io.bus_state;
+        ctx.gm.unpack_bits();
+        // Writes from outside are applied under the same protection as the tick: whatever a write
+        // does, a panic still zeroes the outputs and puts the bus in a safe state.
+        let shm = &mut self.shm;
+        #[cfg(feature = "cycle-probe")]
+        let mut tick_times = None;
+        let step = catch_unwind(AssertUnwindSafe(|| {
+            if let Some(shm) = shm.as_mut() {
+                shm.apply_mailbox(&mut ctx.gm);
+            }
+            #[cfg(feature = "cycle-probe")]
+            let tick_start = probing.then(Instant::now);
+            tick(ctx);
+            #[cfg(feature = "cycle-probe")]
+            if let Some(t) = tick_start {
+                tick_times = Some((t, Instant::now()));
+            }
+        }));
+        if let Err(panic) = step {
+            return Err(self.fault(backend, panic));
+        }
+        ctx.gm.pack_bits();
+        ctx.gm.store_image(&mut self.image.0);
+        self.publish_image(start);
+        if let Some(writer) = &self.retain
+            && self.retained.changed(&self.image.0)
+        {
+            writer.offer(self.image.0);
+        }
+        let end = monotonic_ns();
+        self.report(start, end, &io);
+        #[cfg(feature = "cycle-probe")]
+        if let (Some(probe), Some(bus), Some(exchange_end), Some((tick_start, tick_end))) = (
+            self.probe.as_mut(),
+            exchange_start,
+            exchange_end,
+            tick_times,
+        ) {
+            // The backend's own stamps of its frame exchange, if it made them; otherwise the
+            // whole exchange counts as the bus's.
+            let (bus_start, bus_end) = super::probe::take_bus().unwrap_or((bus, exchange_end));
+            probe(&super::probe::CycleTimes {
+                start: self.clock.instant(start),
+                bus_start,
+                bus_end,
+                tick_start,
+                tick_end,
+                end: self.clock.instant(end),
+            });
+        }
+        Ok(end)
+    }
+
+    /// The tick panicked: outputs to zero, on the bus and in the segment, and the I/O in its
+    /// safe state.
+    fn fault(
+        &mut self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        panic: Box<dyn Any + Send>,
+    ) -> RuntimeError {
+        let message = panic_message(&*panic);
+        let gm = &mut self.ctx.gm;
+        zero_outputs(gm);
+        gm.pack_bits();
+        backend.fault(gm);
+        if let Some(shm) = &self.shm {
+            if let Err(e) = shm.publish(gm) {
+                log::error!(target: "plc_io::runtime",
+                    "segment `{}`: the zeroed outputs were not published: {e}",
+                    shm.name()
+                );
+            }
+            shm.set_run_state(RunState::Faulted);
+        }
+        RuntimeError::Panicked {
+            cycle: self.ctx.cycle,
+            message,
+        }
+    }
+
+    /// The I/O stopped, the last completed cycle's retained values saved, the segment marked
+    /// stopped (or faulted) and removed; the variables, or the error `repeat` ended with.
+    pub(super) fn stop(
+        self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        result: Result<(), RuntimeError>,
+    ) -> Result<T, RuntimeError> {
+        backend.stop();
+        #[cfg(feature = "cycle-probe")]
+        super::probe::arm(false);
+        let saved = match self.retain {
+            // The last completed cycle's image. After a panic `gm` holds a half-done tick and
+            // zeroed outputs, which must not become the values the next start restores.
+            Some(writer) => {
+                let before = writer.failed_saves();
+                let saved = writer.finish(Some(self.image.0));
+                if let Some(shm) = &self.shm {
+                    shm.set_retain_failures(before + u64::from(saved.is_err()));
+                }
+                saved
+            }
+            None => Ok(()),
+        };
+        if let Some(shm) = &self.shm {
+            shm.set_run_state(if result.is_ok() {
+                RunState::Stopped
+            } else {
+                RunState::Faulted
+            });
+        }
+        drop(self.shm);
+        // A panic is the first thing to report; a lost final save comes next.
+        result?;
+        saved.map_err(RuntimeError::RetainNotSaved)?;
+        Ok(self.ctx.gm)
+    }
+
+    /// The last cycle's image out, with a heartbeat of `now` (CLOCK_MONOTONIC nanoseconds).
+    fn publish_image(&self, now: u64) {
+        if let Some(shm) = &self.shm
+            && let Err(e) = shm.publish_image_at(&self.image.0, now)
+        {
+            // The runtime created the segment, so it owns it and the publish succeeds; were
+            // that ever not so, tools would see stale values: say so rather than hide it.
+            log::error!(target: "plc_io::runtime",
+                "segment `{}`: this cycle's values were not published: {e}",
+                shm.name()
+            );
+        }
+    }
+
+    /// The cycle's figures, and the time of its values: its end, when they were published.
+    fn report(&mut self, start: u64, end: u64, io: &IoStatus) {
+        let cycle = self.ctx.cycle;
+        let took_ns = end.saturating_sub(start);
+        stats::add(&mut self.ctx.stats, took_ns, cycle, &mut self.mean);
+        if let Some(shm) = &self.shm {
+            shm.report_published(cycle, &self.ctx.stats, io, self.clock.utc_ns(end));
+            if let Some(writer) = &self.retain {
+                shm.set_retain_failures(writer.failed_saves());
+            }
+        }
+    }
+}
+
+/// A panic's message, when it has one.
+fn panic_message(panic: &(dyn Any + Send)) -> String {
+    panic
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| panic.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "(no message)".into())
+}
+
+/// An image on a cache-line boundary.
+#[repr(C, align(64))]
+struct Aligned<I>(I);
+
+/// The image bytes of the nonvolatile variables as last handed to the retain writer, to notice
+/// a change without decoding. Their ranges are found once, so a cycle compares bytes in place
+/// and neither walks `VARIABLES` nor allocates.
+struct RetainedBytes {
+    ranges: Vec<std::ops::Range<usize>>,
+    last: Vec<u8>,
+}
+
+impl RetainedBytes {
+    fn new<T: GlobalMemory>(image: &T::Image) -> Self {
+        let ranges: Vec<_> = T::VARIABLES
+            .iter()
+            .filter(|v| v.nonvolatile)
+            .map(|v| v.offset..v.offset + v.size)
+            .collect();
+        let bytes = image.as_bytes();
+        let last = ranges
+            .iter()
+            .flat_map(|r| bytes[r.clone()].iter().copied())
+            .collect();
+        RetainedBytes { ranges, last }
+    }
+
+    /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).
+    fn changed<I: IntoBytes + Immutable>(&mut self, image: &I) -> bool {
+        let bytes = image.as_bytes();
+        let mut at = 0;
+        let mut changed = false;
+        for r in &self.ranges {
+            let (now, was) = (&bytes[r.clone()], &mut self.last[at..at + r.len()]);
+            if now != was {
+                was.copy_from_slice(now);
+                changed = true;
+            }
+            at += r.len();
+        }
+        changed
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{RetainedBytes, panic_message};
+    use plc_core::GlobalMemory;
+
+    #[derive(GlobalMemory, Clone, Debug)]
+    #[plc(crate = "plc_core")]
+    struct Gm {
+        #[plc(nonvolatile)]
+        kept: u16,
+        scratch: u16,
+    }
+
+    #[test]
+    fn only_a_change_of_a_nonvolatile_variable_counts() {
+        let mut gm = Gm::default();
+        let mut retained = RetainedBytes::new::<Gm>(&gm.to_image());
+        gm.scratch = 5;
+        assert!(!retained.changed(&gm.to_image()));
+        gm.kept = 1;
+        assert!(retained.changed(&gm.to_image()));
+        assert!(
+            !retained.changed(&gm.to_image()),
+            "the change is remembered"
+        );
+    }
+
+    #[test]
+    fn panic_messages_of_both_kinds_are_read() {
+        let text = std::panic::catch_unwind(|| panic!("at {}", 3)).unwrap_err();
+        assert_eq!(panic_message(&*text), "at 3");
+        let literal = std::panic::catch_unwind(|| panic!("plain")).unwrap_err();
+        assert_eq!(panic_message(&*literal), "plain");
+    }
+}

@@ -1,0 +1,304 @@
+//! The owner's socket server: threads of their own, never the cycle thread's time.
+//!
+//! One thread accepts connections (at most [`MAX_CONNECTIONS`], [`MAX_PER_UID`] of one user),
+//! learns each peer's credentials, and sends it the greeting with the segment's descriptor.
+//! Each connection then has a thread that receives its requests (one message each, at most
+//! [`protocol::MAX_MESSAGE`] bytes), refuses a writer the policy does not let write, decodes
+//! and checks each request against the program's declaration and queues it (bounded, and at
+//! most [`MAX_OUTSTANDING`] per connection) for the cycle thread, which answers it once
+//! applied. Every send to a tool has a timeout or does not wait, so a tool that stops reading
+//! blocks nothing but its own connection.
+
+use super::layout::{Base, Offsets};
+use super::mailbox::{Batch, Conn, Count, Counters};
+use super::policy::Policy;
+use super::protocol::{self, Code};
+use super::unix::{self, Peer};
+use plc_core::VarInfo;
+use std::collections::HashMap;
+use std::os::fd::{AsRawFd, OwnedFd, RawFd};
+use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+use std::sync::mpsc::{SyncSender, TrySendError};
+use std::sync::{Arc, Mutex};
+use std::thread::JoinHandle;
+use std::time::Duration;
+
+/// Connections at once.
+pub const MAX_CONNECTIONS: usize = 64;
+/// Connections of one user at once: one user cannot take every place.
+pub const MAX_PER_UID: usize = 32;
+/// Requests of one connection waiting for the cycle thread.
+pub const MAX_OUTSTANDING: usize = 64;
+/// Requests waiting for the cycle thread, from all connections.
+pub const QUEUE: usize = 1024;
+/// How long a send to a tool (the greeting, a refusal) may wait for room.
+const SEND_TIMEOUT: Duration = Duration::from_secs(1);
+/// How often the accepting thread looks whether it should stop.
+const STOP_POLL: Duration = Duration::from_millis(50);
+
+/// What every server thread shares.
+struct Shared {
+    name: String,
+    policy: Policy,
+    vars: &'static [VarInfo],
+    memfd: RawFd,
+    base: Base,
+    off: Offsets,
+    counters: Arc<Counters>,
+    queue: SyncSender<Batch>,
+    stop: AtomicBool,
+    conns: Mutex<Registry>,
+}
+
+#[derive(Default)]
+struct Registry {
+    open: Vec<(Arc<Conn>, JoinHandle<()>)>,
+    per_uid: HashMap<u32, usize>,
+}
+
+/// A running server; stopped (every thread joined) on drop.
+pub(crate) struct Server {
+    shared: Arc<Shared>,
+    listener: Arc<OwnedFd>,
+    accept: Option<JoinHandle<()>>,
+}
+
+/// What the server needs to start.
+pub(crate) struct Setup {
+    pub name: String,
+    pub policy: Policy,
+    pub vars: &'static [VarInfo],
+    pub off: Offsets,
+    pub counters: Arc<Counters>,
+    pub queue: SyncSender<Batch>,
+}
+
+impl Server {
+    /// Serves `listener` until dropped, passing `memfd` (which outlives the server: the
+    /// segment drops the server first) to each tool; `base` is its mapping.
+    pub fn start(
+        listener: OwnedFd,
+        setup: Setup,
+        memfd: RawFd,
+        base: Base,
+    ) -> std::io::Result<Server> {
+        let shared = Arc::new(Shared {
+            name: setup.name,
+            policy: setup.policy,
+            vars: setup.vars,
+            memfd,
+            base,
+            off: setup.off,
+            counters: setup.counters,
+            queue: setup.queue,
+            stop: AtomicBool::new(false),
+            conns: Mutex::new(Registry::default()),
+        });
+        let listener = Arc::new(listener);
+        let (s, l) = (shared.clone(), listener.clone());
+        let accept = std::thread::Builder::new()
+            .name(format!("plc-shm-{}", shared.name))
+            .spawn(move || accept_loop(&s, &l))?;
+        Ok(Server {
+            shared,
+            listener,
+            accept: Some(accept),
+        })
+    }
+}
+
+impl Drop for Server {
+    fn drop(&mut self) {
+        self.shared.stop.store(true, Relaxed);
+        unix::shutdown(self.listener.as_raw_fd());
+        if let Some(a) = self.accept.take() {
+            let _ = a.join();
+        }
+        let open = std::mem::take(&mut lock(&self.shared.conns).open);
+        for (conn, _) in &open {
+            unix::shutdown(conn.fd.as_raw_fd());
+        }
+        for (_, thread) in open {
+            let _ = thread.join();
+        }
+    }
+}
+
+fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
+    // A panic in a server thread leaves the registry as it was: go on with it.
+    m.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
+    crate::normal_priority();
+    while !shared.stop.load(Relaxed) {
+        match unix::readable(listener.as_raw_fd(), STOP_POLL) {
+            Ok(true) => {}
+            Ok(false) => continue,
+            Err(e) => {
+                log::error!(target: "plc_io::shm", "segment `{}`: the socket failed: {e}", shared.name);
+                return;
+            }
+        }
+        let Ok(Some(fd)) = unix::accept(listener) else {
+            continue;
+        };
+        if shared.stop.load(Relaxed) {
+            return;
+        }
+        admit(shared, fd);
+    }
+}
+
+/// Takes a new connection in, or turns it away with the reason.
+fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
+    let _ = unix::set_timeouts(&fd, SEND_TIMEOUT, Duration::ZERO);
+    let Ok(peer) = unix::peer(&fd) else {
+        return;
+    };
+    let mut reg = lock(&shared.conns);
+    // Connections whose threads ended leave first.
+    let (done, open): (Vec<_>, Vec<_>) = std::mem::take(&mut reg.open)
+        .into_iter()
+        .partition(|(_, t)| t.is_finished());
+    reg.open = open;
+    for (_, t) in done {
+        let _ = t.join();
+    }
+    let mine = reg.per_uid.get(&peer.uid).copied().unwrap_or(0);
+    let full = if reg.open.len() >= MAX_CONNECTIONS {
+        Some(format!("it has {MAX_CONNECTIONS} connections already"))
+    } else if mine >= MAX_PER_UID {
+        Some(format!(
+            "uid {} has {MAX_PER_UID} connections already",
+            peer.uid
+        ))
+    } else {
+        None
+    };
+    let conn = Arc::new(Conn {
+        fd,
+        outstanding: Default::default(),
+    });
+    if let Some(why) = full {
+        conn.answer(
+            0,
+            Code::Busy,
+            0,
+            format!("the program turned the connection away: {why}"),
+        );
+        return;
+    }
+    let greeting = protocol::encode_greeting(shared.policy.may_write(&peer));
+    if unix::send(conn.fd.as_raw_fd(), &greeting, Some(shared.memfd), true).is_err() {
+        return;
+    }
+    *reg.per_uid.entry(peer.uid).or_default() += 1;
+    let (s, c, uid) = (shared.clone(), conn.clone(), peer.uid);
+    let spawned = std::thread::Builder::new()
+        .name(format!("plc-shm-conn-{}", peer.pid))
+        .spawn(move || {
+            crate::normal_priority();
+            serve(&s, &c, &peer);
+            // However it ended, the tool sees the connection closed, never a silent one.
+            unix::shutdown(c.fd.as_raw_fd());
+            let mut reg = lock(&s.conns);
+            if let Some(n) = reg.per_uid.get_mut(&peer.uid) {
+                *n = n.saturating_sub(1);
+            }
+        });
+    if let Ok(thread) = spawned {
+        reg.open.push((conn, thread));
+    } else if let Some(n) = reg.per_uid.get_mut(&uid) {
+        *n = n.saturating_sub(1);
+    }
+}
+
+/// Receives one connection's requests until it closes or the server stops.
+fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
+    let may_write = shared.policy.may_write(peer);
+    // One byte more than a message may have: a longer one arrives truncated and is refused.
+    let mut buf = vec![0u8; protocol::MAX_MESSAGE + 1];
+    let (base, off) = (&shared.base, &shared.off);
+    loop {
+        let got = match unix::receive(conn.fd.as_raw_fd(), &mut buf, true) {
+            Ok(r) => r,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(_) => return,
+        };
+        // A descriptor a tool attached is closed here (`got.fd` drops): nothing of it is used.
+        // An empty message reads as zero bytes too: only a hang-up ends the connection.
+        if got.len == 0 && !got.truncated && unix::hung_up(conn.fd.as_raw_fd()) {
+            return; // closed, or shut down by `Server::drop`
+        }
+        if shared.stop.load(Relaxed) {
+            return;
+        }
+        let message = &buf[..got.len.min(buf.len())];
+        let request = if got.truncated || got.len > protocol::MAX_MESSAGE {
+            Err(protocol::DecodeError(format!(
+                "the message is longer than the {} bytes allowed",
+                protocol::MAX_MESSAGE
+            )))
+        } else {
+            protocol::decode_request(message)
+        };
+        let request = match request {
+            Ok(r) => r,
+            Err(e) => {
+                shared.counters.add(Count::Malformed, 1, base, off);
+                conn.answer(0, Code::Malformed, 0, format!("not a write request: {e}"));
+                continue;
+            }
+        };
+        let id = request.id;
+        if !may_write {
+            shared.counters.add(Count::Refused, 1, base, off);
+            let text = shared.policy.refusal(peer, &shared.name);
+            log::warn!(target: "plc_io::shm", "segment `{}`: {text}", shared.name);
+            conn.answer(id, Code::Refused, 0, text);
+            continue;
+        }
+        let writes = match super::mailbox::validate(shared.vars, &request) {
+            Ok(w) => w,
+            Err((which, why)) => {
+                shared
+                    .counters
+                    .add(Count::Rejected, request.writes.len() as u64, base, off);
+                conn.answer(id, Code::Rejected, which, why);
+                continue;
+            }
+        };
+        if conn.outstanding.load(Relaxed) >= MAX_OUTSTANDING {
+            shared.counters.add(Count::Busy, 1, base, off);
+            conn.answer(
+                id,
+                Code::Busy,
+                0,
+                format!("{MAX_OUTSTANDING} requests of this connection wait already"),
+            );
+            continue;
+        }
+        conn.outstanding.fetch_add(1, Relaxed);
+        shared.counters.queued(1, base, off);
+        let batch = Batch {
+            id,
+            writes,
+            conn: conn.clone(),
+        };
+        match shared.queue.try_send(batch) {
+            Ok(()) => {}
+            Err(TrySendError::Full(b) | TrySendError::Disconnected(b)) => {
+                conn.outstanding.fetch_sub(1, Relaxed);
+                shared.counters.queued(-1, base, off);
+                shared.counters.add(Count::Busy, 1, base, off);
+                conn.answer(
+                    b.id,
+                    Code::Busy,
+                    0,
+                    format!("{QUEUE} requests wait for the program already"),
+                );
+            }
+        }
+    }
+}
