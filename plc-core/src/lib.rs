@@ -46,6 +46,7 @@ mod plc_type;
 mod process_image;
 mod raw_bits;
 mod value;
+pub mod write;
 
 #[doc(hidden)]
 #[path = "private.rs"]

@@ -70,6 +70,11 @@ pub enum ValueError {
         /// The type that was expected.
         expected: IecType,
     },
+    /// NaN or an infinity for a REAL or LREAL written from a tool: a setpoint is a number.
+    NotFinite {
+        /// The type written.
+        expected: IecType,
+    },
     /// Text that is not a duration literal, for an `LTIME` (one beyond its range is
     /// [`OutOfRange`](Self::OutOfRange)).
     Duration {
@@ -106,6 +111,10 @@ impl fmt::Display for ValueError {
                 t => write!(f, "expected a {t} value"),
             },
             ValueError::Duration { error } => write!(f, "expected an LTIME: {error}"),
+            ValueError::NotFinite { expected } => write!(
+                f,
+                "not a finite number: {expected} takes no NaN or infinity from a tool"
+            ),
         }
     }
 }

@@ -648,7 +648,7 @@ proptest::proptest! {
             for r in applied {
                 let var = &Guarded::VARIABLES[r.index];
                 proptest::prop_assert!(var.writable_from_outside(), "{} was written", var.name);
-                proptest::prop_assert!(r.element < var.elements());
+                proptest::prop_assert!(r.leaf < var.elements());
             }
             proptest::prop_assert_eq!((gm.sensor, gm.state, gm.serial), (0, 0, 7));
         }

@@ -4,6 +4,7 @@
 mod common;
 
 use common::{kill9, role, runtime_file, spawn_role, unique, wait_for, with_cycles};
+use plc_core::write::Write;
 use plc_core::{FixedString, GlobalMemory, Value};
 use plc_io::shm::{DynSegment, OwnerState, SharedGlobalMemory, ShmError};
 use std::time::Duration;
@@ -297,6 +298,12 @@ fn writes_are_refused_up_front_with_the_reason() {
     );
 }
 
+/// A write to element `leaf` of the variable called `name` in `seg`.
+fn named(seg: &DynSegment, name: &str, leaf: usize, value: Value) -> Write {
+    let index = seg.index_of(name).expect("the variable is declared");
+    Write { index, leaf, value }
+}
+
 #[test]
 fn external_writes_reach_the_program_and_are_not_overwritten() {
     let name = unique("writeback");
@@ -317,11 +324,17 @@ fn external_writes_reach_the_program_and_are_not_overwritten() {
     // Several writes as one request: applied together, or none of them.
     let tool = DynSegment::attach(&name).unwrap();
     with_cycles(&mut owner, &mut gm, || {
-        tool.write_all(&[("speed", 0, Value::UInt(9)), ("table", 1, Value::Int(4))])
-            .unwrap()
+        tool.write_all(&[
+            named(&tool, "speed", 0, Value::UInt(9)),
+            named(&tool, "table", 1, Value::Int(4)),
+        ])
+        .unwrap()
     });
     assert_eq!((gm.speed, gm.table[1]), (9, 4));
-    let refused = tool.write_all(&[("speed", 0, Value::UInt(1)), ("state", 0, Value::UInt(1))]);
+    let refused = tool.write_all(&[
+        named(&tool, "speed", 0, Value::UInt(1)),
+        named(&tool, "state", 0, Value::UInt(1)),
+    ]);
     assert!(
         matches!(refused, Err(ShmError::NotWritable { .. })),
         "{refused:?}"

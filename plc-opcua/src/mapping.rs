@@ -146,8 +146,8 @@ pub fn to_value_variant(var: &VarDescriptor, elements: Vec<Value>) -> Variant {
 }
 
 /// A written Variant element as a plc-vars value, before the variable's own checks (`fit`):
-/// any number kind is accepted for any number type, the range is checked by the variable.
-/// NaN is refused here: a REAL that is not a number is no setpoint.
+/// any number kind is accepted for any number type; the range, and NaN or an infinity for a
+/// REAL, are the one write check's (`plc_core::write::check`), as for every tool.
 pub fn from_variant(v: &Variant) -> Result<Value, StatusCode> {
     let value = match *v {
         Variant::Boolean(b) => Value::Bool(b),
@@ -159,8 +159,6 @@ pub fn from_variant(v: &Variant) -> Result<Value, StatusCode> {
         Variant::UInt16(u) => Value::UInt(u.into()),
         Variant::UInt32(u) => Value::UInt(u.into()),
         Variant::UInt64(u) => Value::UInt(u),
-        Variant::Float(r) if r.is_nan() => return Err(StatusCode::BadOutOfRange),
-        Variant::Double(r) if r.is_nan() => return Err(StatusCode::BadOutOfRange),
         Variant::Float(r) => Value::Real(r.into()),
         Variant::Double(r) => Value::Real(r),
         Variant::String(ref s) => {
@@ -304,9 +302,10 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
             ValueError::WrongKind { .. }
             | ValueError::Syntax { .. }
             | ValueError::Duration { .. } => StatusCode::BadTypeMismatch,
-            ValueError::OutOfRange { .. } | ValueError::TooLong { .. } | ValueError::Nul { .. } => {
-                StatusCode::BadOutOfRange
-            }
+            ValueError::OutOfRange { .. }
+            | ValueError::TooLong { .. }
+            | ValueError::Nul { .. }
+            | ValueError::NotFinite { .. } => StatusCode::BadOutOfRange,
         },
         ShmError::MailboxFull(_) => StatusCode::BadTooManyOperations,
         ShmError::OwnerGone(_) | ShmError::Replaced(_) | ShmError::Closed { .. } => {

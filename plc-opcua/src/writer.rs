@@ -10,6 +10,7 @@ use crate::mapping;
 use crate::shared::{Shared, WriteJob};
 use opcua::types::StatusCode;
 use plc_core::Value;
+use plc_core::write::Write;
 use plc_shm::{DynSegment, ShmError};
 use std::sync::Arc;
 use std::sync::mpsc::Receiver;
@@ -41,15 +42,6 @@ impl Writer {
             return StatusCode::BadNodeIdUnknown;
         };
         let var = &node.var;
-        // Writes go to the top-level variable, a member's elements by their leaf numbers.
-        let Some(name) = layout
-            .desc
-            .variables
-            .get(node.index)
-            .map(|v| v.name.clone())
-        else {
-            return StatusCode::BadNodeIdUnknown;
-        };
         // A write of part of an array (an index range) names the elements it set.
         let target = match job.elements.as_slice() {
             [(e, _)] if !var.dims.is_empty() => format!("{segment}.{}[{e}]", node.path),
@@ -59,10 +51,15 @@ impl Writer {
             }
             _ => format!("{segment}.{}", node.path),
         };
-        let batch: Vec<(&str, usize, Value)> = job
+        // Writes go to the top-level variable, a member's elements by their leaf numbers.
+        let batch: Vec<Write> = job
             .elements
             .iter()
-            .map(|&(e, v)| (name.as_str(), node.first_leaf + e, v))
+            .map(|&(e, value)| Write {
+                index: node.index,
+                leaf: node.first_leaf + e,
+                value,
+            })
             .collect();
         // A program restarted since the last write: attach again once and retry.
         for attempt in 0..2 {

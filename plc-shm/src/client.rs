@@ -3,9 +3,10 @@
 //! up when the owner's process ends, however it ends).
 
 use super::ShmError;
-use super::mailbox::{Outcome, Request, Ticket};
-use super::protocol::{self, Code, Reply, Write, WriteRequest};
+use super::mailbox::{Outcome, Ticket};
+use super::protocol::{self, Code, Reply, WriteRequest};
 use super::unix;
+use plc_core::write::Checked;
 use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
 use std::os::fd::{AsRawFd, OwnedFd};
@@ -117,20 +118,13 @@ impl Client {
         unix::hung_up(self.fd.as_raw_fd())
     }
 
-    /// Sends `writes` as one request.
-    pub fn post(&self, writes: &[Request]) -> Result<Ticket, ShmError> {
+    /// Sends checked writes as one request.
+    pub fn post(&self, writes: &[Checked]) -> Result<Ticket, ShmError> {
         let id = self.next_id.get();
         self.next_id.set(id.wrapping_add(1));
         let request = WriteRequest {
             id,
-            writes: writes
-                .iter()
-                .map(|w| Write {
-                    index: w.index as u32,
-                    element: w.element as u32,
-                    value: w.value,
-                })
-                .collect(),
+            writes: writes.iter().map(|w| *w.write()).collect(),
         };
         self.send_raw(&protocol::encode_request(&request))?;
         self.sent.borrow_mut().insert(id, None);

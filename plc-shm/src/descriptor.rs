@@ -98,6 +98,16 @@ impl VarDescriptor {
     }
 }
 
+impl plc_core::write::Target for VarDescriptor {
+    fn iec_type(&self) -> IecType {
+        self.iec_type
+    }
+
+    fn string_capacity(&self) -> usize {
+        VarDescriptor::string_capacity(self)
+    }
+}
+
 impl plc_rules::path::Node for VarDescriptor {
     fn name(&self) -> &str {
         &self.name

@@ -7,6 +7,7 @@ use super::mailbox::{Outcome, Ticket};
 use super::status::{OwnerState, Status};
 use super::view::View;
 use plc_core::Value;
+use plc_core::write::{Checked, Write};
 
 /// A segment attached through its stored descriptor (what `plc` uses).
 ///
@@ -91,7 +92,7 @@ impl DynSegment {
     /// it, or with its refusal (not writable, a value `set` refuses, a writer the program's
     /// policy does not let write).
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_all(&[(name, 0, value)])
+        self.write_element(name, 0, value)
     }
 
     /// Checks a write of one element as [`write_element`](Self::write_element) would (unknown
@@ -108,25 +109,42 @@ impl DynSegment {
     pub fn check(&self, name: &str, element: usize, value: Value) -> Result<Value, ShmError> {
         self.view
             .check_element(name, element, value)
-            .map(|(_, v)| v)
+            .map(|c| c.write().value)
+    }
+
+    /// Checks one write as the owner will ([`plc_core::write::check`], against this segment's
+    /// descriptor): the write as it would be sent, to send with
+    /// [`write_checked`](Self::write_checked) without checking it again.
+    pub fn check_write(&self, write: Write) -> Result<Checked, ShmError> {
+        self.view.check_write(write)
+    }
+
+    /// Sends writes checked by [`check_write`](Self::check_write) as one request (at most
+    /// 64), applied by the owner in one cycle, all or none; returns once it answered.
+    pub fn write_checked(&self, writes: &[Checked]) -> Result<(), ShmError> {
+        self.view.send_and_wait(writes)
     }
 
     /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        self.view.write_all(&[(name, element, value)])
+        let checked = self.view.check_element(name, element, value)?;
+        self.view.send_and_wait(&[checked])
     }
 
-    /// Writes several variables or elements (name, element, value) as one request: checked
-    /// whole before anything is sent, applied by the owner in one cycle, all or none. At most
-    /// 64 writes.
+    /// Writes several basic values as one request: checked whole before anything is sent,
+    /// applied by the owner in one cycle, all or none. At most 64 writes.
     ///
     /// ```no_run
-    /// use plc_core::Value;
+    /// use plc_core::{Value, write::Write};
     /// let seg = plc_shm::DynSegment::attach("tensile_tester")?;
-    /// seg.write_all(&[("speed_setpoint", 0, Value::Real(1.5)), ("start", 0, Value::Bool(true))])?;
+    /// let index = |name| seg.index_of(name).expect("declared");
+    /// seg.write_all(&[
+    ///     Write { index: index("speed_setpoint"), leaf: 0, value: Value::Real(1.5) },
+    ///     Write { index: index("start"), leaf: 0, value: Value::Bool(true) },
+    /// ])?;
     /// # Ok::<(), plc_shm::ShmError>(())
     /// ```
-    pub fn write_all(&self, writes: &[(&str, usize, Value)]) -> Result<(), ShmError> {
+    pub fn write_all(&self, writes: &[Write]) -> Result<(), ShmError> {
         self.view.write_all(writes)
     }
 
@@ -138,7 +156,8 @@ impl DynSegment {
         element: usize,
         value: Value,
     ) -> Result<Ticket, ShmError> {
-        self.view.post_all(&[(name, element, value)])
+        let checked = self.view.check_element(name, element, value)?;
+        self.view.post(&[checked])
     }
 
     /// What became of a posted write: pending, applied, rejected or refused by the owner, not
@@ -163,11 +182,11 @@ impl DynSegment {
         element: usize,
         value: Value,
     ) -> Result<Ticket, ShmError> {
-        self.view.post(&[super::mailbox::Request {
+        self.view.post(&[Checked::__unchecked(Write {
             index,
-            element,
+            leaf: element,
             value,
-        }])
+        })])
     }
 
     /// Test hook: sends a request without any of the writer's checks and waits for the
@@ -180,11 +199,11 @@ impl DynSegment {
         element: usize,
         value: Value,
     ) -> Result<(), ShmError> {
-        self.view.send_and_wait(&[super::mailbox::Request {
+        self.view.send_and_wait(&[Checked::__unchecked(Write {
             index,
-            element,
+            leaf: element,
             value,
-        }])
+        })])
     }
 
     /// Test hook: the segment's descriptor as this tool received it, to try what a hostile

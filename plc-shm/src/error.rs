@@ -1,6 +1,8 @@
 //! Errors of shared memory, each naming the segment or variable and what to do.
 
-use plc_core::{Direction, ValueError};
+use crate::VarDescriptor;
+use plc_core::ValueError;
+use plc_core::write::Refusal;
 use std::fmt;
 
 /// Why a shared-memory operation failed.
@@ -169,23 +171,21 @@ pub enum ShmError {
     },
 }
 
-impl ShmError {
-    pub(crate) fn not_writable(variable: &str, read_only: bool, dir: Direction) -> ShmError {
-        ShmError::NotWritable {
-            variable: variable.to_string(),
-            reason: not_writable_reason(read_only, dir),
-        }
-    }
-}
-
-/// Why a variable that is read-only, an input or a status cannot be written from outside.
-pub(crate) fn not_writable_reason(read_only: bool, dir: Direction) -> &'static str {
-    if read_only {
-        "it is read-only"
-    } else if dir == Direction::Input {
-        "it is an input: the hardware writes it every cycle"
-    } else {
-        "it is a status variable: the program reports it"
+/// A refusal of the one write check, as a tool's error for segment `segment`.
+pub(crate) fn refusal(segment: &str, r: Refusal<'_, VarDescriptor>) -> ShmError {
+    let variable = r.label().to_string();
+    match r {
+        Refusal::NoVariable { index, .. } => ShmError::UnknownVariable {
+            segment: segment.to_string(),
+            variable: format!("number {index}"),
+        },
+        Refusal::NotWritable { reason, .. } => ShmError::NotWritable { variable, reason },
+        Refusal::NoElement { leaf, len, .. } => ShmError::ElementOutOfRange {
+            variable,
+            element: leaf,
+            len,
+        },
+        Refusal::Value { error, .. } => ShmError::Value { variable, error },
     }
 }
 

@@ -9,6 +9,7 @@
 
 use super::layout::{Base, Offsets, S_MB_APPLIED, S_MB_REJECTED};
 use super::protocol::{self, Code, Reply};
+use plc_core::write::{self, Checked, Write};
 use plc_core::{GlobalMemory, SetError, Value, VarInfo};
 use std::cell::RefCell;
 use std::fmt;
@@ -16,17 +17,6 @@ use std::os::fd::{AsRawFd, OwnedFd};
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
 use std::sync::mpsc::{Receiver, TryRecvError};
 use std::sync::{Arc, Mutex};
-
-/// A write: variable index, element, value.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Request {
-    /// Index of the variable.
-    pub index: usize,
-    /// Element (row-major), 0 for a scalar.
-    pub element: usize,
-    /// The value, fitted to the variable's type.
-    pub value: Value,
-}
 
 /// A posted request's number, to ask what became of it
 /// ([`DynSegment::outcome`](super::DynSegment::outcome)).
@@ -183,61 +173,23 @@ impl Conn {
 #[derive(Debug)]
 pub(crate) struct Batch {
     pub id: u64,
-    pub writes: Vec<Request>,
+    pub writes: Vec<Checked>,
     pub conn: Arc<Conn>,
 }
 
-/// Checks a decoded request against the program's declaration: the writes as they will be
-/// applied (values fitted to their variables), or the first refused one and why.
+/// Checks a decoded request against the program's declaration with the one write check
+/// ([`plc_core::write::check`]): the writes as they will be applied (values fitted to their
+/// variables), or the first refused one and why.
 pub(crate) fn validate(
     vars: &'static [VarInfo],
     request: &protocol::WriteRequest,
-) -> Result<Vec<Request>, (usize, String)> {
-    let mut out = Vec::with_capacity(request.writes.len());
-    for (k, w) in request.writes.iter().enumerate() {
-        let refuse = |why: String| Err((k, why));
-        let index = w.index as usize;
-        let Some(var) = vars.get(index) else {
-            return refuse(format!(
-                "there is no variable number {index}: the program has {}",
-                vars.len()
-            ));
-        };
-        if !var.writable_from_outside() {
-            let reason = super::error::not_writable_reason(
-                var.access == plc_core::Access::ReadOnly,
-                var.direction,
-            );
-            return refuse(format!("`{}` cannot be written: {reason}", var.name));
-        }
-        let element = w.element as usize;
-        // The basic value numbered `element`: an array's element, or a member's inside a
-        // structure, which must be writable itself (a read-only member is refused here, by
-        // the program's own declaration, whatever the tool checked).
-        let Some(found) = plc_rules::path::leaf(vars, index, element) else {
-            return refuse(format!(
-                "`{}` has {} elements: element {element} is out of range",
-                var.name,
-                var.leaves()
-            ));
-        };
-        let leaf = if var.is_structured() { found.node } else { var };
-        if !found.writable {
-            return refuse(format!(
-                "`{}.{}` cannot be written: it is read-only",
-                var.name, leaf.name
-            ));
-        }
-        match w.value.fit(leaf.iec_type, leaf.string_capacity()) {
-            Ok(value) => out.push(Request {
-                index,
-                element,
-                value,
-            }),
-            Err(e) => return refuse(format!("`{}`: {e}", var.name)),
-        }
-    }
-    Ok(out)
+) -> Result<Vec<Checked>, (usize, String)> {
+    request
+        .writes
+        .iter()
+        .enumerate()
+        .map(|(k, &w)| write::check(vars, w).map_err(|refusal| (k, refusal.to_string())))
+        .collect()
 }
 
 /// The cycle thread's end of the queue.
@@ -261,7 +213,7 @@ impl Inbox {
         gm: &mut T,
         base: &Base,
         off: &Offsets,
-        audit: &mut impl FnMut(&Request, &Result<(), Rejection>),
+        audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
     ) -> usize {
         // Nothing queued (the server counts a request before it queues it; one counted just
         // now waits for the next cycle): most cycles end here, without the lock or the queue.
@@ -317,13 +269,13 @@ impl Inbox {
 /// are undone (their earlier values set again) and the refused one is named.
 fn apply_batch<T: GlobalMemory>(
     gm: &mut T,
-    writes: &[Request],
-    audit: &mut impl FnMut(&Request, &Result<(), Rejection>),
+    writes: &[Checked],
+    audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
 ) -> Result<(), (usize, String)> {
     let mut undo: Vec<(usize, usize, Option<Value>)> = Vec::with_capacity(writes.len());
-    for (k, w) in writes.iter().enumerate() {
-        let before = gm.try_get(w.index, w.element);
-        if let Err(e) = gm.set(w.index, w.element, w.value) {
+    for (k, w) in writes.iter().map(Checked::write).enumerate() {
+        let before = gm.try_get(w.index, w.leaf);
+        if let Err(e) = gm.set(w.index, w.leaf, w.value) {
             for (index, element, old) in undo.into_iter().rev() {
                 if let Some(old) = old {
                     let _ = gm.set(index, element, old);
@@ -334,10 +286,10 @@ fn apply_batch<T: GlobalMemory>(
             let name = T::VARIABLES.get(w.index).map_or("?", |v| v.name);
             return Err((k, format!("`{name}`: {rejection}")));
         }
-        undo.push((w.index, w.element, before));
+        undo.push((w.index, w.leaf, before));
     }
     for w in writes {
-        audit(w, &Ok(()));
+        audit(w.write(), &Ok(()));
     }
     Ok(())
 }

@@ -4,7 +4,7 @@
 
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
-use super::mailbox::{Counters, Inbox, Rejection, Request};
+use super::mailbox::{Counters, Inbox, Rejection};
 use super::policy::{Policy, Sharing};
 use super::protocol::Code;
 use super::segment::{self, Segment};
@@ -13,6 +13,7 @@ use super::status::{OwnerState, RunState, Status, now_ns, utc_ns, write_report};
 use super::view::View;
 use super::{ShmError, bytes};
 use crate::{CycleStats, IoStatus};
+use plc_core::write::Write;
 use plc_core::{GlobalMemory, Value};
 use std::cell::Cell;
 use std::marker::PhantomData;
@@ -254,7 +255,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
     pub fn apply_mailbox_with(
         &mut self,
         gm: &mut T,
-        mut audit: impl FnMut(&Request, &Result<(), Rejection>),
+        mut audit: impl FnMut(&Write, &Result<(), Rejection>),
     ) -> usize {
         self.inbox
             .apply(gm, &self.view.base, &self.view.off, &mut audit)
@@ -388,12 +389,13 @@ impl<T: GlobalMemory> ShmReader<T> {
     /// variables, wrong kinds, out-of-range values, over-long strings), then applied by the
     /// owner at its next cycle: returns once applied, or with the owner's refusal.
     pub fn write(&self, name: &str, value: Value) -> Result<(), ShmError> {
-        self.view.write_all(&[(name, 0, value)])
+        self.write_element(name, 0, value)
     }
 
     /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        self.view.write_all(&[(name, element, value)])
+        let checked = self.view.check_element(name, element, value)?;
+        self.view.send_and_wait(&[checked])
     }
 }
 

@@ -122,26 +122,21 @@ impl DynSegment {
     /// Writes a value found by its path, checked as [`check_location`](Self::check_location)
     /// checks it and then by the program; returns once the program applied it (or refused it).
     pub fn write_location(&self, at: &PathLocation, value: Value) -> Result<(), ShmError> {
-        let value = self.check_location(at, value)?;
-        let name = &self.descriptor().variables[at.index].name;
-        self.write_element(name, at.leaf, value)
+        self.write_all(&[plc_core::write::Write {
+            index: at.index,
+            leaf: at.leaf,
+            value,
+        }])
     }
 
     /// Checks a write to a location as the owner would (writable, kind, range, capacity),
     /// without sending it; the value as it would be sent.
     pub fn check_location(&self, at: &PathLocation, value: Value) -> Result<Value, ShmError> {
-        if !at.writable {
-            return Err(ShmError::not_writable(
-                &at.path,
-                at.var.access == plc_core::Access::ReadOnly,
-                at.var.direction,
-            ));
-        }
-        value
-            .fit(at.var.iec_type, at.var.string_capacity())
-            .map_err(|error| ShmError::Value {
-                variable: at.path.clone(),
-                error,
-            })
+        let checked = self.check_write(plc_core::write::Write {
+            index: at.index,
+            leaf: at.leaf,
+            value,
+        })?;
+        Ok(checked.write().value)
     }
 }

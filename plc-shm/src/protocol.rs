@@ -18,6 +18,7 @@
 //!     2u8  id u64  code u8  which u16  len u16  then len bytes of UTF-8 (the reason)
 //! ```
 
+use plc_core::write::Write;
 use plc_core::{FixedString, Value};
 
 /// Protocol version, in the greeting: a tool and an owner of another version refuse each other.
@@ -34,17 +35,6 @@ const MAX_REASON: usize = 1024;
 
 const TAG_WRITE: u8 = 1;
 const TAG_REPLY: u8 = 2;
-
-/// One write of a request: variable index, element, value.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Write {
-    /// Index of the variable in the program's declaration.
-    pub index: u32,
-    /// Element (row-major), 0 for a scalar.
-    pub element: u32,
-    /// The value.
-    pub value: Value,
-}
 
 /// A request: writes checked whole and applied in one cycle, all or none.
 #[derive(Clone, Debug, PartialEq)]
@@ -209,8 +199,11 @@ pub fn encode_request(request: &WriteRequest) -> Vec<u8> {
     out.extend_from_slice(&request.id.to_le_bytes());
     out.extend_from_slice(&(request.writes.len() as u16).to_le_bytes());
     for w in &request.writes {
-        out.extend_from_slice(&w.index.to_le_bytes());
-        out.extend_from_slice(&w.element.to_le_bytes());
+        // 32 bits on the wire; an index beyond them (no declaration has one) becomes the
+        // largest, which the owner refuses as no such variable.
+        let wire = |n: usize| u32::try_from(n).unwrap_or(u32::MAX).to_le_bytes();
+        out.extend_from_slice(&wire(w.index));
+        out.extend_from_slice(&wire(w.leaf));
         match w.value {
             Value::Bool(b) => out.extend_from_slice(&[0, u8::from(b)]),
             Value::Int(i) => {
@@ -256,8 +249,8 @@ pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
     // Bounded by MAX_WRITES, whatever the message says.
     let mut writes = Vec::with_capacity(count);
     for _ in 0..count {
-        let index = r.u32("variable index")?;
-        let element = r.u32("element")?;
+        let index = r.u32("variable index")? as usize;
+        let leaf = r.u32("element")? as usize;
         let value = match r.u8("value kind")? {
             0 => match r.u8("bool")? {
                 0 => Value::Bool(false),
@@ -278,11 +271,7 @@ pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
             5 => Value::Time(plc_core::Time::from_nanos(r.u64("duration")? as i64)),
             k => return Err(DecodeError(format!("unknown value kind {k}"))),
         };
-        writes.push(Write {
-            index,
-            element,
-            value,
-        });
+        writes.push(Write { index, leaf, value });
     }
     r.end()?;
     Ok(WriteRequest { id, writes })
@@ -387,7 +376,7 @@ mod tests {
                 id,
                 writes: writes
                     .into_iter()
-                    .map(|(index, element, value)| Write { index, element, value })
+                    .map(|(index, leaf, value)| Write { index: index as usize, leaf: leaf as usize, value })
                     .collect(),
             };
             let bytes = encode_request(&request);
@@ -396,7 +385,7 @@ mod tests {
             prop_assert_eq!(back.id, request.id);
             prop_assert_eq!(back.writes.len(), request.writes.len());
             for (a, b) in back.writes.iter().zip(&request.writes) {
-                prop_assert!(a.index == b.index && a.element == b.element);
+                prop_assert!(a.index == b.index && a.leaf == b.leaf);
                 prop_assert!(same(&a.value, &b.value), "{:?} / {:?}", a.value, b.value);
             }
             let cut = cut.index(bytes.len());

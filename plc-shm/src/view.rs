@@ -4,12 +4,14 @@
 use super::client::answer_result;
 use super::codec;
 use super::descriptor::LayoutDescriptor;
+use super::error::refusal;
 use super::layout::*;
-use super::mailbox::{Outcome, Request, Ticket};
+use super::mailbox::{Outcome, Ticket};
 use super::segment::{self, MAX_DESCRIPTOR, MAX_IMAGE, Segment};
 use super::status::{OwnerState, RunState, Status};
 use super::{ShmError, bytes};
 use plc_core::Value;
+use plc_core::write::{self, Checked, Write};
 use std::cell::{Cell, OnceCell};
 use std::collections::HashMap;
 use std::sync::atomic::{Ordering, fence};
@@ -260,72 +262,33 @@ impl View {
         Ok(codec::decode(&image, var, element).unwrap_or(Value::Bool(false)))
     }
 
-    /// Checks a write as the owner would, without posting it: the variable's index and the
-    /// value as it will be sent (fitted to the variable's type).
+    /// Checks one write as the owner will: the one check ([`plc_core::write::check`]) against
+    /// this segment's descriptor.
+    pub fn check_write(&self, write: Write) -> Result<Checked, ShmError> {
+        write::check(&self.desc.variables, write).map_err(|r| refusal(self.name(), r))
+    }
+
+    /// Checks a write to variable `name` (element or leaf `element`) as the owner will.
     pub fn check_element(
         &self,
         name: &str,
         element: usize,
         value: Value,
-    ) -> Result<(usize, Value), ShmError> {
+    ) -> Result<Checked, ShmError> {
         let index = self.var_index(name)?;
-        let var = &self.desc.variables[index];
-        if !var.writable_from_outside() {
-            return Err(ShmError::not_writable(
-                &var.name,
-                var.access == plc_core::Access::ReadOnly,
-                var.direction,
-            ));
-        }
-        // The basic value numbered `element`: an array's element, or one inside a structure
-        // (its leaf), with the member's own access and type.
-        let Some(found) = plc_rules::path::leaf(&self.desc.variables, index, element) else {
-            return Err(ShmError::ElementOutOfRange {
-                variable: var.name.clone(),
-                element,
-                len: plc_rules::path::leaves(var),
-            });
-        };
-        let (leaf, label) = if var.members.is_empty() {
-            (var, var.name.clone())
-        } else {
-            (found.node, format!("{}.{}", var.name, found.node.name))
-        };
-        if !found.writable {
-            return Err(ShmError::not_writable(&label, true, leaf.direction));
-        }
-        let value = value
-            .fit(leaf.iec_type, leaf.string_capacity())
-            .map_err(|error| ShmError::Value {
-                variable: label,
-                error,
-            })?;
-        Ok((index, value))
+        self.check_write(Write {
+            index,
+            leaf: element,
+            value,
+        })
     }
 
-    /// Checks writes as the owner would: the requests to send.
-    fn check_all(&self, writes: &[(&str, usize, Value)]) -> Result<Vec<Request>, ShmError> {
-        writes
-            .iter()
-            .map(|&(name, element, value)| {
-                let (index, value) = self.check_element(name, element, value)?;
-                Ok(Request {
-                    index,
-                    element,
-                    value,
-                })
-            })
-            .collect()
+    fn check_each(&self, writes: &[Write]) -> Result<Vec<Checked>, ShmError> {
+        writes.iter().map(|&w| self.check_write(w)).collect()
     }
 
-    /// Checks writes as the owner would and sends them as one request: its ticket.
-    pub fn post_all(&self, writes: &[(&str, usize, Value)]) -> Result<Ticket, ShmError> {
-        let requests = self.check_all(writes)?;
-        self.post(&requests)
-    }
-
-    /// Sends `requests` as one request, as they are (the checks are the caller's).
-    pub fn post(&self, requests: &[Request]) -> Result<Ticket, ShmError> {
+    /// Sends checked writes as one request.
+    pub fn post(&self, requests: &[Checked]) -> Result<Ticket, ShmError> {
         self.check_owner()?;
         if requests.is_empty() || requests.len() > super::protocol::MAX_WRITES {
             return Err(ShmError::Os {
@@ -346,15 +309,15 @@ impl View {
             .ok_or_else(|| ShmError::NotOwner(self.name().to_string()))
     }
 
-    /// Checks writes as the owner would, sends them as one request and waits for the owner to
+    /// Checks writes as the owner will, sends them as one request and waits for the owner to
     /// apply all of them or none.
-    pub fn write_all(&self, writes: &[(&str, usize, Value)]) -> Result<(), ShmError> {
-        let requests = self.check_all(writes)?;
-        self.send_and_wait(&requests)
+    pub fn write_all(&self, writes: &[Write]) -> Result<(), ShmError> {
+        let checked = self.check_each(writes)?;
+        self.send_and_wait(&checked)
     }
 
-    /// Sends `requests` as one request, as they are, and waits for the owner's answer.
-    pub fn send_and_wait(&self, requests: &[Request]) -> Result<(), ShmError> {
+    /// Sends checked writes as one request and waits for the owner's answer.
+    pub fn send_and_wait(&self, requests: &[Checked]) -> Result<(), ShmError> {
         let ticket = self.post(requests)?;
         let period = self.status().stats.period;
         let patience = (period * 50).clamp(WRITE_PATIENCE.0, WRITE_PATIENCE.1);
@@ -362,10 +325,11 @@ impl View {
         let names: Vec<String> = requests
             .iter()
             .map(|r| {
+                let index = r.write().index;
                 self.desc
                     .variables
-                    .get(r.index)
-                    .map_or_else(|| format!("#{}", r.index), |v| v.name.clone())
+                    .get(index)
+                    .map_or_else(|| format!("#{index}"), |v| v.name.clone())
             })
             .collect();
         answer_result(self.name(), &names, reply)

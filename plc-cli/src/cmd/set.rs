@@ -5,61 +5,49 @@
 
 use super::{Error, is_path, resolve};
 use plc_core::Value;
+use plc_core::write::{Checked, Write};
 use plc_shm::DynSegment;
 
-/// A checked assignment: what the user named, the top-level variable, the element (for a
-/// value inside a structure, its leaf number) and the value.
+/// A checked assignment: what the user named and the write as the owner will apply it.
 #[derive(Clone, Debug)]
-pub struct Checked {
+pub struct Assignment {
     pub label: String,
-    pub name: String,
-    pub element: usize,
-    pub value: Value,
+    pub write: Checked,
 }
 
-/// Parses and checks `name=value` (or `path=value`) against the segment, as the owner would.
-pub fn check(seg: &DynSegment, assignment: &str) -> Result<Checked, Error> {
+/// Parses `name=value` (or `path=value`) and checks it against the segment with the one write
+/// check the owner makes again; the value is parsed as the variable's type.
+pub fn check(seg: &DynSegment, assignment: &str) -> Result<Assignment, Error> {
     let (spec, text) = assignment
         .split_once('=')
         .ok_or_else(|| format!("`{assignment}`: write `name=value`"))?;
-    if is_path(seg, spec) {
+    let (label, index, leaf, iec_type) = if is_path(seg, spec) {
         let at = seg.locate(spec)?;
-        let value =
-            Value::parse(text, at.var.iec_type).map_err(|e| format!("`{}`: {e}", at.path))?;
-        let value = seg.check_location(&at, value)?;
-        return Ok(Checked {
-            name: seg.descriptor().variables[at.index].name.clone(),
-            element: at.leaf,
-            label: at.path,
-            value,
-        });
-    }
-    let (_, var, element) = resolve(seg, spec.trim())?;
-    let element = element.unwrap_or(0);
-    // Parsed as the variable's type; every other check is the library's, as the owner makes it.
-    let value = Value::parse(text, var.iec_type).map_err(|e| format!("`{}`: {e}", var.name))?;
-    let value = seg.check(&var.name, element, value)?;
-    Ok(Checked {
-        label: spec.trim().to_string(),
-        name: var.name.clone(),
-        element,
-        value,
-    })
+        (at.path, at.index, at.leaf, at.var.iec_type)
+    } else {
+        let (index, var, element) = resolve(seg, spec.trim())?;
+        (
+            spec.trim().to_string(),
+            index,
+            element.unwrap_or(0),
+            var.iec_type,
+        )
+    };
+    let value = Value::parse(text, iec_type).map_err(|e| format!("`{label}`: {e}"))?;
+    let write = seg.check_write(Write { index, leaf, value })?;
+    Ok(Assignment { label, write })
 }
 
 pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
-    let checked: Vec<Checked> = assignments
+    let checked: Vec<Assignment> = assignments
         .iter()
         .map(|a| check(&seg, a))
         .collect::<Result<_, _>>()?;
     // One request of at most 64 writes; a longer list goes in requests of 64, each whole.
     for (n, part) in checked.chunks(64).enumerate() {
-        let writes: Vec<(&str, usize, Value)> = part
-            .iter()
-            .map(|c| (c.name.as_str(), c.element, c.value))
-            .collect();
-        if let Err(e) = seg.write_all(&writes) {
+        let writes: Vec<Checked> = part.iter().map(|a| a.write).collect();
+        if let Err(e) = seg.write_checked(&writes) {
             let done = n * 64;
             return Err(if done == 0 {
                 e.to_string()
@@ -68,8 +56,8 @@ pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
             }
             .into());
         }
-        for c in part {
-            println!("{} <- {}", c.label, c.value);
+        for a in part {
+            println!("{} <- {}", a.label, a.write.write().value);
         }
     }
     Ok(())

@@ -360,8 +360,8 @@ impl Watch {
                     if let Some(name) = name {
                         let result =
                             set::check(&self.seg, &format!("{name}={input}")).and_then(|t| {
-                                self.seg.write_element(&t.name, t.element, t.value)?;
-                                Ok(t.value)
+                                self.seg.write_checked(&[t.write])?;
+                                Ok(t.write.write().value)
                             });
                         self.message = match result {
                             Ok(v) => format!("wrote {name} = {v}"),
