@@ -12,7 +12,15 @@ use plc_io::shm::{DynSegment, SharedGlobalMemory, Sharing, ShmError, list_segmen
 use std::os::fd::AsRawFd;
 use std::os::unix::fs::PermissionsExt;
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard};
 use std::time::{Duration, Instant};
+
+/// Every new owner removes what killed owners left in the runtime directory, so a test that
+/// looks at a killed owner's files runs with no other owner starting: these tests take turns.
+fn alone() -> MutexGuard<'static, ()> {
+    static TURN: Mutex<()> = Mutex::new(());
+    TURN.lock().unwrap_or_else(|p| p.into_inner())
+}
 
 #[derive(GlobalMemory, Debug, Clone)]
 pub struct Plain {
@@ -74,6 +82,7 @@ fn runtime_dir_ready() {
 
 #[test]
 fn a_symlink_at_the_lock_or_socket_path_is_refused_and_its_target_untouched() {
+    let _alone = alone();
     runtime_dir_ready();
     let dir = Scratch::new("link");
     let victim = dir.path("victim");
@@ -98,6 +107,7 @@ fn a_symlink_at_the_lock_or_socket_path_is_refused_and_its_target_untouched() {
 
 #[test]
 fn a_lock_file_open_to_others_or_of_another_user_is_refused_with_the_fix() {
+    let _alone = alone();
     runtime_dir_ready();
     let name = unique("lockmode");
     let _c = Cleanup(name.clone());
@@ -131,6 +141,7 @@ fn use_runtime_dir(dir: &Path) {
 
 #[test]
 fn a_runtime_directory_that_is_a_link_open_to_others_or_another_users_is_refused_with_the_fix() {
+    let _alone = alone();
     if role().as_deref() == Some("dir_cases") {
         let base = PathBuf::from(std::env::var("BASE").unwrap());
         let victim = base.join("victim");
@@ -198,6 +209,7 @@ fn a_runtime_directory_that_is_a_link_open_to_others_or_another_users_is_refused
 
 #[test]
 fn a_tool_receives_a_segment_it_cannot_write_resize_or_map_writable() {
+    let _alone = alone();
     let name = unique("sealed");
     let owner = SharedGlobalMemory::<Plain>::create(&name).unwrap();
     owner
@@ -276,6 +288,7 @@ fn a_tool_receives_a_segment_it_cannot_write_resize_or_map_writable() {
 
 #[test]
 fn a_clean_stop_leaves_no_file_and_a_killed_owners_files_are_removed_by_the_next_owner() {
+    let _alone = alone();
     if role().as_deref() == Some("killed_owner") {
         let name = std::env::var("SEGMENT").unwrap();
         let owner = SharedGlobalMemory::<Plain>::create(&name).unwrap();
@@ -325,6 +338,7 @@ fn a_clean_stop_leaves_no_file_and_a_killed_owners_files_are_removed_by_the_next
 
 #[test]
 fn a_new_owner_after_a_clean_stop_has_a_later_generation() {
+    let _alone = alone();
     let name = unique("generation");
     let first = SharedGlobalMemory::<Plain>::create(&name)
         .unwrap()
@@ -339,6 +353,7 @@ fn a_new_owner_after_a_clean_stop_has_a_later_generation() {
 /// `nogroup` (gid 65534) as `SHARING` says: `read` (read only) or `write` (read and write).
 #[test]
 fn another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes() {
+    let _alone = alone();
     let test = "another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes";
     match role().as_deref() {
         Some("shared_owner") => {
@@ -419,6 +434,7 @@ fn another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes() {
 
 #[test]
 fn a_tool_outside_the_read_group_is_told_permission_is_denied() {
+    let _alone = alone();
     if role().as_deref() == Some("outsider") {
         let name = std::env::var("SEGMENT").unwrap();
         // SAFETY: dropping privileges in this child process only.
@@ -456,6 +472,7 @@ fn a_tool_outside_the_read_group_is_told_permission_is_denied() {
 
 #[test]
 fn planted_retain_links_and_open_modes_are_refused_and_nothing_outside_is_touched() {
+    let _alone = alone();
     use plc_io::retain::{RetainError, RetainStore};
     #[derive(GlobalMemory, Debug, Clone)]
     pub struct Kept {
@@ -532,6 +549,7 @@ pub struct Saved {
 
 #[test]
 fn a_lost_final_retain_save_is_an_error_from_run_and_failed_saves_are_in_the_status() {
+    let _alone = alone();
     let dir = Scratch::new("lostsave");
     let retain_dir = dir.path("r");
     let name = unique("lostsave");
@@ -628,6 +646,7 @@ proptest::proptest! {
     fn the_owner_survives_arbitrary_messages_on_its_socket(
         messages in proptest::collection::vec(any_message(), 1..40)
     ) {
+        let _alone = alone();
         let name = unique("prop");
         let mut owner = SharedGlobalMemory::<Guarded>::create(&name).unwrap();
         let seg = DynSegment::attach(&name).unwrap();
@@ -742,6 +761,7 @@ fn try_to_change_the_segment(seg: &DynSegment, noise: &mut Noise) {
 
 #[test]
 fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_attack() {
+    let _alone = alone();
     match role().as_deref() {
         Some("attacked_owner") => {
             let name = std::env::var("SEGMENT").unwrap();
