@@ -324,35 +324,26 @@ pub fn variable_node_paths(seg: &plc_io::shm::DynSegment) -> Vec<String> {
     paths(seg, true)
 }
 
-/// The paths of a segment's basic values, an array of them as one path (`arrays_whole`) or
-/// one per element.
+/// The paths of a segment's basic values from the one walk over its declaration, an array of
+/// them as one path (`arrays_whole`) or one per element.
 fn paths(seg: &plc_io::shm::DynSegment, arrays_whole: bool) -> Vec<String> {
+    use plc_core::rules::path::{Visit, walk};
     let mut out = Vec::new();
-    for v in &seg.descriptor().variables {
-        walk(v, &v.name, arrays_whole, &mut out);
-    }
-    out
-}
-
-fn walk(v: &plc_io::shm::VarDescriptor, path: &str, arrays_whole: bool, out: &mut Vec<String>) {
-    let elements = plc_core::rules::access::elements(&v.dims);
-    let element = |e: usize| {
-        if v.dims.is_empty() {
-            path.to_string()
+    walk(&seg.descriptor().variables, |visit| {
+        let Visit::Basic(b) = visit else { return };
+        let dims = &b.node.dims;
+        if arrays_whole || dims.is_empty() {
+            out.push(b.path);
         } else {
-            format!("{path}[{}]", plc_core::rules::path::coordinates(e, &v.dims))
+            let elements = plc_core::rules::access::elements(dims);
+            out.extend((0..elements).map(|e| {
+                format!(
+                    "{}[{}]",
+                    b.path,
+                    plc_core::rules::path::coordinates(e, dims)
+                )
+            }));
         }
-    };
-    match (v.members.is_empty(), arrays_whole) {
-        (true, true) => out.push(path.to_string()),
-        (true, false) => out.extend((0..elements).map(element)),
-        (false, _) => {
-            for e in 0..elements {
-                let at = element(e);
-                for m in &v.members {
-                    walk(m, &format!("{at}.{}", m.name), arrays_whole, out);
-                }
-            }
-        }
-    }
+    });
+    out
 }

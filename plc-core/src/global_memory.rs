@@ -71,8 +71,8 @@ pub struct VarInfo {
     pub ux: bool,
     /// `quantity = "force"`: the physical quantity a display uses to pick units.
     pub quantity: Option<&'static str>,
-    members: &'static [VarInfo],
-    struct_name: Option<&'static str>,
+    pub(crate) members: &'static [VarInfo],
+    pub(crate) struct_name: Option<&'static str>,
 }
 
 impl VarInfo {
@@ -120,31 +120,6 @@ impl VarInfo {
     /// Whether tools may write it: read-write and neither an input nor a status.
     pub const fn writable_from_outside(&self) -> bool {
         plc_rules::access::writable_from_outside(self.access, self.direction)
-    }
-
-    /// Builds a `VarInfo` from its parts; for the derive (`__private`), not for users.
-    #[doc(hidden)]
-    pub const fn __from_parts(p: crate::__private::VarInfoParts) -> Self {
-        VarInfo {
-            name: p.name,
-            iec_type: p.iec_type,
-            rust_type: p.rust_type,
-            offset: p.offset,
-            size: p.size,
-            dims: p.dims,
-            bit: p.bit,
-            link: p.link,
-            address: p.address,
-            description: p.description,
-            initial: p.initial,
-            nonvolatile: p.nonvolatile,
-            access: p.access,
-            direction: p.direction,
-            ux: p.ux,
-            quantity: p.quantity,
-            members: p.members,
-            struct_name: p.type_name,
-        }
     }
 }
 

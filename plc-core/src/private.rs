@@ -15,43 +15,18 @@ pub use crate::process_image::ProcessValue;
 
 use crate::{Access, BitMapping, Direction, IecType, SetError, Value};
 
-/// The fields of a [`VarInfo`](crate::VarInfo), so generated code can name them (the public
-/// struct is `#[non_exhaustive]`).
-#[derive(Clone, Copy, Debug)]
-pub struct VarInfoParts {
-    pub name: &'static str,
-    pub iec_type: IecType,
-    pub rust_type: &'static str,
-    pub offset: usize,
-    pub size: usize,
-    pub dims: &'static [usize],
-    pub bit: Option<BitMapping>,
-    pub link: Option<&'static str>,
-    pub address: Option<&'static str>,
-    pub description: &'static str,
-    pub initial: Option<&'static str>,
-    pub nonvolatile: bool,
-    pub access: Access,
-    pub direction: Direction,
-    pub ux: bool,
-    pub quantity: Option<&'static str>,
-    /// A structured variable's members (empty for a basic one).
-    pub members: &'static [crate::VarInfo],
-    /// A structured variable's type name.
-    pub type_name: Option<&'static str>,
-}
-
-/// The parts of a variable of type `T` with every attribute at its default (no link, address,
-/// bit mapping, description, initial value or quantity; internal, read-write, volatile): the
-/// derive calls the setters below only for what a field declares, so a large declaration
-/// stays small for the compiler (each field costs one call, not a literal of every part).
+/// The description of a variable of type `T` with every attribute at its default (no link,
+/// address, bit mapping, description, initial value or quantity; internal, read-write,
+/// volatile): the derive calls the setters below only for what a field declares, so a large
+/// declaration stays small for the compiler (each field costs one call, not a literal of every
+/// part).
 pub const fn var<T: PlcType>(
     name: &'static str,
     rust_type: &'static str,
     offset: usize,
     size: usize,
-) -> VarInfoParts {
-    VarInfoParts {
+) -> crate::VarInfo {
+    crate::VarInfo {
         name,
         iec_type: T::IEC_TYPE,
         rust_type,
@@ -69,12 +44,14 @@ pub const fn var<T: PlcType>(
         ux: false,
         quantity: None,
         members: T::MEMBERS,
-        type_name: T::TYPE_NAME,
+        struct_name: T::TYPE_NAME,
     }
 }
 
-/// Setters for what a field declares beyond [`var`]'s defaults.
-impl VarInfoParts {
+/// Setters for what a field declares beyond [`var`]'s defaults: for the derive's generated
+/// code, not for users.
+#[doc(hidden)]
+impl crate::VarInfo {
     pub const fn iec(mut self, iec_type: IecType) -> Self {
         self.iec_type = iec_type;
         self
@@ -132,11 +109,6 @@ pub const fn max_depth(depths: &[usize]) -> usize {
         i += 1;
     }
     max
-}
-
-/// Builds a [`VarInfo`](crate::VarInfo) in a `const`.
-pub const fn var_info(parts: VarInfoParts) -> crate::VarInfo {
-    crate::VarInfo::__from_parts(parts)
 }
 
 /// Sets element `element` of a field described by `info`, turning an element error into a

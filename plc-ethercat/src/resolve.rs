@@ -113,31 +113,17 @@ pub fn resolve_vars(vars: &[VarInfo], layout: &BusLayout) -> Result<Vec<Binding>
 mod tests {
     use super::*;
     use crate::{BusConfig, PdoDirection, PdoEntry, devices};
-    use plc_core::__private::{VarInfoParts, var_info};
-    use plc_core::Access;
     use plc_core::Direction;
 
+    /// A variable the derive would refuse to link (so a test can reach the runtime's own
+    /// check): a BOOL's description, its type, direction and link set by hand.
     fn var(name: &'static str, ty: IecType, dir: Direction, link: &'static str) -> VarInfo {
-        var_info(VarInfoParts {
-            name,
-            iec_type: ty,
-            rust_type: ty.rust_name(),
-            offset: 0,
-            size: ty.image_size().max(1),
-            dims: &[],
-            bit: None,
-            link: Some(link),
-            address: None,
-            description: "",
-            initial: None,
-            nonvolatile: false,
-            access: Access::ReadWrite,
-            direction: dir,
-            ux: false,
-            quantity: None,
-            members: &[],
-            type_name: None,
-        })
+        let mut v = plc_core::__private::var::<bool>(name, ty.rust_name(), 0, 1);
+        v.iec_type = ty;
+        v.size = ty.image_size().max(1);
+        v.link = Some(link);
+        v.direction = dir;
+        v
     }
 
     /// Resolving `vars` on [`layout`] fails with exactly these problems (each a part of the
@@ -310,26 +296,15 @@ mod tests {
 
     #[test]
     fn arrays_strings_and_status_variables_cannot_be_linked() {
-        let array = var_info(VarInfoParts {
-            dims: &[4],
-            size: 4,
-            ..parts(&var(
-                "arr",
-                IecType::Bool,
-                Direction::Input,
-                "ethercat.di.input1",
-            ))
-        });
-        let string = var_info(VarInfoParts {
-            size: 16,
-            rust_type: "FixedString<16>",
-            ..parts(&var(
-                "text",
-                IecType::String,
-                Direction::Input,
-                "ethercat.di.input2",
-            ))
-        });
+        let mut array = var("arr", IecType::Bool, Direction::Input, "ethercat.di.input1");
+        (array.dims, array.size) = (&[4], 4);
+        let mut string = var(
+            "text",
+            IecType::String,
+            Direction::Input,
+            "ethercat.di.input2",
+        );
+        (string.size, string.rust_type) = (16, "FixedString<16>");
         let vars = [
             array,
             string,
@@ -351,30 +326,6 @@ mod tests {
              is declared `direction = \"status\"`",
             ],
         );
-    }
-
-    /// The parts of `v`, to build a variant of it.
-    fn parts(v: &VarInfo) -> VarInfoParts {
-        VarInfoParts {
-            name: v.name,
-            iec_type: v.iec_type,
-            rust_type: v.rust_type,
-            offset: v.offset,
-            size: v.size,
-            dims: v.dims,
-            bit: v.bit,
-            link: v.link,
-            address: v.address,
-            description: v.description,
-            initial: v.initial,
-            nonvolatile: v.nonvolatile,
-            access: v.access,
-            direction: v.direction,
-            ux: v.ux,
-            quantity: v.quantity,
-            members: v.members(),
-            type_name: None,
-        }
     }
 
     #[test]

@@ -318,7 +318,7 @@ fn field_by_prettyplease(text: &str) -> Result<String, String> {
 }
 
 /// One struct, formatted as prettyplease formats it. Writing it directly is ten times faster
-/// than parsing and printing 10,000 fields (BENCHMARKS.md, `import_10k_ms`); the fields that
+/// than parsing and printing 10,000 fields (the repository's BENCHMARKS.md, `import_10k_ms`); the fields that
 /// prettyplease would break across lines are still printed by it, and a test checks the whole
 /// against prettyplease.
 fn emit_struct(

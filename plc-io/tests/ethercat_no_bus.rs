@@ -2,10 +2,8 @@
 //! backend used before it is started. (The end-to-end tests on the simulated bus are in
 //! `ethercat_sim.rs`.)
 
-use plc_core::__private::{VarInfoParts, var_info};
 use plc_core::{
-    Access, Direction, GlobalMemory, IecType, ProcessImage, ProcessImageError, SetError, Value,
-    VarInfo,
+    Direction, GlobalMemory, ProcessImage, ProcessImageError, SetError, Value, VarInfo,
 };
 use plc_io::ethercat::{
     BusConfig, BusState, EtherCatBackend, EtherCatError, Options, Transport, devices,
@@ -22,26 +20,10 @@ struct OneInput {
 
 impl GlobalMemory for OneInput {
     type Image = [u8; 1];
-    const VARIABLES: &'static [VarInfo] = &[var_info(VarInfoParts {
-        name: "button",
-        iec_type: IecType::Bool,
-        rust_type: "bool",
-        offset: 0,
-        size: 1,
-        dims: &[],
-        bit: None,
-        link: Some("ethercat.di.input1"),
-        address: None,
-        description: "",
-        initial: None,
-        nonvolatile: false,
-        access: Access::ReadWrite,
-        direction: Direction::Input,
-        ux: false,
-        quantity: None,
-        members: &[],
-        type_name: None,
-    })];
+    const VARIABLES: &'static [VarInfo] =
+        &[plc_core::__private::var::<bool>("button", "bool", 0, 1)
+            .link("ethercat.di.input1")
+            .direction(Direction::Input)];
     const LAYOUT_HASH: u64 = 0;
     fn unpack_bits(&mut self) {}
     fn pack_bits(&mut self) {}

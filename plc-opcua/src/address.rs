@@ -7,6 +7,7 @@ use crate::mapping;
 use opcua::nodes::{ObjectBuilder, VariableBuilder};
 use opcua::server::address_space::AddressSpace;
 use opcua::types::{LocalizedText, NodeId, ObjectId, ObjectTypeId, QualifiedName, VariableTypeId};
+use plc_core::rules::path::{Visit, walk};
 use plc_shm::{LayoutDescriptor, VarDescriptor};
 use std::collections::HashMap;
 use std::time::Duration;
@@ -53,97 +54,48 @@ pub struct Layout {
     objects: Vec<ObjectNode>,
 }
 
-/// How deep a descriptor may nest (it was checked when the segment was attached; this bounds
-/// the walk whatever it holds).
-const MAX_DEPTH: usize = plc_core::rules::capacity::MAX_STRUCT_DEPTH + 1;
-
 impl Layout {
-    /// The layout of `desc` in namespace `ns`.
+    /// The layout of `desc` in namespace `ns`: its nodes from the one walk over the
+    /// declaration (bounded in depth whatever the descriptor holds).
     pub fn new(desc: LayoutDescriptor, ns: u16) -> Layout {
-        let mut layout = Layout {
+        let program = NodeId::new(ns, mapping::PROGRAM_OBJECT_ID);
+        let parent_of = |parent: &Option<String>| {
+            parent
+                .as_deref()
+                .map_or_else(|| program.clone(), |p| mapping::variable_node_id(ns, p))
+        };
+        let (mut by_node, mut order, mut objects) = (HashMap::new(), Vec::new(), Vec::new());
+        walk(&desc.variables, |visit| match visit {
+            Visit::Structure(s) => objects.push(ObjectNode {
+                id: mapping::variable_node_id(ns, &s.path),
+                name: s.name,
+                description: s.node.description.clone(),
+                parent: parent_of(&s.parent),
+            }),
+            Visit::Basic(b) => {
+                let id = mapping::variable_node_id(ns, &b.path);
+                order.push((id.clone(), parent_of(&b.parent)));
+                let var = VarDescriptor {
+                    offset: b.offset,
+                    members: Vec::new(),
+                    ..b.node.clone()
+                };
+                let node = VarNode {
+                    index: b.index,
+                    first_leaf: b.first_leaf,
+                    var,
+                    writable: b.writable,
+                    path: b.path,
+                };
+                by_node.insert(id, node);
+            }
+        });
+        Layout {
             desc,
             ns,
-            by_node: HashMap::new(),
-            order: Vec::new(),
-            objects: Vec::new(),
-        };
-        let program = layout.program_node();
-        let vars = layout.desc.variables.clone();
-        for (index, v) in vars.iter().enumerate() {
-            let writable = v.writable_from_outside();
-            layout.add(v, v.name.clone(), index, 0, v.offset, writable, &program, 0);
-        }
-        layout
-    }
-
-    /// Adds `v` (at `path`, its first leaf `leaf`, at `offset`) under `parent`: a variable
-    /// node, or objects for a structure and its elements and their members below them.
-    #[allow(clippy::too_many_arguments)]
-    fn add(
-        &mut self,
-        v: &VarDescriptor,
-        path: String,
-        index: usize,
-        leaf: usize,
-        offset: usize,
-        writable: bool,
-        parent: &NodeId,
-        depth: usize,
-    ) {
-        let id = mapping::variable_node_id(self.ns, &path);
-        if v.members.is_empty() {
-            let var = VarDescriptor {
-                offset,
-                members: Vec::new(),
-                ..v.clone()
-            };
-            let node = VarNode {
-                index,
-                first_leaf: leaf,
-                var,
-                writable,
-                path,
-            };
-            self.by_node.insert(id.clone(), node);
-            self.order.push((id, parent.clone()));
-            return;
-        }
-        if depth >= MAX_DEPTH {
-            return;
-        }
-        let elements = plc_core::rules::access::elements(&v.dims);
-        let element_size = v.element_size();
-        let per_element = plc_core::rules::path::element_leaves(v);
-        for e in 0..elements {
-            let (at, name) = if v.dims.is_empty() {
-                (path.clone(), v.name.clone())
-            } else {
-                let c = plc_core::rules::path::coordinates(e, &v.dims);
-                (format!("{path}[{c}]"), format!("{}[{c}]", v.name))
-            };
-            let object = mapping::variable_node_id(self.ns, &at);
-            self.objects.push(ObjectNode {
-                id: object.clone(),
-                name,
-                description: v.description.clone(),
-                parent: parent.clone(),
-            });
-            let base = offset + e * element_size;
-            let mut member_leaf = leaf + e * per_element;
-            for m in &v.members {
-                let member_writable = writable && plc_core::rules::path::member_writable(m.access);
-                self.add(
-                    m,
-                    format!("{at}.{}", m.name),
-                    index,
-                    member_leaf,
-                    base + m.offset,
-                    member_writable,
-                    &object,
-                    depth + 1,
-                );
-                member_leaf += plc_core::rules::path::leaves(m);
-            }
+            by_node,
+            order,
+            objects,
         }
     }
 

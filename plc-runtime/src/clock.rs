@@ -2,7 +2,7 @@
 //! and at its end, as plain nanoseconds, and nothing more. The schedule's deadlines, the
 //! program's `Context::now`, the cycle time and the wall-clock time stamped on the published
 //! values are all worked out from those two readings: every clock read costs a cycle
-//! 15-25 ns, about what the rest of its bookkeeping costs together (BENCHMARKS.md, "The
+//! 15-25 ns, about what the rest of its bookkeeping costs together (the repository's BENCHMARKS.md, "The
 //! runtime's cycle"), and integer nanoseconds subtract without `Instant`'s normalising.
 
 #[cfg(feature = "cycle-probe")]

@@ -12,7 +12,7 @@
 //! On x86-64 both copies are one string move of quadwords (`rep movsq`, the width every
 //! process uses), which the processor performs a cache line at a time, at `memcpy`'s speed:
 //! the owner's publish of a 4.5 KB image, once per cycle, takes about 30 ns against about 75 ns
-//! for the loop (BENCHMARKS.md, "The runtime's cycle"), and a tool's snapshot likewise.
+//! for the loop (the repository's BENCHMARKS.md, "The runtime's cycle"), and a tool's snapshot likewise.
 
 use super::layout::Base;
 use std::sync::atomic::{AtomicU8, AtomicU64, Ordering::Relaxed};

@@ -63,7 +63,9 @@ macro_rules! segment_accessors {
 /// Owner-only calls do not exist on a reader.
 ///
 /// The segment is sealed memory that readers map read-only; the owner's socket and lock file
-/// are in its runtime directory (see the crate's README, "Security and failure model").
+/// are in its runtime directory (the crate documentation says who may connect, and how a
+/// killed owner's files are taken over; the repository's README, "Security and failure
+/// model", the whole model).
 ///
 /// ```
 /// use plc_core::GlobalMemory;

@@ -10,6 +10,7 @@ pub mod opcua;
 pub mod set;
 pub mod watch;
 
+use plc_core::rules::path::segments;
 use plc_shm::{DynSegment, PathLocation, PathTarget, VarDescriptor};
 
 /// The error type of the commands: a message for the user.
@@ -58,39 +59,32 @@ pub fn leaves_of(seg: &DynSegment, spec: &str) -> Result<Vec<PathLocation>, Erro
     Ok(out)
 }
 
-/// `name` or `name[element]`, resolved against the segment's descriptor.
+/// `name` or `name[element]` (flat or by coordinates), resolved against the segment's
+/// descriptor by the one path parser.
 pub fn resolve<'a>(
     seg: &'a DynSegment,
     spec: &str,
 ) -> Result<(usize, &'a VarDescriptor, Option<usize>), Error> {
-    let (name, element) = match spec.split_once('[') {
-        Some((n, rest)) => {
-            let e = rest
-                .strip_suffix(']')
-                .and_then(|e| e.trim().parse::<usize>().ok())
-                .ok_or_else(|| format!("`{spec}`: write an element as `name[3]`"))?;
-            (n, Some(e))
-        }
-        None => (spec, None),
+    let parts = segments(spec)
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| format!("`{spec}`: {e}"))?;
+    let [part] = parts.as_slice() else {
+        return Err(format!("`{spec}`: name one variable, or one element as `name[3]`").into());
     };
-    let i = seg.index_of(name).ok_or_else(|| {
+    let i = seg.index_of(part.name).ok_or_else(|| {
         format!(
-            "segment `{}` has no variable `{name}` (`plc list {}` shows them)",
+            "segment `{}` has no variable `{}` (`plc list {}` shows them)",
             seg.name(),
+            part.name,
             seg.name()
         )
     })?;
     let var = &seg.descriptor().variables[i];
-    if let Some(e) = element
-        && e >= var.elements()
-    {
-        return Err(format!(
-            "`{}` has {} elements: {e} is out of range",
-            var.name,
-            var.elements()
-        )
-        .into());
-    }
+    let element = part
+        .index
+        .map(|index| index.flat(&var.dims))
+        .transpose()
+        .map_err(|e| format!("`{spec}`: {e}"))?;
     Ok((i, var, element))
 }
 

@@ -94,7 +94,7 @@ pub fn infos(c: &Container) -> Vec<TokenStream> {
                 let q = &q.value;
                 setters.extend(quote!(.quantity(#q)));
             }
-            quote!(#p::var_info(#p::var::<#ty>(#name, #rust_type, #offset, #size) #setters))
+            quote!(#p::var::<#ty>(#name, #rust_type, #offset, #size) #setters)
         })
         .collect()
 }

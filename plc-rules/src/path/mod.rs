@@ -20,7 +20,11 @@
 use core::fmt;
 
 mod locate;
+#[cfg(feature = "std")]
+mod walk;
 pub use locate::{Found, LocateError, Node, element_leaves, leaf, leaves, locate, member_writable};
+#[cfg(feature = "std")]
+pub use walk::{Basic, Structure, Visit, walk};
 
 /// At most this many coordinates in one index (arrays have at most 3 dimensions).
 pub const MAX_COORDS: usize = 3;

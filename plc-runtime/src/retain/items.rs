@@ -4,6 +4,7 @@
 //! removed or retyped around it, and an array of structures grown or shrunk keeps the elements
 //! it still has.
 
+use plc_core::rules::path::{Visit, walk};
 use plc_core::{IecType, VarInfo};
 
 /// One retained variable or member.
@@ -21,41 +22,22 @@ pub(super) struct Item {
     pub elements: usize,
 }
 
-/// Every retained item of a program's variables, in declaration order.
+/// Every retained item of a program's variables, in declaration order: the nonvolatile basic
+/// values of the one walk over the declaration.
 pub(super) fn items(vars: &'static [VarInfo]) -> Vec<Item> {
     let mut out = Vec::new();
-    for (index, v) in vars.iter().enumerate() {
-        walk(v, v.name.to_string(), index, 0, &mut out);
-    }
-    out
-}
-
-/// The items inside `v` (path `path`, starting at leaf `first` of variable `index`).
-fn walk(v: &'static VarInfo, path: String, index: usize, first: usize, out: &mut Vec<Item>) {
-    if !v.is_structured() {
-        if v.nonvolatile {
+    walk(vars, |visit| {
+        if let Visit::Basic(b) = visit
+            && b.node.nonvolatile
+        {
             out.push(Item {
-                path,
-                iec_type: v.iec_type,
-                index,
-                first_leaf: first,
-                elements: v.elements(),
+                iec_type: b.node.iec_type,
+                index: b.index,
+                first_leaf: b.first_leaf,
+                elements: b.node.elements(),
+                path: b.path,
             });
         }
-        return;
-    }
-    let per_element = plc_rules::path::element_leaves(v);
-    for element in 0..v.elements() {
-        let base = first + element * per_element;
-        let at = if v.dims.is_empty() {
-            path.clone()
-        } else {
-            format!("{path}[{}]", plc_rules::path::coordinates(element, v.dims))
-        };
-        let mut leaf = base;
-        for m in v.members() {
-            walk(m, format!("{at}.{}", m.name), index, leaf, out);
-            leaf += m.leaves();
-        }
-    }
+    });
+    out
 }
