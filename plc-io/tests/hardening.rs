@@ -569,8 +569,11 @@ fn a_lost_final_retain_save_is_an_error_from_run_and_failed_saves_are_in_the_sta
     wait_for(Duration::from_secs(20), || {
         retain_dir.join("p.retain").exists().then_some(())
     });
-    // The directory disappears (a full or failed disk does the same to the saves).
-    std::fs::remove_dir_all(&retain_dir).unwrap();
+    // The directory disappears (a full or failed disk does the same to the saves). A save
+    // running meanwhile can add or rename a file inside it: try again until it is gone.
+    wait_for(Duration::from_secs(20), || {
+        std::fs::remove_dir_all(&retain_dir).ok()
+    });
     let seg = wait_for(Duration::from_secs(20), || DynSegment::attach(&name).ok());
     wait_for(Duration::from_secs(20), || {
         (seg.status().retain_failures > 0).then_some(())

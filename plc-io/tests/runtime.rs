@@ -422,7 +422,10 @@ fn build_refuses_an_unknown_group_naming_it_and_the_fix() {
         what,
         "cannot use group `no-such-group-plc` as the write group"
     );
-    assert!(error.contains("groupadd no-such-group-plc"), "{error}");
+    assert!(
+        error.to_string().contains("groupadd no-such-group-plc"),
+        "{error}"
+    );
     // Nothing was made: no segment to attach to.
     assert!(matches!(
         DynSegment::attach(&name),
@@ -460,4 +463,21 @@ fn runtime_errors_keep_their_causes() {
     assert!(inner.downcast_ref::<std::io::Error>().is_some());
     let shm = RuntimeError::Shm(ShmError::NotFound("press".into()));
     assert!(shm.source().unwrap().downcast_ref::<ShmError>().is_some());
+    // The operating system's error stays whole under a shared-memory error.
+    let os = ShmError::Os {
+        name: "press".into(),
+        what: "cannot listen on /run/plc-vars/press.sock".into(),
+        error: plc_io::shm::Cause::system(std::io::Error::from_raw_os_error(libc::EADDRINUSE)),
+    };
+    let io = os
+        .source()
+        .unwrap()
+        .downcast_ref::<std::io::Error>()
+        .unwrap();
+    assert_eq!(io.raw_os_error(), Some(libc::EADDRINUSE));
+    assert!(
+        os.to_string()
+            .starts_with("segment `press`: cannot listen on"),
+        "{os}"
+    );
 }

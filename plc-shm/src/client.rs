@@ -3,6 +3,7 @@
 //! up when the owner's process ends, however it ends).
 
 use super::ShmError;
+use super::error::Cause;
 use super::mailbox::{Outcome, Ticket};
 use super::protocol::{self, Code, Reply, WriteRequest};
 use super::unix;
@@ -39,7 +40,7 @@ impl Client {
         let os = |what: &str, e: std::io::Error| ShmError::Os {
             name: name.to_string(),
             what: format!("{what} {}", path.display()),
-            error: e.to_string(),
+            error: Cause::system(e),
         };
         let peer = unix::peer(&fd).map_err(|e| os("cannot identify the owner at", e))?;
         if peer.uid != owner {
@@ -57,7 +58,7 @@ impl Client {
             return Err(ShmError::Os {
                 name: name.to_string(),
                 what: format!("no greeting from {}", path.display()),
-                error: format!("the owner did not answer within {GREETING_PATIENCE:?}"),
+                error: format!("the owner did not answer within {GREETING_PATIENCE:?}").into(),
             });
         }
         let mut buf = vec![0u8; protocol::MAX_MESSAGE];
@@ -72,7 +73,7 @@ impl Client {
                     return Err(ShmError::Os {
                         name: name.to_string(),
                         what: format!("connecting to {}", path.display()),
-                        error: reply.reason,
+                        error: reply.reason.into(),
                     });
                 }
                 if got.len == 0 {
@@ -140,7 +141,7 @@ impl Client {
             _ => ShmError::Os {
                 name: self.name.clone(),
                 what: "cannot send a write".into(),
-                error: e.to_string(),
+                error: Cause::system(e),
             },
         })
     }

@@ -4,6 +4,7 @@ use crate::VarDescriptor;
 use plc_core::ValueError;
 use plc_core::write::Refusal;
 use std::fmt;
+use std::sync::Arc;
 
 /// Why a shared-memory operation failed.
 #[derive(Clone, Debug, PartialEq)]
@@ -20,14 +21,15 @@ pub enum ShmError {
         /// Its owner's pid (0 if unknown).
         pid: u64,
     },
-    /// The operating system refused.
+    /// The operating system refused, or what was found stopped the attempt.
     Os {
         /// Segment.
         name: String,
         /// What was attempted.
         what: String,
-        /// The OS error.
-        error: String,
+        /// Why: the operating system's error (the error's [`source`](std::error::Error::source)),
+        /// or what was found.
+        error: Cause,
     },
     /// The segment is not a plc-vars segment of this format version.
     Format {
@@ -340,7 +342,67 @@ impl std::error::Error for ShmError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             ShmError::Value { error, .. } => Some(error),
+            ShmError::Os {
+                error: Cause::System(e),
+                ..
+            } => Some(&**e),
             _ => None,
+        }
+    }
+}
+
+/// Why an [`ShmError::Os`] attempt failed.
+#[derive(Clone, Debug)]
+pub enum Cause {
+    /// The operating system's error, kept whole.
+    System(Arc<std::io::Error>),
+    /// What was found instead of what was needed (a path too long, no such group, no answer).
+    Reason(String),
+}
+
+impl Cause {
+    /// The operating system's error.
+    pub fn system(error: std::io::Error) -> Cause {
+        Cause::System(Arc::new(error))
+    }
+}
+
+impl From<std::io::Error> for Cause {
+    fn from(error: std::io::Error) -> Cause {
+        Cause::system(error)
+    }
+}
+
+impl From<String> for Cause {
+    fn from(reason: String) -> Cause {
+        Cause::Reason(reason)
+    }
+}
+
+impl From<&str> for Cause {
+    fn from(reason: &str) -> Cause {
+        Cause::Reason(reason.to_string())
+    }
+}
+
+/// Equal when they say the same: the same OS error (kind and number), or the same reason.
+impl PartialEq for Cause {
+    fn eq(&self, other: &Cause) -> bool {
+        match (self, other) {
+            (Cause::System(a), Cause::System(b)) => {
+                a.kind() == b.kind() && a.raw_os_error() == b.raw_os_error()
+            }
+            (Cause::Reason(a), Cause::Reason(b)) => a == b,
+            _ => false,
+        }
+    }
+}
+
+impl fmt::Display for Cause {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Cause::System(e) => fmt::Display::fmt(e, f),
+            Cause::Reason(r) => f.write_str(r),
         }
     }
 }

@@ -66,7 +66,7 @@ pub use bus_state::BusState;
 pub use cycle_stats::CycleStats;
 pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use dynamic::DynSegment;
-pub use error::ShmError;
+pub use error::{Cause, ShmError};
 pub use ids::euid;
 pub use io_status::IoStatus;
 pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};

@@ -7,6 +7,7 @@
 //! owner's own uid writes, and so does every member of the write group, if there is one.
 
 use super::ShmError;
+use super::error::Cause;
 use super::unix::Peer;
 use std::ffi::{CStr, CString};
 
@@ -71,7 +72,7 @@ pub struct Group {
 
 /// The id of group `name`, from the system's group database.
 fn resolve(segment: &str, name: &str, role: &str) -> Result<Group, ShmError> {
-    let unknown = |why: String| ShmError::Os {
+    let unknown = |why: Cause| ShmError::Os {
         name: segment.to_string(),
         what: format!("cannot use group `{name}` as the {role} group"),
         error: why,
@@ -92,13 +93,13 @@ fn resolve(segment: &str, name: &str, role: &str) -> Result<Group, ShmError> {
         )
     };
     if r != 0 {
-        return Err(unknown(std::io::Error::from_raw_os_error(r).to_string()));
+        return Err(unknown(Cause::system(std::io::Error::from_raw_os_error(r))));
     }
     if result.is_null() {
-        return Err(unknown(format!(
+        return Err(unknown(Cause::Reason(format!(
             "there is no such group on this machine (`getent group {name}`); create it \
              (`groupadd {name}`) or name another"
-        )));
+        ))));
     }
     Ok(Group {
         name: name.to_string(),

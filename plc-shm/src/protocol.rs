@@ -99,13 +99,95 @@ pub struct Greeting {
     pub may_write: bool,
 }
 
-/// Why a message could not be decoded.
+/// Why a message could not be decoded: what of it was wrong, as the owner answers a tool (and
+/// a tool reports an owner) that does not speak the protocol.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct DecodeError(pub String);
+pub enum DecodeError {
+    /// Longer than [`MAX_MESSAGE`].
+    TooLong {
+        /// Its length, if known (a message cut by the socket's buffer is longer than that).
+        len: Option<usize>,
+    },
+    /// It ends inside a field.
+    Truncated {
+        /// The field.
+        what: &'static str,
+        /// Bytes that were left.
+        left: usize,
+        /// Bytes the field needs.
+        needed: usize,
+    },
+    /// Bytes follow its end.
+    Trailing {
+        /// How many.
+        bytes: usize,
+    },
+    /// A text field that is not UTF-8 (the error is its [`source`](std::error::Error::source)).
+    NotUtf8 {
+        /// The field.
+        what: &'static str,
+        /// Where the valid text ends.
+        error: std::str::Utf8Error,
+    },
+    /// A text holding a NUL character.
+    Nul,
+    /// Not the greeting's magic bytes.
+    NotAGreeting,
+    /// A byte that is none of the values its field may hold (a tag, a kind, a code, a bool).
+    Unknown {
+        /// The field.
+        what: &'static str,
+        /// The byte.
+        byte: u8,
+    },
+    /// A request of no writes or more than [`MAX_WRITES`].
+    WriteCount {
+        /// The count it gives.
+        count: usize,
+    },
+    /// A reply's reason longer than [`MAX_REASON`].
+    ReasonTooLong {
+        /// The length it gives.
+        len: usize,
+    },
+}
 
 impl std::fmt::Display for DecodeError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.0)
+        match self {
+            DecodeError::TooLong { len: Some(len) } => write!(
+                f,
+                "the message is {len} bytes, more than the {MAX_MESSAGE} allowed"
+            ),
+            DecodeError::TooLong { len: None } => write!(
+                f,
+                "the message is longer than the {MAX_MESSAGE} bytes allowed"
+            ),
+            DecodeError::Truncated { what, left, needed } => write!(
+                f,
+                "the message ends inside the {what} ({left} bytes left, {needed} needed)"
+            ),
+            DecodeError::Trailing { bytes } => {
+                write!(f, "{bytes} bytes follow the end of the message")
+            }
+            DecodeError::NotUtf8 { what, error } => write!(f, "the {what} is not UTF-8: {error}"),
+            DecodeError::Nul => f.write_str("a text holds a NUL character"),
+            DecodeError::NotAGreeting => f.write_str("not a plc-vars greeting"),
+            DecodeError::Unknown { what, byte } => write!(f, "{what} {byte}"),
+            DecodeError::WriteCount { count } => {
+                write!(f, "a request holds 1 to {MAX_WRITES} writes, not {count}")
+            }
+            DecodeError::ReasonTooLong { len } => write!(f, "a reason of {len} bytes"),
+        }
+    }
+}
+
+impl std::error::Error for DecodeError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            DecodeError::NotUtf8 { error, .. } => Some(error),
+            _ => None,
+        }
     }
 }
 
@@ -115,56 +197,55 @@ struct Reader<'a> {
 }
 
 impl<'a> Reader<'a> {
-    fn take(&mut self, n: usize, what: &str) -> Result<&'a [u8], DecodeError> {
+    fn take(&mut self, n: usize, what: &'static str) -> Result<&'a [u8], DecodeError> {
         if self.rest.len() < n {
-            return Err(DecodeError(format!(
-                "the message ends inside the {what} ({} bytes left, {n} needed)",
-                self.rest.len()
-            )));
+            return Err(DecodeError::Truncated {
+                what,
+                left: self.rest.len(),
+                needed: n,
+            });
         }
         let (head, rest) = self.rest.split_at(n);
         self.rest = rest;
         Ok(head)
     }
-    fn array<const N: usize>(&mut self, what: &str) -> Result<[u8; N], DecodeError> {
+    fn array<const N: usize>(&mut self, what: &'static str) -> Result<[u8; N], DecodeError> {
         let mut a = [0u8; N];
         a.copy_from_slice(self.take(N, what)?);
         Ok(a)
     }
-    fn u8(&mut self, what: &str) -> Result<u8, DecodeError> {
+    fn u8(&mut self, what: &'static str) -> Result<u8, DecodeError> {
         Ok(self.array::<1>(what)?[0])
     }
-    fn u16(&mut self, what: &str) -> Result<u16, DecodeError> {
+    fn u16(&mut self, what: &'static str) -> Result<u16, DecodeError> {
         Ok(u16::from_le_bytes(self.array(what)?))
     }
-    fn u32(&mut self, what: &str) -> Result<u32, DecodeError> {
+    fn u32(&mut self, what: &'static str) -> Result<u32, DecodeError> {
         Ok(u32::from_le_bytes(self.array(what)?))
     }
-    fn u64(&mut self, what: &str) -> Result<u64, DecodeError> {
+    fn u64(&mut self, what: &'static str) -> Result<u64, DecodeError> {
         Ok(u64::from_le_bytes(self.array(what)?))
     }
-    fn utf8(&mut self, n: usize, what: &str) -> Result<&'a str, DecodeError> {
+    fn utf8(&mut self, n: usize, what: &'static str) -> Result<&'a str, DecodeError> {
         std::str::from_utf8(self.take(n, what)?)
-            .map_err(|e| DecodeError(format!("the {what} is not UTF-8: {e}")))
+            .map_err(|error| DecodeError::NotUtf8 { what, error })
     }
     fn end(&self) -> Result<(), DecodeError> {
         if self.rest.is_empty() {
             Ok(())
         } else {
-            Err(DecodeError(format!(
-                "{} bytes follow the end of the message",
-                self.rest.len()
-            )))
+            Err(DecodeError::Trailing {
+                bytes: self.rest.len(),
+            })
         }
     }
 }
 
 fn start(bytes: &[u8]) -> Result<Reader<'_>, DecodeError> {
     if bytes.len() > MAX_MESSAGE {
-        return Err(DecodeError(format!(
-            "the message is {} bytes, more than the {MAX_MESSAGE} allowed",
-            bytes.len()
-        )));
+        return Err(DecodeError::TooLong {
+            len: Some(bytes.len()),
+        });
     }
     Ok(Reader { rest: bytes })
 }
@@ -181,13 +262,18 @@ pub fn encode_greeting(may_write: bool) -> Vec<u8> {
 pub fn decode_greeting(bytes: &[u8]) -> Result<Greeting, DecodeError> {
     let mut r = start(bytes)?;
     if r.take(4, "greeting")? != GREETING_MAGIC {
-        return Err(DecodeError("not a plc-vars greeting".into()));
+        return Err(DecodeError::NotAGreeting);
     }
     let version = r.u16("version")?;
     let may_write = match r.u8("write permission")? {
         0 => false,
         1 => true,
-        b => return Err(DecodeError(format!("write permission byte {b}"))),
+        byte => {
+            return Err(DecodeError::Unknown {
+                what: "write permission byte",
+                byte,
+            });
+        }
     };
     r.end()?;
     Ok(Greeting { version, may_write })
@@ -237,14 +323,15 @@ pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
     let mut r = start(bytes)?;
     let tag = r.u8("tag")?;
     if tag != TAG_WRITE {
-        return Err(DecodeError(format!("unknown message tag {tag}")));
+        return Err(DecodeError::Unknown {
+            what: "unknown message tag",
+            byte: tag,
+        });
     }
     let id = r.u64("request id")?;
     let count = usize::from(r.u16("write count")?);
     if count == 0 || count > MAX_WRITES {
-        return Err(DecodeError(format!(
-            "a request holds 1 to {MAX_WRITES} writes, not {count}"
-        )));
+        return Err(DecodeError::WriteCount { count });
     }
     // Bounded by MAX_WRITES, whatever the message says.
     let mut writes = Vec::with_capacity(count);
@@ -255,7 +342,12 @@ pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
             0 => match r.u8("bool")? {
                 0 => Value::Bool(false),
                 1 => Value::Bool(true),
-                b => return Err(DecodeError(format!("bool byte {b}"))),
+                byte => {
+                    return Err(DecodeError::Unknown {
+                        what: "bool byte",
+                        byte,
+                    });
+                }
             },
             1 => Value::Int(r.u64("int")? as i64),
             2 => Value::UInt(r.u64("uint")?),
@@ -264,12 +356,17 @@ pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
                 let len = usize::from(r.u8("text length")?);
                 let text = r.utf8(len, "text")?;
                 if text.contains('\0') {
-                    return Err(DecodeError("a text holds a NUL character".into()));
+                    return Err(DecodeError::Nul);
                 }
                 Value::Text(FixedString::from_str_truncate(text))
             }
             5 => Value::Time(plc_core::Time::from_nanos(r.u64("duration")? as i64)),
-            k => return Err(DecodeError(format!("unknown value kind {k}"))),
+            byte => {
+                return Err(DecodeError::Unknown {
+                    what: "unknown value kind",
+                    byte,
+                });
+            }
         };
         writes.push(Write { index, leaf, value });
     }
@@ -298,15 +395,21 @@ pub fn decode_reply(bytes: &[u8]) -> Result<Reply, DecodeError> {
     let mut r = start(bytes)?;
     let tag = r.u8("tag")?;
     if tag != TAG_REPLY {
-        return Err(DecodeError(format!("unknown message tag {tag}")));
+        return Err(DecodeError::Unknown {
+            what: "unknown message tag",
+            byte: tag,
+        });
     }
     let id = r.u64("request id")?;
     let code = r.u8("code")?;
-    let code = Code::from_byte(code).ok_or_else(|| DecodeError(format!("reply code {code}")))?;
+    let code = Code::from_byte(code).ok_or(DecodeError::Unknown {
+        what: "reply code",
+        byte: code,
+    })?;
     let which = r.u16("write number")?;
     let len = usize::from(r.u16("reason length")?);
     if len > MAX_REASON {
-        return Err(DecodeError(format!("a reason of {len} bytes")));
+        return Err(DecodeError::ReasonTooLong { len });
     }
     let reason = r.utf8(len, "reason")?.to_string();
     r.end()?;
@@ -398,10 +501,15 @@ mod tests {
         let mut none = vec![TAG_WRITE];
         none.extend_from_slice(&7u64.to_le_bytes());
         none.extend_from_slice(&0u16.to_le_bytes());
-        assert!(decode_request(&none).unwrap_err().0.contains("not 0"));
+        assert!(decode_request(&none).unwrap_err() == DecodeError::WriteCount { count: 0 });
         let mut many = none.clone();
         many[9..11].copy_from_slice(&u16::MAX.to_le_bytes());
-        assert!(decode_request(&many).unwrap_err().0.contains("not 65535"));
+        assert!(
+            decode_request(&many)
+                .unwrap_err()
+                .to_string()
+                .contains("not 65535")
+        );
     }
 
     #[test]

@@ -19,6 +19,7 @@
 //! whatever its name, once it holds that name's lock (so that owner is gone).
 
 use super::ShmError;
+use super::error::Cause;
 use super::ids::euid;
 use super::policy::Group;
 use std::fs::{File, OpenOptions};
@@ -139,7 +140,7 @@ pub fn open_error(name: &str, path: &Path, what: &str, e: io::Error) -> ShmError
         _ => ShmError::Os {
             name: name.to_string(),
             what: format!("{what} {}", path.display()),
-            error: e.to_string(),
+            error: Cause::system(e),
         },
     }
 }
@@ -253,7 +254,7 @@ pub fn ensure_owner_dir(name: &str, group: Option<&Group>) -> Result<PathBuf, Sh
                     dir.display(),
                     group.name
                 ),
-                error: io::Error::last_os_error().to_string(),
+                error: Cause::system(io::Error::last_os_error()),
             });
         }
     }

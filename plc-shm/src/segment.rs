@@ -3,6 +3,7 @@
 
 use super::ShmError;
 use super::client::Client;
+use super::error::Cause;
 use super::layout::{Base, H_MAGIC, MAGIC_CLOSED};
 use super::memfd::Mapping;
 use super::policy::Policy;
@@ -65,11 +66,11 @@ impl Segment {
             return Err(ShmError::Os {
                 name: name.to_string(),
                 what: format!("cannot make the socket {}", socket.display()),
-                error: format!(
+                error: Cause::Reason(format!(
                     "a Unix socket's path has at most {limit} bytes: choose a shorter segment \
                      name, or a shorter directory ({})",
                     rundir::RUNTIME_DIR_ENV
-                ),
+                )),
             });
         }
         rundir::sweep(&dir, name);
@@ -87,7 +88,7 @@ impl Segment {
             Mapping::create(name, size).map_err(|e| ShmError::Os {
                 name: name.to_string(),
                 what: "cannot create the shared memory".into(),
-                error: e.to_string(),
+                error: Cause::system(e),
             })
         });
         let mapping = match made {
@@ -120,7 +121,7 @@ impl Segment {
         let os = |what: &str, e: std::io::Error| ShmError::Os {
             name: self.name.clone(),
             what: format!("{what} {}", path.display()),
-            error: e.to_string(),
+            error: Cause::system(e),
         };
         let listener = super::unix::listen(&path, 64).map_err(|e| os("cannot listen on", e))?;
         // The directory is ours and closed to others: nobody can have replaced the socket

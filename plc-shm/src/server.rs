@@ -236,10 +236,7 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
         }
         let message = &buf[..got.len.min(buf.len())];
         let request = if got.truncated || got.len > protocol::MAX_MESSAGE {
-            Err(protocol::DecodeError(format!(
-                "the message is longer than the {} bytes allowed",
-                protocol::MAX_MESSAGE
-            )))
+            Err(protocol::DecodeError::TooLong { len: None })
         } else {
             protocol::decode_request(message)
         };

@@ -297,7 +297,8 @@ impl View {
                 error: format!(
                     "a request holds 1 to {} writes",
                     super::protocol::MAX_WRITES
-                ),
+                )
+                .into(),
             });
         }
         self.client()?.post(requests)
