@@ -24,8 +24,8 @@
 //! | StatusCode | Good while the owner runs; UncertainLastUsableValue while it is stalled; BadNoCommunication once it is gone, stopped or faulted |
 //!
 //! Writes are refused with BadNotWritable (input, status, read-only), BadUserAccessDenied
-//! (anonymous session), BadOutOfRange (out of range, NaN or an infinity, text too long) and BadTypeMismatch
-//! (another kind, an array of other dimensions); an array written whole is applied in one
+//! (anonymous session), BadOutOfRange (out of range, NaN or an infinity, text too long) and
+//! BadTypeMismatch (another kind, an array of other dimensions); an array written whole is applied in one
 //! cycle, and so is a part of one written with an index range (`2:4`, `1,0:2`, OPC UA's
 //! NumericRange; BadIndexRangeNoData past its end). Every write is logged with its user and the
 //! old and new value.
