@@ -24,6 +24,23 @@ pub struct Recipe {
     position: f64,
 }
 
+/// An owner of segment `name` on a thread of its own, applying writes and publishing every
+/// 200 µs until its flag is set.
+fn run_owner(name: &str) -> (Arc<AtomicBool>, std::thread::JoinHandle<()>) {
+    let stop = Arc::new(AtomicBool::new(false));
+    let (name, flag) = (name.to_string(), stop.clone());
+    let owner = std::thread::spawn(move || {
+        let mut owner = SharedGlobalMemory::<Recipe>::create(&name).unwrap();
+        let mut gm = Recipe::default();
+        while !flag.load(Ordering::Relaxed) {
+            owner.apply_mailbox(&mut gm);
+            owner.publish(&gm).unwrap();
+            std::thread::sleep(Duration::from_micros(200));
+        }
+    });
+    (stop, owner)
+}
+
 /// A write of `value` to element `leaf` of variable `index`.
 fn w(index: usize, leaf: usize, value: Value) -> Write {
     Write { index, leaf, value }
@@ -32,19 +49,7 @@ fn w(index: usize, leaf: usize, value: Value) -> Write {
 #[test]
 fn an_array_written_whole_is_applied_whole_and_a_batch_with_a_refused_write_not_at_all() {
     let name = unique("write_all");
-    let stop = Arc::new(AtomicBool::new(false));
-    let owner = {
-        let (name, stop) = (name.clone(), stop.clone());
-        std::thread::spawn(move || {
-            let mut owner = SharedGlobalMemory::<Recipe>::create(&name).unwrap();
-            let mut gm = Recipe::default();
-            while !stop.load(Ordering::Relaxed) {
-                owner.apply_mailbox(&mut gm);
-                owner.publish(&gm).unwrap();
-                std::thread::sleep(Duration::from_micros(200));
-            }
-        })
-    };
+    let (stop, owner) = run_owner(&name);
     let seg = wait_for(Duration::from_secs(10), || DynSegment::attach(&name).ok());
     for round in 1..=50i64 {
         let batch: Vec<Write> = (0..8).map(|e| w(0, e, Value::Int(round))).collect();
@@ -80,19 +85,7 @@ fn an_array_written_whole_is_applied_whole_and_a_batch_with_a_refused_write_not_
 #[test]
 fn nan_and_infinities_are_refused_with_one_message_by_the_tool_and_by_the_owner() {
     let name = unique("write_nan");
-    let stop = Arc::new(AtomicBool::new(false));
-    let owner = {
-        let (name, stop) = (name.clone(), stop.clone());
-        std::thread::spawn(move || {
-            let mut owner = SharedGlobalMemory::<Recipe>::create(&name).unwrap();
-            let mut gm = Recipe::default();
-            while !stop.load(Ordering::Relaxed) {
-                owner.apply_mailbox(&mut gm);
-                owner.publish(&gm).unwrap();
-                std::thread::sleep(Duration::from_micros(200));
-            }
-        })
-    };
+    let (stop, owner) = run_owner(&name);
     let seg = wait_for(Duration::from_secs(10), || DynSegment::attach(&name).ok());
     for (index, ty) in [(2, "REAL"), (3, "LREAL")] {
         let label = if index == 2 { "speed" } else { "position" };

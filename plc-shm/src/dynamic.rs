@@ -127,8 +127,7 @@ impl DynSegment {
 
     /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        let checked = self.view.check_element(name, element, value)?;
-        self.view.send_and_wait(&[checked])
+        self.view.write_element(name, element, value)
     }
 
     /// Writes several basic values as one request: checked whole before anything is sent,

@@ -396,8 +396,7 @@ impl<T: GlobalMemory> ShmReader<T> {
 
     /// Writes one array element, as [`write`](Self::write) does.
     pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
-        let checked = self.view.check_element(name, element, value)?;
-        self.view.send_and_wait(&[checked])
+        self.view.write_element(name, element, value)
     }
 }
 

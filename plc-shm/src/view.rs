@@ -283,6 +283,13 @@ impl View {
         })
     }
 
+    /// Checks one write to variable `name` as the owner will, sends it and waits for the
+    /// owner's answer.
+    pub fn write_element(&self, name: &str, element: usize, value: Value) -> Result<(), ShmError> {
+        let checked = self.check_element(name, element, value)?;
+        self.send_and_wait(&[checked])
+    }
+
     fn check_each(&self, writes: &[Write]) -> Result<Vec<Checked>, ShmError> {
         writes.iter().map(|&w| self.check_write(w)).collect()
     }
