@@ -1,0 +1,240 @@
+//! The message of each [`Issue`]: the rule broken and the fix, in one wording per rule.
+
+use super::Issue;
+use super::kind::{Expected, IssueKind};
+use super::wording::Wording;
+use crate::IecType;
+use crate::address::Size;
+use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY};
+use std::format;
+use std::string::{String, ToString};
+
+impl<L> Issue<L> {
+    /// The message: the rule broken and what to do, in the front end's quoting.
+    pub fn message(&self, w: &impl Wording<L>) -> String {
+        let q = |n: &str| w.name(n);
+        let place = self
+            .related
+            .as_ref()
+            .map_or_else(String::new, |r| w.place(r));
+        match &self.kind {
+            IssueKind::BadName { name, error } => {
+                format!("invalid variable name {}: {error}", q(name))
+            }
+            IssueKind::DuplicateName { name, first } => format!(
+                "declared twice: {} is already used by {}{place}, and names are \
+                 case-insensitive; rename one",
+                q(name),
+                q(first)
+            ),
+            IssueKind::BadCapacity { text } => {
+                format!("{text} is not a capacity of 1..={MAX_STRING_CAPACITY} bytes")
+            }
+            IssueKind::DimensionCount { count } => {
+                format!("{count} dimensions given: an array has 1 to {MAX_ARRAY_DIMS} dimensions")
+            }
+            IssueKind::TooManyItems { items } => format!(
+                "an array holds at most {MAX_ARRAY_ITEMS} items in all dimensions, this one \
+                 holds {}",
+                items.map_or_else(|| "more than 2^64".to_string(), |n| n.to_string())
+            ),
+            IssueKind::EmptyDimension => {
+                "an array needs at least one item in each dimension".to_string()
+            }
+            IssueKind::IecTypeMismatch {
+                var,
+                declared,
+                ty,
+                fits,
+            } => format!(
+                "`iec_type = \"{declared}\"` does not fit {} ({ty}): {declared} is stored as {}; \
+                 use {fits}, or change the type to {}",
+                q(var),
+                declared.rust_name(),
+                declared.rust_name()
+            ),
+            IssueKind::BadLink { link, error } => format!("invalid link {link:?}: {error}"),
+            IssueKind::BadAddress { error } => format!("invalid address {error}"),
+            IssueKind::AddressInMemoryArea { at } => format!(
+                "{at:?} is in the M area: `at` locates I/O channels, so use %I (input) or %Q \
+                 (output); internal variables need no address"
+            ),
+            IssueKind::AddressNotScalar { string } => format!(
+                "{} cannot be located: `at` locates one I/O channel of a basic type (only \
+                 internal variables have dimensions, and there are no string channels); remove \
+                 `at`",
+                if *string { "a STRING" } else { "an array" }
+            ),
+            IssueKind::AddressWidth {
+                at,
+                size,
+                iec,
+                suggestion,
+            } => format!(
+                "{at:?} is {} but a {iec} has {}: write \"{suggestion}\"",
+                bits_text(size.bits()),
+                if *iec == IecType::Bool { 1 } else { iec.bits() }
+            ),
+            IssueKind::Misaligned { at, size } => format!(
+                "{at:?} is not aligned: a {} starts at a multiple of {} bytes; move it{}",
+                size_name(*size),
+                size.bytes(),
+                w.allow_unaligned()
+            ),
+            IssueKind::AddressOverlap {
+                at,
+                other_at,
+                other,
+            } => format!(
+                "{at} overlaps {other_at} of {}{place}: each channel has its own bits",
+                q(other)
+            ),
+            IssueKind::UnknownDirection { text } => format!(
+                "unknown direction {text:?}: use \"input\", \"output\", \"command\", \"status\" \
+                 or \"internal\""
+            ),
+            IssueKind::DirectionContradictsAddress {
+                given,
+                at,
+                var,
+                implied,
+            } => format!(
+                "{:?} contradicts `at` {at:?}, which makes {} an {implied}: remove `direction` \
+                 or change the address",
+                given.name(),
+                q(var)
+            ),
+            IssueKind::DirectionContradictsSource {
+                given,
+                source,
+                source_direction,
+            } => format!(
+                "{:?} contradicts the source {}, which is {source_direction}: a bit-mapped bool \
+                 takes its source's direction; remove `direction`",
+                given.name(),
+                q(source)
+            ),
+            IssueKind::IoInStructure { key } => format!(
+                "`{key}` cannot be given inside a structure: physical I/O is declared at the top \
+                 level, with a basic type; link a top-level variable and copy it into the member"
+            ),
+            IssueKind::DirectionInStructure { given } => format!(
+                "`{given}` is no direction inside a structure: a member is an IN parameter \
+                 (`direction = \"input\"`), an OUT parameter (`\"output\"`) or, without a \
+                 direction, internal"
+            ),
+            IssueKind::SourceWithoutBit => "needs `bit`, the bit of the source word (0 = least \
+                                            significant) that this bool maps to"
+                .to_string(),
+            IssueKind::BitWithoutSource => {
+                "needs `source`, the integer variable that holds the bit".to_string()
+            }
+            IssueKind::BadBit { text } => {
+                format!("{text} is not a bit number 0..=63 (0 = least significant)")
+            }
+            IssueKind::MappedNotBool {
+                var,
+                bit,
+                source,
+                ty,
+            } => format!(
+                "{} is mapped to bit {bit} of {}, so it must be bool, not {ty}",
+                q(var),
+                q(source)
+            ),
+            IssueKind::SourceIsSelf { var } => format!(
+                "{} cannot be its own source: name the integer variable that holds the bit",
+                q(var)
+            ),
+            IssueKind::SourceUnknown { source, hint } => format!(
+                "{} names no variable{}: name the integer variable that holds the bit",
+                q(source),
+                hint.as_ref()
+                    .map_or_else(String::new, |h| format!(" (did you mean {}?)", q(h)))
+            ),
+            IssueKind::SourceNotInteger { source, ty } => format!(
+                "the source {} is {ty}, but a source must be an integer: u8, u16, u32, u64, i8, \
+                 i16, i32 or i64",
+                q(source)
+            ),
+            IssueKind::BitOutOfRange {
+                bit,
+                source,
+                ty,
+                width,
+            } => format!(
+                "{bit} is out of range for source {} ({ty} has bits 0..={})",
+                q(source),
+                width.saturating_sub(1)
+            ),
+            IssueKind::BitTaken { bit, source, first } => format!(
+                "bit {bit} of {} is already mapped to {}{place}: two bools cannot share a bit",
+                q(source),
+                q(first)
+            ),
+            IssueKind::InitialWrongKind {
+                text,
+                iec,
+                expected,
+            } => match expected {
+                Expected::Bool => {
+                    format!("{text} is not a {iec} value: `initial` must be `true` or `false`")
+                }
+                Expected::WholeNumber => {
+                    format!("{text} is not a {iec} value: `initial` must be a whole number")
+                }
+                Expected::NotReal => format!(
+                    "{text} is not a whole number, which a {iec} needs (real to integer is \
+                     never implicit)"
+                ),
+                Expected::Number => {
+                    format!("{text} is not a {iec} value: `initial` must be a number")
+                }
+                Expected::Text => format!(
+                    "{text} is not a {iec} value: `initial` must be text in double quotes, such \
+                     as \"TEST-001\""
+                ),
+                Expected::Duration => format!(
+                    "{text} is not a {iec} value: `initial` must be a duration literal in double \
+                     quotes, such as \"T#5s\" or \"T#1m30s\""
+                ),
+            },
+            IssueKind::InitialBadTime { text, error } => {
+                format!("{text} is not a duration literal: {error}")
+            }
+            IssueKind::InitialOutOfRange {
+                text,
+                iec,
+                ty,
+                range,
+            } => format!("{text} is out of range for {iec} ({ty} holds {range})"),
+            IssueKind::InitialTooLong { len, capacity } => format!(
+                "{len} bytes do not fit max_length {capacity} (a FixedString<{capacity}>): \
+                 shorten the text or raise the capacity"
+            ),
+            IssueKind::SharedLink { link, first } => format!(
+                "{link:?} is also linked by {}: fine for an input; two variables writing one \
+                 output entry are refused when the bus starts",
+                q(first)
+            ),
+        }
+    }
+}
+
+fn bits_text(bits: u32) -> String {
+    if bits == 1 {
+        "1 bit".to_string()
+    } else {
+        format!("{bits} bits")
+    }
+}
+
+fn size_name(s: Size) -> &'static str {
+    match s {
+        Size::Bit => "bit",
+        Size::Byte => "byte",
+        Size::Word => "word",
+        Size::DoubleWord => "double word",
+        Size::LongWord => "long word",
+    }
+}
