@@ -5,7 +5,8 @@
 //! the derive, a variable and field in the importer), calls [`check`], and words each
 //! [`Issue`] with [`Issue::message`], choosing only how names are quoted and how another place
 //! is named ([`Wording`]). So a rule is written once, and a Rust struct and the same variables
-//! as JSON get the same errors in the same words. `docs/rules.md` lists every rule.
+//! as JSON get the same errors in the same words. The repository's `docs/rules.md` lists
+//! every rule.
 //!
 //! ```
 //! use plc_rules::decl::{self, Decl, KnownType, Located, Var, Wording};

@@ -26,11 +26,12 @@ macro_rules! issue_kinds {
         }
 
         /// The name of every [`IssueKind`], as [`IssueKind::name`] gives it: the rules of
-        /// `docs/rules.md`, one each.
+        /// the repository's `docs/rules.md`, one each.
         pub const KIND_NAMES: &[&str] = &[$(stringify!($kind)),*];
 
         impl IssueKind {
-            /// The variant's name (`"BitOutOfRange"`), as `docs/rules.md` and tests name the rule.
+            /// The variant's name (`"BitOutOfRange"`), as the repository's `docs/rules.md` and
+            /// tests name it.
             pub fn name(&self) -> &'static str {
                 match self {
                     $(IssueKind::$kind { .. } => stringify!($kind),)*

@@ -1,5 +1,5 @@
 //! Every problem the checker finds, as a typed value, and its one wording. Each message states
-//! the rule and the fix; `docs/rules.md` lists them with examples.
+//! the rule and the fix; the repository's `docs/rules.md` lists them with examples.
 //!
 //! Here is [`Issue`], one problem found; its kinds ([`IssueKind`], the rules and their names)
 //! are in `kind`, the message texts in `message`, and what a front end chooses ([`Wording`])
