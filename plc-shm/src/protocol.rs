@@ -145,7 +145,7 @@ pub enum DecodeError {
         /// The count it gives.
         count: usize,
     },
-    /// A reply's reason longer than [`MAX_REASON`].
+    /// A reply's reason longer than the protocol carries (1,024 bytes).
     ReasonTooLong {
         /// The length it gives.
         len: usize,
