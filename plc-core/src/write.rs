@@ -95,8 +95,8 @@ pub enum Refusal<'a, N> {
     NotWritable {
         /// The variable.
         var: &'a N,
-        /// The member, for a value inside a structure.
-        member: Option<&'a N>,
+        /// The basic value asked for (a value inside a structure is named by its path).
+        leaf: usize,
         /// Why, as [`not_writable_reason`] says it.
         reason: &'static str,
     },
@@ -113,40 +113,81 @@ pub enum Refusal<'a, N> {
     Value {
         /// The variable.
         var: &'a N,
-        /// The member, for a value inside a structure.
-        member: Option<&'a N>,
+        /// The basic value asked for (a value inside a structure is named by its path).
+        leaf: usize,
         /// What is wrong.
         error: ValueError,
     },
 }
 
 impl<N: Node> Refusal<'_, N> {
-    /// The variable, or `variable.member`, as messages name it (empty for
-    /// [`NoVariable`](Refusal::NoVariable)).
+    /// What messages name: the variable, or for a value inside a structure its path
+    /// (`axes[1].pos`), as `plc get` takes it (empty for [`NoVariable`](Refusal::NoVariable)).
     pub fn label(&self) -> Label<'_, N> {
-        match self {
-            Refusal::NoVariable { .. } => Label(None, None),
-            Refusal::NoElement { var, .. } => Label(Some(*var), None),
-            Refusal::NotWritable { var, member, .. } | Refusal::Value { var, member, .. } => {
-                Label(Some(*var), *member)
-            }
+        match *self {
+            Refusal::NoVariable { .. } => Label { var: None, leaf: 0 },
+            Refusal::NoElement { var, .. } => Label {
+                var: Some(var),
+                leaf: 0,
+            },
+            Refusal::NotWritable { var, leaf, .. } | Refusal::Value { var, leaf, .. } => Label {
+                var: Some(var),
+                leaf,
+            },
         }
     }
 }
 
-/// A variable's name, or `variable.member`, shown without allocating.
-pub struct Label<'a, N>(Option<&'a N>, Option<&'a N>);
+/// A variable's name, or the path of a value inside a structure, shown without allocating.
+pub struct Label<'a, N> {
+    var: Option<&'a N>,
+    leaf: usize,
+}
 
 impl<N: Node> fmt::Display for Label<'_, N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(var) = self.0 {
-            f.write_str(var.name())?;
-        }
-        if let Some(member) = self.1 {
+        let Some(var) = self.var else { return Ok(()) };
+        f.write_str(var.name())?;
+        // Down the structures to the leaf: each level's element (of an array of structures)
+        // and the member holding it. A basic variable is named alone, its element apart.
+        let (mut node, mut leaf) = (var, self.leaf);
+        while !node.members().is_empty() {
+            let per_element = path::element_leaves(node).max(1);
+            if !node.dims().is_empty() {
+                f.write_str("[")?;
+                write_coordinates(f, leaf / per_element, node.dims())?;
+                f.write_str("]")?;
+            }
+            leaf %= per_element;
+            let mut inside = None;
+            for m in node.members() {
+                let n = path::leaves(m);
+                if leaf < n {
+                    inside = Some(m);
+                    break;
+                }
+                leaf -= n;
+            }
+            let Some(member) = inside else { break };
             write!(f, ".{}", member.name())?;
+            node = member;
         }
         Ok(())
     }
+}
+
+/// Row-major element `flat` of an array of `dims` as a path writes it (`1,2`).
+fn write_coordinates(f: &mut fmt::Formatter<'_>, flat: usize, dims: &[usize]) -> fmt::Result {
+    let mut stride: usize = dims.iter().product();
+    for (i, &d) in dims.iter().enumerate() {
+        stride /= d.max(1);
+        let c = (flat / stride.max(1)) % d.max(1);
+        if i > 0 {
+            f.write_str(",")?;
+        }
+        write!(f, "{c}")?;
+    }
+    Ok(())
 }
 
 impl<N: Node> fmt::Display for Refusal<'_, N> {
@@ -195,7 +236,7 @@ pub fn check<N: Target>(vars: &[N], write: Write) -> Result<Checked, Refusal<'_,
     if !writable_from_outside(var.access(), var.direction()) {
         return Err(Refusal::NotWritable {
             var,
-            member: None,
+            leaf: write.leaf,
             reason: not_writable_reason(var.access() == Access::ReadOnly, var.direction()),
         });
     }
@@ -207,19 +248,19 @@ pub fn check<N: Target>(vars: &[N], write: Write) -> Result<Checked, Refusal<'_,
         });
     };
     // A value inside a structure is its member's, with the member's own access and type.
-    let (leaf, member) = if var.members().is_empty() {
-        (var, None)
-    } else {
-        (found.node, Some(found.node))
-    };
+    let leaf = found.node;
     if !found.writable {
         return Err(Refusal::NotWritable {
             var,
-            member,
+            leaf: write.leaf,
             reason: not_writable_reason(true, leaf.direction()),
         });
     }
-    let refuse = |error| Refusal::Value { var, member, error };
+    let refuse = |error| Refusal::Value {
+        var,
+        leaf: write.leaf,
+        error,
+    };
     let value = write
         .value
         .fit(leaf.iec_type(), leaf.string_capacity())

@@ -23,6 +23,7 @@ struct Gm {
     #[plc(direction = "status")]
     state: u16,
     label: FixedString<4>,
+    grid: [[Axis; 2]; 3],
 }
 
 fn w(index: usize, leaf: usize, value: Value) -> Write {
@@ -51,7 +52,7 @@ fn accepted_writes_come_back_fitted_to_their_type() {
 fn each_refusal_names_the_variable_and_the_reason() {
     assert_eq!(
         refused(w(9, 0, Value::Int(1))),
-        "there is no variable number 9: the program has 6"
+        "there is no variable number 9: the program has 7"
     );
     assert_eq!(
         refused(w(3, 0, Value::Int(1))),
@@ -67,7 +68,16 @@ fn each_refusal_names_the_variable_and_the_reason() {
     );
     assert_eq!(
         refused(w(2, 1, Value::Real(1.0))),
-        "`axes.actual` cannot be written: it is read-only"
+        "`axes[0].actual` cannot be written: it is read-only"
+    );
+    assert_eq!(
+        refused(w(2, 3, Value::Real(1.0))),
+        "`axes[1].actual` cannot be written: it is read-only"
+    );
+    // grid[2,1] is element 5 of the 3x2 array: its `actual` is leaf 5 * 2 + 1.
+    assert_eq!(
+        refused(w(6, 11, Value::Real(1.0))),
+        "`grid[2,1].actual` cannot be written: it is read-only"
     );
     assert_eq!(
         refused(w(1, 0, Value::Int(256))),
@@ -99,7 +109,7 @@ fn nan_and_infinities_are_refused_for_real_and_lreal_alike() {
         );
         assert_eq!(
             refused(w(2, 0, Value::Real(bad))),
-            "`axes.target`: not a finite number: LREAL takes no NaN or infinity from a tool"
+            "`axes[0].target`: not a finite number: LREAL takes no NaN or infinity from a tool"
         );
     }
     // The largest finite numbers are numbers.
