@@ -144,6 +144,27 @@ pub struct Label<'a, N> {
     leaf: usize,
 }
 
+/// The name of basic value `leaf` of variable `index` as messages and logs give it: the
+/// variable's name, or the path of a value inside a structure (`axes[1].pos`); an array's
+/// element is not named (empty if there is no such variable).
+///
+/// ```
+/// use plc_core::{GlobalMemory, write::label};
+///
+/// #[derive(GlobalMemory, Debug, Clone)]
+/// struct Gm {
+///     lamp: bool,
+/// }
+///
+/// assert_eq!(label(Gm::VARIABLES, 0, 0).to_string(), "lamp");
+/// ```
+pub fn label<N: Node>(vars: &[N], index: usize, leaf: usize) -> Label<'_, N> {
+    Label {
+        var: vars.get(index),
+        leaf,
+    }
+}
+
 impl<N: Node> fmt::Display for Label<'_, N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let Some(var) = self.var else { return Ok(()) };
@@ -227,13 +248,44 @@ pub fn not_writable_reason(read_only: bool, direction: Direction) -> &'static st
 /// Checks `write` against the variables `vars`: the write as it will be applied (its value
 /// fitted to the type), or why not.
 pub fn check<N: Target>(vars: &[N], write: Write) -> Result<Checked, Refusal<'_, N>> {
+    check_with(vars, write, true)
+}
+
+/// Checks a force (`plc force`): as [`check`], except that any basic value may be forced,
+/// inputs, status and read-only values included, as TwinCAT and CODESYS force: the variable
+/// and leaf exist and the value fits (finite for REAL and LREAL). Who may force is the write
+/// policy's to decide.
+///
+/// ```
+/// use plc_core::write::{check, check_force, Write};
+/// use plc_core::{GlobalMemory, Value};
+///
+/// #[derive(GlobalMemory, Debug, Clone)]
+/// struct Gm {
+///     #[plc(direction = "input")]
+///     door_closed: bool,
+/// }
+///
+/// let force = Write { index: 0, leaf: 0, value: Value::Bool(true) };
+/// assert!(check(Gm::VARIABLES, force).is_err());
+/// assert_eq!(check_force(Gm::VARIABLES, force).unwrap().write().value, Value::Bool(true));
+/// ```
+pub fn check_force<N: Target>(vars: &[N], write: Write) -> Result<Checked, Refusal<'_, N>> {
+    check_with(vars, write, false)
+}
+
+fn check_with<N: Target>(
+    vars: &[N],
+    write: Write,
+    from_outside: bool,
+) -> Result<Checked, Refusal<'_, N>> {
     let Some(var) = vars.get(write.index) else {
         return Err(Refusal::NoVariable {
             index: write.index,
             count: vars.len(),
         });
     };
-    if !writable_from_outside(var.access(), var.direction()) {
+    if from_outside && !writable_from_outside(var.access(), var.direction()) {
         return Err(Refusal::NotWritable {
             var,
             leaf: write.leaf,
@@ -249,7 +301,7 @@ pub fn check<N: Target>(vars: &[N], write: Write) -> Result<Checked, Refusal<'_,
     };
     // A value inside a structure is its member's, with the member's own access and type.
     let leaf = found.node;
-    if !found.writable {
+    if from_outside && !found.writable {
         return Err(Refusal::NotWritable {
             var,
             leaf: write.leaf,

@@ -132,8 +132,8 @@ where
         Ok(())
     }
 
-    /// One cycle, started at `start`: exchange, unpack bits, writes from outside, tick, pack
-    /// bits, publish, retain, report. Returns when its work ended (before the report). Both
+    /// One cycle, started at `start`: exchange, unpack bits, writes from outside, forces, tick,
+    /// forces again, pack bits, publish, trace, retain, report. Returns when its work ended (before the report). Both
     /// times are CLOCK_MONOTONIC nanoseconds; the cycle reads the clock once, at its end.
     fn once(
         &mut self,
@@ -147,9 +147,10 @@ where
         let exchange_start = probing.then(Instant::now);
         let ctx = &mut self.ctx;
         ctx.cycle += 1;
+        let since_start = self.clock.since_start(start);
         // Beyond LTIME only after 292 years of running.
         ctx.set_now(Time::from_nanos(
-            i64::try_from(self.clock.since_start(start)).unwrap_or(i64::MAX),
+            i64::try_from(since_start).unwrap_or(i64::MAX),
         ));
         let io = backend.exchange(&mut ctx.gm);
         #[cfg(feature = "cycle-probe")]
@@ -164,8 +165,11 @@ where
         #[cfg(feature = "cycle-probe")]
         let mut tick_times = None;
         let step = catch_unwind(AssertUnwindSafe(|| {
+            // Forces after the writes: a forced value is what the program reads, whatever
+            // the bus or a tool gave it.
             if let Some(shm) = shm.as_mut() {
                 shm.apply_mailbox(&mut ctx.gm);
+                shm.apply_forces(&mut ctx.gm);
             }
             #[cfg(feature = "cycle-probe")]
             let tick_start = probing.then(Instant::now);
@@ -174,6 +178,11 @@ where
             if let Some(t) = tick_start {
                 tick_times = Some((t, Instant::now()));
             }
+            // And again before the outputs are packed: the bus and the tools get the forced
+            // value, whatever the program wrote.
+            if let Some(shm) = shm.as_ref() {
+                shm.apply_forces(&mut ctx.gm);
+            }
         }));
         if let Err(panic) = step {
             return Err(self.fault(backend, panic));
@@ -181,6 +190,9 @@ where
         ctx.gm.pack_bits();
         ctx.gm.store_image(&mut self.image.0);
         self.publish_image(start);
+        if let Some(shm) = &self.shm {
+            shm.record_traces(&self.image.0, self.ctx.cycle, since_start);
+        }
         if let Some(writer) = &self.retain
             && self.retained.changed(&self.image.0)
         {

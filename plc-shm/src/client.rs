@@ -25,6 +25,8 @@ pub(crate) struct Client {
     next_id: Cell<u64>,
     /// Requests sent, and their answers once received.
     sent: RefCell<HashMap<u64, Option<Reply>>>,
+    /// Memory files that came with answers (a trace's ring), by request.
+    files: RefCell<HashMap<u64, OwnedFd>>,
 }
 
 impl Client {
@@ -104,6 +106,7 @@ impl Client {
                 may_write: greeting.may_write,
                 next_id: Cell::new(1),
                 sent: RefCell::new(HashMap::new()),
+                files: RefCell::new(HashMap::new()),
             },
             memfd,
         ))
@@ -121,15 +124,26 @@ impl Client {
 
     /// Sends checked writes as one request.
     pub fn post(&self, writes: &[Checked]) -> Result<Ticket, ShmError> {
+        self.post_with(|id| {
+            protocol::encode_request(&WriteRequest {
+                id,
+                writes: writes.iter().map(|w| *w.write()).collect(),
+            })
+        })
+    }
+
+    /// Sends the message `encode` makes for the next request id.
+    pub fn post_with(&self, encode: impl FnOnce(u64) -> Vec<u8>) -> Result<Ticket, ShmError> {
         let id = self.next_id.get();
         self.next_id.set(id.wrapping_add(1));
-        let request = WriteRequest {
-            id,
-            writes: writes.iter().map(|w| *w.write()).collect(),
-        };
-        self.send_raw(&protocol::encode_request(&request))?;
+        self.send_raw(&encode(id))?;
         self.sent.borrow_mut().insert(id, None);
         Ok(Ticket(id))
+    }
+
+    /// The memory file that came with the answer to `ticket`, if one did.
+    pub fn take_file(&self, ticket: Ticket) -> Option<OwnedFd> {
+        self.files.borrow_mut().remove(&ticket.0)
     }
 
     /// Sends `bytes` as one message, whatever they are.
@@ -161,6 +175,10 @@ impl Client {
             if let Ok(reply) = protocol::decode_reply(&buf[..got.len])
                 && let Some(slot) = self.sent.borrow_mut().get_mut(&reply.id)
             {
+                // Kept only for a request still waiting: at most one per request sent.
+                if let Some(fd) = got.fd {
+                    self.files.borrow_mut().insert(reply.id, fd);
+                }
                 *slot = Some(reply);
             }
         }
@@ -230,6 +248,11 @@ pub(crate) fn answer_result(
     Err(match reply.code {
         Code::Applied => return Ok(()),
         Code::Rejected => ShmError::WriteRejected {
+            name: name.to_string(),
+            variable: variable(),
+            reason: reply.reason,
+        },
+        Code::Forced => ShmError::Forced {
             name: name.to_string(),
             variable: variable(),
             reason: reply.reason,

@@ -20,7 +20,7 @@ use plc_core::write::{Checked, Write};
 /// # Ok::<(), plc_shm::ShmError>(())
 /// ```
 pub struct DynSegment {
-    view: View,
+    pub(crate) view: View,
 }
 
 impl DynSegment {

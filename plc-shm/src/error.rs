@@ -150,6 +150,16 @@ pub enum ShmError {
         /// The program's reason.
         reason: String,
     },
+    /// The program refused a write to a value that is forced (`plc force`): the reason names
+    /// who forced it and since when. Nothing of the request was applied.
+    Forced {
+        /// Segment.
+        name: String,
+        /// The forced value of the refused write.
+        variable: String,
+        /// The program's reason.
+        reason: String,
+    },
     /// The program's policy does not let this process write.
     WriteRefused {
         /// Segment.
@@ -310,6 +320,11 @@ impl fmt::Display for ShmError {
                 f,
                 "segment `{name}`: refusing {}: it {problem}; {fix}",
                 path.display()
+            ),
+            ShmError::Forced { name, reason, .. } => write!(
+                f,
+                "segment `{name}`: the program refused the write: {reason}; nothing of the \
+                 request was written"
             ),
             ShmError::WriteRejected {
                 name,

@@ -9,6 +9,8 @@
 //! 192   image    T::Image, padded to 8 bytes
 //! ...   writes   counters of writes from outside: refused by the policy, malformed,
 //!                not taken (too many waiting), waiting now         (4 x u64)
+//! ...   forces   sequence (odd while the owner changes them), count, then per force:
+//!                variable index, leaf, uid, since (UTC ns)         (2 + 256 x 4 x u64)
 //! ...   descriptor, JSON
 //! ```
 //! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
@@ -54,6 +56,12 @@ pub const IMAGE: usize = 192;
 
 /// Bytes of the write counters after the image.
 const WRITES: usize = 32;
+/// Forces held at once, at most.
+pub const MAX_FORCES: usize = 256;
+/// Words of one force in the table.
+pub const FORCE_WORDS: usize = 4;
+/// Bytes of the table of forces after the write counters.
+const FORCES: usize = 8 * (2 + MAX_FORCES * FORCE_WORDS);
 
 pub const fn pad8(n: usize) -> usize {
     n.div_ceil(8) * 8
@@ -64,6 +72,7 @@ pub const fn pad8(n: usize) -> usize {
 pub struct Offsets {
     pub image_size: usize,
     pub writes: usize,
+    pub forces: usize,
     pub descriptor: usize,
 }
 
@@ -73,7 +82,7 @@ impl Offsets {
     pub const fn checked(image_size: usize) -> Option<Self> {
         // `new` adds a fixed amount to the padded image size: check that sum first.
         match image_size.checked_next_multiple_of(8) {
-            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES) => Some(Self::new(image_size)),
+            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES) => Some(Self::new(image_size)),
             _ => None,
         }
     }
@@ -84,7 +93,8 @@ impl Offsets {
         Offsets {
             image_size,
             writes,
-            descriptor: writes + WRITES,
+            forces: writes + WRITES,
+            descriptor: writes + WRITES + FORCES,
         }
     }
 
@@ -99,6 +109,18 @@ impl Offsets {
     }
     pub const fn w_pending(&self) -> usize {
         self.writes + 24
+    }
+    /// The forces table's sequence word.
+    pub const fn f_seq(&self) -> usize {
+        self.forces
+    }
+    /// How many forces are held.
+    pub const fn f_count(&self) -> usize {
+        self.forces + 8
+    }
+    /// Word `word` of force `n`.
+    pub const fn f_entry(&self, n: usize, word: usize) -> usize {
+        self.forces + 16 + 8 * (n * FORCE_WORDS + word)
     }
 }
 

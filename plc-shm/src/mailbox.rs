@@ -7,8 +7,11 @@
 //! value kind and range. The cycle thread only calls the program's `set`, undoing a request's
 //! earlier writes if `set` refuses a later one.
 
+use super::forces::ForceTable;
 use super::layout::{Base, Offsets, S_MB_APPLIED, S_MB_REJECTED};
 use super::protocol::{self, Code, Reply};
+use super::status::utc_ns;
+use super::trace::Recording;
 use plc_core::write::{self, Checked, Write};
 use plc_core::{GlobalMemory, SetError, Value, VarInfo};
 use std::cell::RefCell;
@@ -45,7 +48,7 @@ impl Outcome {
     pub(crate) fn of(code: Code) -> Outcome {
         match code {
             Code::Applied => Outcome::Applied,
-            Code::Rejected => Outcome::Rejected,
+            Code::Rejected | Code::Forced => Outcome::Rejected,
             Code::Refused => Outcome::Refused,
             Code::Malformed | Code::Busy | Code::Stopped => Outcome::Discarded,
         }
@@ -151,6 +154,22 @@ pub(crate) struct Conn {
 }
 
 impl Conn {
+    /// Answers with a memory file attached (a trace's ring).
+    pub fn answer_with(&self, id: u64, code: Code, fd: &OwnedFd) {
+        let reply = Reply {
+            id,
+            code,
+            which: 0,
+            reason: String::new(),
+        };
+        let _ = super::unix::send(
+            self.fd.as_raw_fd(),
+            &protocol::encode_reply(&reply),
+            Some(fd.as_raw_fd()),
+            false,
+        );
+    }
+
     /// Sends `reply` without waiting: a tool that does not read its answers loses them
     /// instead of stalling the owner.
     pub fn answer(&self, id: u64, code: Code, which: usize, reason: String) {
@@ -170,11 +189,35 @@ impl Conn {
 }
 
 /// A request the server accepted, waiting for the cycle thread.
-#[derive(Debug)]
 pub(crate) struct Batch {
     pub id: u64,
-    pub writes: Vec<Checked>,
+    pub kind: Kind,
     pub conn: Arc<Conn>,
+    /// The sender's uid, as the kernel gave it.
+    pub uid: u32,
+}
+
+/// What a request asks the cycle for.
+pub(crate) enum Kind {
+    /// Writes, applied once.
+    Write(Vec<Checked>),
+    /// Values to hold (checked by `check_force`).
+    Force(Vec<Checked>),
+    /// Forces to end.
+    Release(protocol::Release),
+    /// A trace to record from now on (answered by the server already).
+    Trace(Box<Recording>),
+}
+
+impl Kind {
+    /// The values it writes or names, as the write counters count them.
+    fn count(&self) -> u64 {
+        match self {
+            Kind::Write(w) | Kind::Force(w) => w.len() as u64,
+            Kind::Release(r) => r.values.len().max(1) as u64,
+            Kind::Trace(_) => 0,
+        }
+    }
 }
 
 /// Checks a decoded request against the program's declaration with the one write check
@@ -183,12 +226,18 @@ pub(crate) struct Batch {
 pub(crate) fn validate(
     vars: &'static [VarInfo],
     request: &protocol::WriteRequest,
+    force: bool,
 ) -> Result<Vec<Checked>, (usize, String)> {
+    let check = if force {
+        write::check_force
+    } else {
+        write::check
+    };
     request
         .writes
         .iter()
         .enumerate()
-        .map(|(k, &w)| write::check(vars, w).map_err(|refusal| (k, refusal.to_string())))
+        .map(|(k, &w)| check(vars, w).map_err(|refusal| (k, refusal.to_string())))
         .collect()
 }
 
@@ -200,6 +249,10 @@ pub(crate) struct Inbox {
     /// can see the value (after the next publish), so a tool's write-then-read holds; an
     /// owner that does not publish answers them at its next apply.
     pub unpublished: RefCell<Vec<(Arc<Conn>, u64)>>,
+    /// The forces held.
+    pub forces: RefCell<ForceTable>,
+    /// The traces being recorded.
+    pub recordings: RefCell<Vec<Recording>>,
 }
 
 /// How many requests one cycle applies at most; the rest wait for the next cycle.
@@ -234,21 +287,57 @@ impl Inbox {
             };
             self.counters.queued(-1, base, off);
             batch.conn.outstanding.fetch_sub(1, Relaxed);
-            match apply_batch(gm, &batch.writes, audit) {
+            let n = batch.kind.count();
+            let forces = &mut self.forces.borrow_mut();
+            let done = match batch.kind {
+                Kind::Write(writes) => {
+                    let done = apply_batch(gm, &writes, forces, audit);
+                    if done.is_ok() {
+                        applied += writes.len();
+                    }
+                    done
+                }
+                Kind::Force(writes) => {
+                    let done = forces.force(gm, &writes, batch.uid, utc_ns());
+                    forces.publish(base, off);
+                    done.map_err(|(k, why)| (k, why, Code::Rejected))
+                }
+                Kind::Release(release) => {
+                    let done = forces.release(gm, &release, batch.uid);
+                    forces.publish(base, off);
+                    done.map_err(|(k, why)| (k, why, Code::Rejected))
+                }
+                Kind::Trace(recording) => {
+                    self.recordings.borrow_mut().push(*recording);
+                    continue;
+                }
+            };
+            match done {
                 Ok(()) => {
-                    applied += batch.writes.len();
-                    self.counters
-                        .add(Count::Applied, batch.writes.len() as u64, base, off);
+                    self.counters.add(Count::Applied, n, base, off);
                     self.unpublished.borrow_mut().push((batch.conn, batch.id));
                 }
-                Err((k, why)) => {
-                    self.counters
-                        .add(Count::Rejected, batch.writes.len() as u64, base, off);
-                    batch.conn.answer(batch.id, Code::Rejected, k, why);
+                Err((k, why, code)) => {
+                    self.counters.add(Count::Rejected, n, base, off);
+                    batch.conn.answer(batch.id, code, k, why);
                 }
             }
         }
         applied
+    }
+
+    /// Writes this cycle's row of every trace, dropping those whose tool left.
+    #[inline]
+    pub fn record(&self, image: &[u8], cycle: u64, time_ns: u64) {
+        let mut recordings = self.recordings.borrow_mut();
+        // Nearly every program traces nothing: one length check.
+        if recordings.is_empty() {
+            return;
+        }
+        recordings.retain(|r| !r.left.load(Relaxed));
+        for r in recordings.iter_mut() {
+            r.record(image, cycle, time_ns);
+        }
     }
 
     /// Answers "applied" to the writers whose requests were applied since the last answer
@@ -267,11 +356,20 @@ impl Inbox {
 
 /// Applies `writes` through the program's `set`; if it refuses one, the writes before it
 /// are undone (their earlier values set again) and the refused one is named.
+/// A write to a forced value refuses the request, naming the force.
 fn apply_batch<T: GlobalMemory>(
     gm: &mut T,
     writes: &[Checked],
+    forces: &ForceTable,
     audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
-) -> Result<(), (usize, String)> {
+) -> Result<(), (usize, String, Code)> {
+    if forces.len() > 0 {
+        for (k, w) in writes.iter().map(Checked::write).enumerate() {
+            if let Some(why) = forces.refusal(w.index, w.leaf) {
+                return Err((k, why, Code::Forced));
+            }
+        }
+    }
     let mut undo: Vec<(usize, usize, Option<Value>)> = Vec::with_capacity(writes.len());
     for (k, w) in writes.iter().map(Checked::write).enumerate() {
         let before = gm.try_get(w.index, w.leaf);
@@ -284,7 +382,7 @@ fn apply_batch<T: GlobalMemory>(
             let rejection = Rejection::Set(e);
             audit(w, &Err(rejection));
             let name = T::VARIABLES.get(w.index).map_or("?", |v| v.name);
-            return Err((k, format!("`{name}`: {rejection}")));
+            return Err((k, format!("`{name}`: {rejection}"), Code::Rejected));
         }
         undo.push((w.index, w.leaf, before));
     }

@@ -4,6 +4,7 @@
 
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
+use super::forces::ForceTable;
 use super::mailbox::{Counters, Inbox, Rejection};
 use super::policy::{Policy, Sharing};
 use super::protocol::Code;
@@ -15,7 +16,7 @@ use super::{ShmError, bytes};
 use crate::{CycleStats, IoStatus};
 use plc_core::write::Write;
 use plc_core::{GlobalMemory, Value};
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
 use std::marker::PhantomData;
 use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
@@ -131,6 +132,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
         let counters = Arc::new(Counters::default());
         counters.publish(&base, &off);
         let (queue, rx) = std::sync::mpsc::sync_channel(QUEUE);
+        let (log, log_rx) = std::sync::mpsc::sync_channel(FORCE_LOG);
         // Last: tools connect only to a complete segment.
         seg.serve(Setup {
             name: name.clone(),
@@ -139,6 +141,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
             off,
             counters: counters.clone(),
             queue,
+            log: log_rx,
         })?;
         Ok(ShmOwner {
             view: View {
@@ -154,6 +157,8 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
                 rx: Mutex::new(rx),
                 counters,
                 unpublished: Default::default(),
+                forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
+                recordings: Default::default(),
             },
             seq: Cell::new(0),
             run_state: Cell::new(RunState::Starting),
@@ -190,6 +195,10 @@ pub struct ShmOwner<T: GlobalMemory> {
     run_state: Cell<RunState>,
     _t: PhantomData<fn() -> T>,
 }
+
+/// Log lines of forces waiting for the server's thread, at most (a release of every force
+/// is 256).
+const FORCE_LOG: usize = 1024;
 
 /// Writes the header and the descriptor (the owner, once, before it serves the segment).
 fn write_header(base: &Base, json: &[u8], hash: u64, off: &Offsets, generation: u64) {
@@ -261,6 +270,30 @@ impl<T: GlobalMemory> ShmOwner<T> {
     ) -> usize {
         self.inbox
             .apply(gm, &self.view.base, &self.view.off, &mut audit)
+    }
+
+    /// Sets every forced value in `gm`. The runtime calls it at both of the cycle's
+    /// boundaries: after the inputs are read and the writes from outside applied, before the
+    /// tick (so the program reads forced values), and after the tick, before the outputs are
+    /// packed and published (so the bus and the tools get them, whatever the program wrote).
+    /// A program that drives its own cycle does the same. Forces arrive with the writes (at
+    /// most 256 held); a cycle that holds none pays one length check.
+    #[inline]
+    pub fn apply_forces(&self, gm: &mut T) {
+        self.inbox.forces.borrow().apply(gm);
+    }
+
+    /// How many forces are held.
+    pub fn forces_held(&self) -> usize {
+        self.inbox.forces.borrow().len()
+    }
+
+    /// Records the cycle's row of every trace a tool started (`plc trace`), from `image` as
+    /// published, with the cycle's number and its time (nanoseconds since the program
+    /// started). A program that traces nothing pays one length check.
+    #[inline]
+    pub fn record_traces(&self, image: &T::Image, cycle: u64, time_ns: u64) {
+        self.inbox.record(image.as_bytes(), cycle, time_ns);
     }
 
     /// A consistent copy of the image as readers see it, into `image` (for tests and
@@ -405,6 +438,16 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         // A fault stays visible to readers still attached: only a running owner stops.
         if self.run_state.get() != RunState::Faulted {
             self.set_run_state(RunState::Stopped);
+        }
+        // Forces end with the program: say which were still held.
+        let held = self.inbox.forces.borrow().held_lines();
+        if !held.is_empty() {
+            log::warn!(target: "plc_io::shm",
+                "segment `{}`: the program stops with {} forces held, which end with it: {}",
+                self.name(), held.len(), held.join("; "));
+        }
+        for r in self.inbox.recordings.borrow().iter() {
+            r.end();
         }
         // Writes applied and never published are answered as applied (the program had them);
         // writes received and never applied are answered too: their writers need not wait.

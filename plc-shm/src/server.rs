@@ -10,15 +10,17 @@
 //! blocks nothing but its own connection.
 
 use super::layout::{Base, Offsets};
-use super::mailbox::{Batch, Conn, Count, Counters};
+use super::mailbox::{Batch, Conn, Count, Counters, Kind};
+use super::trace::Recording;
+use plc_core::write::Checked;
 use super::policy::Policy;
 use super::protocol::{self, Code};
 use super::unix::{self, Peer};
 use plc_core::VarInfo;
 use std::collections::HashMap;
 use std::os::fd::{AsRawFd, OwnedFd, RawFd};
-use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
-use std::sync::mpsc::{SyncSender, TrySendError};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
+use std::sync::mpsc::{Receiver, SyncSender, TrySendError};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::Duration;
@@ -31,6 +33,8 @@ pub const MAX_PER_UID: usize = 32;
 pub const MAX_OUTSTANDING: usize = 64;
 /// Requests waiting for the cycle thread, from all connections.
 pub const QUEUE: usize = 1024;
+/// Traces recorded at once (each costs the cycle a row's copy).
+pub const MAX_TRACES: usize = 4;
 /// How long a send to a tool (the greeting, a refusal) may wait for room.
 const SEND_TIMEOUT: Duration = Duration::from_secs(1);
 /// How often the accepting thread looks whether it should stop.
@@ -48,6 +52,10 @@ struct Shared {
     queue: SyncSender<Batch>,
     stop: AtomicBool,
     conns: Mutex<Registry>,
+    /// Traces running.
+    traces: AtomicUsize,
+    /// Lines the cycle thread logs (forces), written here.
+    log: Mutex<Receiver<String>>,
 }
 
 #[derive(Default)]
@@ -71,6 +79,7 @@ pub(crate) struct Setup {
     pub off: Offsets,
     pub counters: Arc<Counters>,
     pub queue: SyncSender<Batch>,
+    pub log: Receiver<String>,
 }
 
 impl Server {
@@ -93,6 +102,8 @@ impl Server {
             queue: setup.queue,
             stop: AtomicBool::new(false),
             conns: Mutex::new(Registry::default()),
+            traces: AtomicUsize::new(0),
+            log: Mutex::new(setup.log),
         });
         let listener = Arc::new(listener);
         let (s, l) = (shared.clone(), listener.clone());
@@ -109,6 +120,7 @@ impl Server {
 
 impl Drop for Server {
     fn drop(&mut self) {
+        write_log(&self.shared);
         self.shared.stop.store(true, Relaxed);
         unix::shutdown(self.listener.as_raw_fd());
         if let Some(a) = self.accept.take() {
@@ -129,9 +141,19 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
+/// Writes the lines the cycle thread left for the log.
+fn write_log(shared: &Shared) {
+    let Ok(rx) = shared.log.try_lock() else { return };
+    // Bounded per call; the channel is bounded too.
+    for line in rx.try_iter().take(4096) {
+        log::info!(target: "plc_io::shm", "segment `{}`: {line}", shared.name);
+    }
+}
+
 fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
     crate::normal_priority();
     while !shared.stop.load(Relaxed) {
+        write_log(shared);
         match unix::readable(listener.as_raw_fd(), STOP_POLL) {
             Ok(true) => {}
             Ok(false) => continue,
@@ -216,56 +238,140 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
 
 /// Receives one connection's requests until it closes or the server stops.
 fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
-    let may_write = shared.policy.may_write(peer);
+    let mut session = Session {
+        shared,
+        conn,
+        peer,
+        may_write: shared.policy.may_write(peer),
+        trace: None,
+    };
     // One byte more than a message may have: a longer one arrives truncated and is refused.
     let mut buf = vec![0u8; protocol::MAX_MESSAGE + 1];
-    let (base, off) = (&shared.base, &shared.off);
     loop {
         let got = match unix::receive(conn.fd.as_raw_fd(), &mut buf, true) {
             Ok(r) => r,
             Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
-            Err(_) => return,
+            Err(_) => break,
         };
         // A descriptor a tool attached is closed here (`got.fd` drops): nothing of it is used.
         // An empty message reads as zero bytes too: only a hang-up ends the connection.
         if got.len == 0 && !got.truncated && unix::hung_up(conn.fd.as_raw_fd()) {
-            return; // closed, or shut down by `Server::drop`
+            break; // closed, or shut down by `Server::drop`
         }
         if shared.stop.load(Relaxed) {
-            return;
+            break;
         }
         let message = &buf[..got.len.min(buf.len())];
         let request = if got.truncated || got.len > protocol::MAX_MESSAGE {
             Err(protocol::DecodeError::TooLong { len: None })
         } else {
-            protocol::decode_request(message)
+            protocol::decode(message)
         };
-        let request = match request {
-            Ok(r) => r,
+        match request {
+            Ok(r) => session.handle(r),
             Err(e) => {
-                shared.counters.add(Count::Malformed, 1, base, off);
-                conn.answer(0, Code::Malformed, 0, format!("not a write request: {e}"));
-                continue;
+                shared.counters.add(Count::Malformed, 1, &shared.base, &shared.off);
+                conn.answer(0, Code::Malformed, 0, format!("not a request: {e}"));
             }
-        };
-        let id = request.id;
-        if !may_write {
-            shared.counters.add(Count::Refused, 1, base, off);
-            let text = shared.policy.refusal(peer, &shared.name);
-            log::warn!(target: "plc_io::shm", "segment `{}`: {text}", shared.name);
-            conn.answer(id, Code::Refused, 0, text);
-            continue;
         }
-        let writes = match super::mailbox::validate(shared.vars, &request) {
-            Ok(w) => w,
+    }
+    // The trace of a tool that left ends with it.
+    if let Some(left) = session.trace.take() {
+        left.store(true, Relaxed);
+        shared.traces.fetch_sub(1, Relaxed);
+    }
+}
+
+/// One connection's state on its thread.
+struct Session<'a> {
+    shared: &'a Shared,
+    conn: &'a Arc<Conn>,
+    peer: &'a Peer,
+    may_write: bool,
+    /// Its trace's flag, set when the connection ends.
+    trace: Option<Arc<AtomicBool>>,
+}
+
+impl Session<'_> {
+    fn handle(&mut self, request: protocol::Request) {
+        let id = request.id();
+        let kind = match request {
+            protocol::Request::Trace(trace) => return self.trace(trace),
+            _ if !self.may_write => return self.refuse(id),
+            protocol::Request::Write(w) => self.validated(&w, false).map(Kind::Write),
+            protocol::Request::Force(w) => self.validated(&w, true).map(Kind::Force),
+            protocol::Request::Release(r) => Some(Kind::Release(r)),
+        };
+        if let Some(kind) = kind {
+            self.queue(id, kind);
+        }
+    }
+
+    /// A writer the policy does not let write: refused, whatever it asks.
+    fn refuse(&self, id: u64) {
+        let shared = self.shared;
+        shared.counters.add(Count::Refused, 1, &shared.base, &shared.off);
+        let text = shared.policy.refusal(self.peer, &shared.name);
+        log::warn!(target: "plc_io::shm", "segment `{}`: {text}", shared.name);
+        self.conn.answer(id, Code::Refused, 0, text);
+    }
+
+    /// The writes (or forces) of `request`, checked against the program's declaration; a
+    /// refusal is answered here.
+    fn validated(&self, request: &protocol::WriteRequest, force: bool) -> Option<Vec<Checked>> {
+        let shared = self.shared;
+        match super::mailbox::validate(shared.vars, request, force) {
+            Ok(w) => Some(w),
             Err((which, why)) => {
-                shared
-                    .counters
-                    .add(Count::Rejected, request.writes.len() as u64, base, off);
-                conn.answer(id, Code::Rejected, which, why);
-                continue;
+                let n = request.writes.len() as u64;
+                shared.counters.add(Count::Rejected, n, &shared.base, &shared.off);
+                self.conn.answer(request.id, Code::Rejected, which, why);
+                None
+            }
+        }
+    }
+
+    /// Starts a trace: any tool that may connect may trace (it reads what it could read
+    /// anyway), one per connection, [`MAX_TRACES`] at once. The ring goes to the tool with the
+    /// answer; the cycle records from the next cycle on.
+    fn trace(&mut self, trace: protocol::Trace) {
+        let shared = self.shared;
+        let busy = |why: String| self.conn.answer(trace.id, Code::Busy, 0, why);
+        if self.trace.is_some() {
+            return busy("this connection traces already: one trace per connection".into());
+        }
+        if shared.traces.fetch_add(1, Relaxed) >= MAX_TRACES {
+            shared.traces.fetch_sub(1, Relaxed);
+            return busy(format!("{MAX_TRACES} traces run already: end one first"));
+        }
+        let period_ns = shared.base.load(super::layout::S_PERIOD_NS);
+        let made = Recording::create(
+            &shared.name,
+            shared.vars,
+            &trace.values,
+            trace.every,
+            period_ns,
+        );
+        let (recording, fd) = match made {
+            Ok(r) => r,
+            Err((which, why)) => {
+                shared.traces.fetch_sub(1, Relaxed);
+                return self.conn.answer(trace.id, Code::Rejected, which, why);
             }
         };
+        let left = recording.left.clone();
+        if self.queue(trace.id, Kind::Trace(Box::new(recording))) {
+            self.trace = Some(left);
+            self.conn.answer_with(trace.id, Code::Applied, &fd);
+        } else {
+            shared.traces.fetch_sub(1, Relaxed);
+        }
+    }
+
+    /// Queues a request for the cycle thread (bounded); answers `Busy` if it cannot wait.
+    fn queue(&self, id: u64, kind: Kind) -> bool {
+        let (shared, conn) = (self.shared, self.conn);
+        let (base, off) = (&shared.base, &shared.off);
         if conn.outstanding.load(Relaxed) >= MAX_OUTSTANDING {
             shared.counters.add(Count::Busy, 1, base, off);
             conn.answer(
@@ -274,17 +380,18 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
                 0,
                 format!("{MAX_OUTSTANDING} requests of this connection wait already"),
             );
-            continue;
+            return false;
         }
         conn.outstanding.fetch_add(1, Relaxed);
         shared.counters.queued(1, base, off);
         let batch = Batch {
             id,
-            writes,
+            kind,
             conn: conn.clone(),
+            uid: self.peer.uid,
         };
         match shared.queue.try_send(batch) {
-            Ok(()) => {}
+            Ok(()) => true,
             Err(TrySendError::Full(b) | TrySendError::Disconnected(b)) => {
                 conn.outstanding.fetch_sub(1, Relaxed);
                 shared.counters.queued(-1, base, off);
@@ -295,6 +402,7 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
                     0,
                     format!("{QUEUE} requests wait for the program already"),
                 );
+                false
             }
         }
     }

@@ -110,6 +110,8 @@ pub struct Status {
     /// epoch (UTC, CLOCK_REALTIME; 0 before the first cycle): what a client shows as the
     /// values' source time (OPC UA's SourceTimestamp).
     pub cycle_utc_ns: u64,
+    /// Values forced now (`plc force`; at most [`MAX_FORCES`](crate::MAX_FORCES)).
+    pub forces: u64,
 }
 
 /// The heartbeat clock, CLOCK_MONOTONIC_COARSE: one clock for every process on the machine
@@ -178,6 +180,7 @@ impl Status {
             generation: base.load(H_GENERATION),
             retain_failures: base.load(S_RETAIN_FAILED),
             cycle_utc_ns: base.load(S_CYCLE_UTC_NS),
+            forces: base.load(off.f_count()),
         }
     }
 

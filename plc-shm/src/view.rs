@@ -327,20 +327,36 @@ impl View {
     /// Sends checked writes as one request and waits for the owner's answer.
     pub fn send_and_wait(&self, requests: &[Checked]) -> Result<(), ShmError> {
         let ticket = self.post(requests)?;
+        let names: Vec<String> = requests.iter().map(|r| self.label(r.write())).collect();
+        self.wait_answer(ticket, &names)
+    }
+
+    /// The name of a write's value, as answers name it.
+    pub fn label(&self, w: &Write) -> String {
+        match self.desc.variables.get(w.index) {
+            Some(_) => super::forces::path_of(&self.desc.variables, w.index, w.leaf),
+            None => format!("#{}", w.index),
+        }
+    }
+
+    /// Sends the message `encode` makes (for the request id it is given).
+    pub fn post_with(&self, encode: impl FnOnce(u64) -> Vec<u8>) -> Result<Ticket, ShmError> {
+        self.check_owner()?;
+        self.client()?.post_with(encode)
+    }
+
+    /// Waits for the owner's answer to `ticket` (fifty of its cycles, within bounds);
+    /// `names` are the request's values, as a refusal names them.
+    pub fn wait_answer(&self, ticket: Ticket, names: &[String]) -> Result<(), ShmError> {
         let period = self.status().stats.period;
         let patience = (period * 50).clamp(WRITE_PATIENCE.0, WRITE_PATIENCE.1);
         let reply = self.client()?.wait(ticket, patience)?;
-        let names: Vec<String> = requests
-            .iter()
-            .map(|r| {
-                let index = r.write().index;
-                self.desc
-                    .variables
-                    .get(index)
-                    .map_or_else(|| format!("#{index}"), |v| v.name.clone())
-            })
-            .collect();
-        answer_result(self.name(), &names, reply)
+        answer_result(self.name(), names, reply)
+    }
+
+    /// The memory file that came with the answer to `ticket`.
+    pub fn take_file(&self, ticket: Ticket) -> Option<std::os::fd::OwnedFd> {
+        self.seg.client().and_then(|c| c.take_file(ticket))
     }
 
     /// Sends raw bytes on the socket (test hook for hostile messages).

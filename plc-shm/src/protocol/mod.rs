@@ -14,15 +14,27 @@
 //!     index u32  element u32  kind u8  payload
 //!         kind 0 bool (u8 0/1), 1 int (i64), 2 uint (u64), 3 real (f64 bits),
 //!         4 text (len u8, then len bytes of UTF-8), 5 duration (i64 nanoseconds)
-//! reply (owner -> tool):
+//! reply (owner -> tool; a trace's carries the trace's memfd):
 //!     2u8  id u64  code u8  which u16  len u16  then len bytes of UTF-8 (the reason)
+//! force (tool -> owner), as a write request with tag 3
+//! release (tool -> owner):
+//!     4u8  id u64  flags u8 (1 restore, 2 all)  count u16 (0..=MAX_WRITES, 0 only with all)
+//!     then count times:  index u32  element u32
+//! trace (tool -> owner):
+//!     5u8  id u64  every u32 (>= 1)  count u16 (1..=MAX_TRACED)
+//!     then count times:  index u32  element u32
 //! ```
+
+mod commands;
+
+pub use commands::{MAX_TRACED, Release, Request, Trace, decode, encode_release, encode_trace};
 
 use plc_core::write::Write;
 use plc_core::{FixedString, Value};
 
 /// Protocol version, in the greeting: a tool and an owner of another version refuse each other.
-pub const VERSION: u16 = 1;
+/// Version 2 added forces and traces (and the segment's table of forces).
+pub const VERSION: u16 = 2;
 /// The greeting's first bytes.
 const GREETING_MAGIC: &[u8; 4] = b"PLCW";
 /// Writes in one request (a request is checked whole and applied in one cycle).
@@ -35,6 +47,9 @@ const MAX_REASON: usize = 1024;
 
 const TAG_WRITE: u8 = 1;
 const TAG_REPLY: u8 = 2;
+const TAG_FORCE: u8 = 3;
+const TAG_RELEASE: u8 = 4;
+const TAG_TRACE: u8 = 5;
 
 /// A request: writes checked whole and applied in one cycle, all or none.
 #[derive(Clone, Debug, PartialEq)]
@@ -61,6 +76,9 @@ pub enum Code {
     Busy = 4,
     /// The owner stopped before it applied the request.
     Stopped = 5,
+    /// A write to a value that is forced: nothing of the request was applied (`which` write,
+    /// and who forced it).
+    Forced = 6,
 }
 
 impl Code {
@@ -72,6 +90,7 @@ impl Code {
             3 => Code::Malformed,
             4 => Code::Busy,
             5 => Code::Stopped,
+            6 => Code::Forced,
             _ => return None,
         })
     }
@@ -145,6 +164,17 @@ pub enum DecodeError {
         /// The count it gives.
         count: usize,
     },
+    /// A release or trace of too few or too many values, or a trace of every 0th cycle.
+    Count {
+        /// What was counted.
+        what: &'static str,
+        /// The count it gives.
+        count: usize,
+        /// The fewest allowed.
+        min: usize,
+        /// The most allowed.
+        max: usize,
+    },
     /// A reply's reason longer than the protocol carries (1,024 bytes).
     ReasonTooLong {
         /// The length it gives.
@@ -177,6 +207,12 @@ impl std::fmt::Display for DecodeError {
             DecodeError::WriteCount { count } => {
                 write!(f, "a request holds 1 to {MAX_WRITES} writes, not {count}")
             }
+            DecodeError::Count {
+                what,
+                count,
+                min,
+                max,
+            } => write!(f, "{what} must be {min} to {max}, not {count}"),
             DecodeError::ReasonTooLong { len } => write!(f, "a reason of {len} bytes"),
         }
     }
@@ -192,12 +228,12 @@ impl std::error::Error for DecodeError {
 }
 
 /// Reads a message front to back, every read checked.
-struct Reader<'a> {
+pub(super) struct Reader<'a> {
     rest: &'a [u8],
 }
 
 impl<'a> Reader<'a> {
-    fn take(&mut self, n: usize, what: &'static str) -> Result<&'a [u8], DecodeError> {
+    pub(super) fn take(&mut self, n: usize, what: &'static str) -> Result<&'a [u8], DecodeError> {
         if self.rest.len() < n {
             return Err(DecodeError::Truncated {
                 what,
@@ -209,28 +245,28 @@ impl<'a> Reader<'a> {
         self.rest = rest;
         Ok(head)
     }
-    fn array<const N: usize>(&mut self, what: &'static str) -> Result<[u8; N], DecodeError> {
+    pub(super) fn array<const N: usize>(&mut self, what: &'static str) -> Result<[u8; N], DecodeError> {
         let mut a = [0u8; N];
         a.copy_from_slice(self.take(N, what)?);
         Ok(a)
     }
-    fn u8(&mut self, what: &'static str) -> Result<u8, DecodeError> {
+    pub(super) fn u8(&mut self, what: &'static str) -> Result<u8, DecodeError> {
         Ok(self.array::<1>(what)?[0])
     }
-    fn u16(&mut self, what: &'static str) -> Result<u16, DecodeError> {
+    pub(super) fn u16(&mut self, what: &'static str) -> Result<u16, DecodeError> {
         Ok(u16::from_le_bytes(self.array(what)?))
     }
-    fn u32(&mut self, what: &'static str) -> Result<u32, DecodeError> {
+    pub(super) fn u32(&mut self, what: &'static str) -> Result<u32, DecodeError> {
         Ok(u32::from_le_bytes(self.array(what)?))
     }
-    fn u64(&mut self, what: &'static str) -> Result<u64, DecodeError> {
+    pub(super) fn u64(&mut self, what: &'static str) -> Result<u64, DecodeError> {
         Ok(u64::from_le_bytes(self.array(what)?))
     }
-    fn utf8(&mut self, n: usize, what: &'static str) -> Result<&'a str, DecodeError> {
+    pub(super) fn utf8(&mut self, n: usize, what: &'static str) -> Result<&'a str, DecodeError> {
         std::str::from_utf8(self.take(n, what)?)
             .map_err(|error| DecodeError::NotUtf8 { what, error })
     }
-    fn end(&self) -> Result<(), DecodeError> {
+    pub(super) fn end(&self) -> Result<(), DecodeError> {
         if self.rest.is_empty() {
             Ok(())
         } else {
@@ -241,7 +277,7 @@ impl<'a> Reader<'a> {
     }
 }
 
-fn start(bytes: &[u8]) -> Result<Reader<'_>, DecodeError> {
+pub(super) fn start(bytes: &[u8]) -> Result<Reader<'_>, DecodeError> {
     if bytes.len() > MAX_MESSAGE {
         return Err(DecodeError::TooLong {
             len: Some(bytes.len()),
@@ -281,7 +317,16 @@ pub fn decode_greeting(bytes: &[u8]) -> Result<Greeting, DecodeError> {
 
 /// A request's bytes. The caller keeps to [`MAX_WRITES`].
 pub fn encode_request(request: &WriteRequest) -> Vec<u8> {
-    let mut out = vec![TAG_WRITE];
+    encode_writes(TAG_WRITE, request)
+}
+
+/// A force's bytes: the values to hold, as a write request carries them.
+pub fn encode_force(request: &WriteRequest) -> Vec<u8> {
+    encode_writes(TAG_FORCE, request)
+}
+
+fn encode_writes(tag: u8, request: &WriteRequest) -> Vec<u8> {
+    let mut out = vec![tag];
     out.extend_from_slice(&request.id.to_le_bytes());
     out.extend_from_slice(&(request.writes.len() as u16).to_le_bytes());
     for w in &request.writes {
@@ -318,16 +363,19 @@ pub fn encode_request(request: &WriteRequest) -> Vec<u8> {
     out
 }
 
-/// Decodes a request.
+/// Decodes a write request.
 pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
-    let mut r = start(bytes)?;
-    let tag = r.u8("tag")?;
-    if tag != TAG_WRITE {
-        return Err(DecodeError::Unknown {
+    match decode(bytes)? {
+        Request::Write(w) => Ok(w),
+        _ => Err(DecodeError::Unknown {
             what: "unknown message tag",
-            byte: tag,
-        });
+            byte: bytes[0],
+        }),
     }
+}
+
+/// The rest of a write or force request, after its tag.
+pub(super) fn decode_writes(r: &mut Reader<'_>) -> Result<WriteRequest, DecodeError> {
     let id = r.u64("request id")?;
     let count = usize::from(r.u16("write count")?);
     if count == 0 || count > MAX_WRITES {
