@@ -97,6 +97,8 @@ pub struct SegmentInfo {
     pub variables: usize,
     /// Saves of retained values that failed so far.
     pub retain_failures: u64,
+    /// Values forced now.
+    pub forces: u64,
     /// Why the segment cannot be read (damaged, refused, permission denied), if it cannot:
     /// such a segment is listed, not hidden, so its owner can be found and restarted.
     pub problem: Option<ShmError>,
@@ -118,6 +120,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                     cycle_count: status.cycle_count,
                     variables: seg.descriptor().variables.len(),
                     retain_failures: status.retain_failures,
+                    forces: status.forces,
                     problem: None,
                     name,
                 })
@@ -133,6 +136,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                 cycle_count: 0,
                 variables: 0,
                 retain_failures: 0,
+                forces: 0,
                 problem: Some(problem),
                 name,
             }),

@@ -137,11 +137,13 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     };
     let mut options = Options::default();
     let mut _plant = None;
+    let mut tower = None;
     let transport = match &args.interface {
         Some(name) => Transport::Interface(name.clone()),
         None => {
             let sim = tensile::simulated_bus();
             _plant = Some(tensile::plant::Plant::spawn(sim.clone())?);
+            tower = Some(sim.clone());
             options = Options::simulated();
             tensile::sim_transport(sim)
         }
@@ -174,7 +176,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         builder = builder.realtime_priority(priority);
     }
     let stop = builder.stop_handle();
-    let monitor = status_line(args.segment.clone(), stop.clone());
+    let monitor = status_line(args.segment.clone(), tower, stop.clone());
     let period = args.period;
     let result = builder.build().and_then(|runtime| {
         runtime.run(|ctx| {
@@ -196,8 +198,31 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// Prints a status line each second, read from the program's own segment as any HMI would.
-fn status_line(segment: String, stop: plc_io::StopHandle) -> std::thread::JoinHandle<()> {
+/// What the simulated signal tower (the EL2004's four outputs) shows: `G y r h`, a capital
+/// for a lamp that is on, read from the terminal itself, as a look at the machine would
+/// (`plc force tensile_tester lamp_red=true` lights `R` whatever the program writes).
+fn tower_text(bus: &ethercat_sim::SimBus) -> String {
+    ["g", "y", "r", "h"]
+        .iter()
+        .enumerate()
+        .map(|(bit, lamp)| {
+            if bus.output_bit(tensile::position::LAMPS, bit) {
+                lamp.to_uppercase()
+            } else {
+                lamp.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Prints a status line each second, read from the program's own segment as any HMI would,
+/// with the simulated tower's lamps as the terminal shows them.
+fn status_line(
+    segment: String,
+    tower: Option<ethercat_sim::SimBus>,
+    stop: plc_io::StopHandle,
+) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {
         let mut seg = None;
         while !stop.is_stopped() {
@@ -216,9 +241,17 @@ fn status_line(segment: String, stop: plc_io::StopHandle) -> std::thread::JoinHa
                     None => "?".into(),
                 }
             };
+            let lamps = tower
+                .as_ref()
+                .map(|t| format!(" | tower {}", tower_text(t)))
+                .unwrap_or_default();
+            let forced = match st.forces {
+                0 => String::new(),
+                n => format!(" | {n} forced"),
+            };
             println!(
                 "cycle {:>7} | work last/mean/max {}/{}/{} us | overruns {} | bus {}{} | {} {} \
-                 | force {} kN | tests {}",
+                 | force {} kN | tests {}{lamps}{forced}",
                 st.cycle_count,
                 st.stats.last.as_micros(),
                 st.stats.mean.as_micros(),
