@@ -204,3 +204,84 @@ fn a_trace_holds_every_cycle_in_order_and_every_nth_when_asked() {
     program.join().unwrap();
     assert!(every.ended());
 }
+
+/// Force, release and trace messages from a tool that skips every check: values the program's
+/// type does not take (NaN for a REAL, a number out of an INT's range, no such variable or
+/// element) are refused by the owner, random bytes with those tags are answered as
+/// malformed, and the program keeps cycling.
+#[test]
+fn the_owner_refuses_hostile_forces_and_traces() {
+    use plc_io::shm::protocol::{self, Release, WriteRequest};
+    let name = unique("force_hostile");
+    let (stop, program) = program(&name);
+    let seg = wait_for(Duration::from_secs(10), || DynSegment::attach(&name).ok());
+    let setpoint = seg.index_of("setpoint").unwrap();
+    let speeds = seg.index_of("speeds").unwrap();
+    let bad = [
+        Write {
+            index: setpoint,
+            leaf: 0,
+            value: Value::Real(f64::NAN),
+        },
+        Write {
+            index: speeds,
+            leaf: 3,
+            value: Value::Int(1 << 40),
+        },
+        Write {
+            index: speeds,
+            leaf: 300,
+            value: Value::Int(1),
+        },
+        Write {
+            index: 99,
+            leaf: 0,
+            value: Value::Int(1),
+        },
+    ];
+    for (id, w) in bad.into_iter().enumerate() {
+        let bytes = protocol::encode_force(&WriteRequest {
+            id: id as u64 + 1000,
+            writes: vec![w],
+        });
+        seg.send_raw(&bytes).unwrap();
+    }
+    // Random bytes behind each command's tag, and traces of values that are no such thing.
+    let mut noise = 0x9E37_79B9_7F4A_7C15u64;
+    for _ in 0..300 {
+        noise ^= noise << 13;
+        noise ^= noise >> 7;
+        noise ^= noise << 17;
+        let len = (noise % 200) as usize;
+        let mut bytes: Vec<u8> = (0..len).map(|k| (noise >> (k % 8 * 8)) as u8).collect();
+        if let Some(b) = bytes.first_mut() {
+            *b = 3 + (noise % 3) as u8;
+        }
+        seg.send_raw(&bytes).unwrap();
+    }
+    let trace = protocol::encode_trace(&protocol::Trace {
+        id: 7,
+        every: 1,
+        values: vec![(99, 0)],
+    });
+    seg.send_raw(&trace).unwrap();
+    let release = protocol::encode_release(&Release {
+        id: 8,
+        restore: true,
+        all: false,
+        values: vec![(speeds, 100_000)],
+    });
+    seg.send_raw(&release).unwrap();
+    // Still cycling, nothing forced, and a correct force still works.
+    let before = seg.status().cycle_count;
+    wait_for(Duration::from_secs(5), || {
+        (seg.status().cycle_count > before + 10).then_some(())
+    });
+    assert_eq!(seg.status().forces, 0);
+    assert!(seg.status().writes_discarded > 0, "random bytes are malformed");
+    force(&seg, "speeds", 3, Value::Int(12)).unwrap();
+    assert_eq!(seg.read_element("speeds", 3).unwrap(), Value::Int(12));
+    assert_eq!(seg.forces().unwrap().len(), 1);
+    stop.stop();
+    program.join().unwrap();
+}

@@ -6,8 +6,10 @@
 //! [`protocol::MAX_MESSAGE`] bytes), refuses a writer the policy does not let write, decodes
 //! and checks each request against the program's declaration and queues it (bounded, and at
 //! most [`MAX_OUTSTANDING`] per connection) for the cycle thread, which answers it once
-//! applied. Every send to a tool has a timeout or does not wait, so a tool that stops reading
-//! blocks nothing but its own connection.
+//! applied. Forces and releases travel the same way, checked as forces; a trace is set up here
+//! (its ring made and passed to the tool) and handed to the cycle. Every send to a tool has a
+//! timeout or does not wait, so a tool that stops reading blocks nothing but its own
+//! connection. The accepting thread also writes the lines the cycle leaves for the log.
 
 use super::layout::{Base, Offsets};
 use super::mailbox::{Batch, Conn, Count, Counters, Kind};
@@ -332,17 +334,28 @@ impl Session<'_> {
     }
 
     /// Starts a trace: any tool that may connect may trace (it reads what it could read
-    /// anyway), one per connection, [`MAX_TRACES`] at once. The ring goes to the tool with the
-    /// answer; the cycle records from the next cycle on.
+    /// anyway), one per connection, [`MAX_TRACES`] at once, of which tools that may not write
+    /// take half at most. The ring goes to the tool with the answer; the cycle records from
+    /// the next cycle on.
     fn trace(&mut self, trace: protocol::Trace) {
         let shared = self.shared;
         let busy = |why: String| self.conn.answer(trace.id, Code::Busy, 0, why);
         if self.trace.is_some() {
             return busy("this connection traces already: one trace per connection".into());
         }
-        if shared.traces.fetch_add(1, Relaxed) >= MAX_TRACES {
+        // Readers take at most half of the places: tools that may not write cannot keep an
+        // engineer who may from tracing.
+        let limit = if self.may_write {
+            MAX_TRACES
+        } else {
+            MAX_TRACES / 2
+        };
+        if shared.traces.fetch_add(1, Relaxed) >= limit {
             shared.traces.fetch_sub(1, Relaxed);
-            return busy(format!("{MAX_TRACES} traces run already: end one first"));
+            return busy(format!(
+                "{limit} traces run already (of {MAX_TRACES}, half of them kept for tools that \
+                 may write): end one first"
+            ));
         }
         let period_ns = shared.base.load(super::layout::S_PERIOD_NS);
         let made = Recording::create(
