@@ -154,13 +154,13 @@ pub struct Gm {
     #[plc(direction = "status")]
     pub fault_text: FixedString<128>,
     /// Simulated force in kN
-    #[plc(direction = "status")]
+    #[plc(direction = "status", quantity = "force")]
     pub force_kn: f64,
     /// Elongation in mm
-    #[plc(direction = "status")]
+    #[plc(direction = "status", quantity = "length")]
     pub elongation_mm: f64,
     /// Largest force of the last test in kN
-    #[plc(direction = "status")]
+    #[plc(direction = "status", quantity = "force")]
     pub max_force_kn: f64,
     /// Tests completed since the machine was commissioned
     #[plc(direction = "status", nonvolatile)]
