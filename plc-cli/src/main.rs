@@ -4,6 +4,7 @@
 //! plc list                          # running programs
 //! plc list tensile_tester           # their variables (--json for scripts)
 //! plc get tensile_tester force_kn info_test_id
+//! plc get tensile_tester force_kn --digits 4 --hex   # reals to 4 digits, integers as 16#00FF
 //! plc set tensile_tester info_specimen_name="S235 bar" auto_start=false
 //! plc watch tensile_tester --filter ls_
 //! plc log tensile_tester force_kn elongation_mm --csv run.csv --rate 100
@@ -19,6 +20,8 @@
 //! ```
 
 mod cmd;
+mod display;
+mod trace;
 
 use clap::{Parser, Subcommand};
 use std::path::PathBuf;
@@ -43,13 +46,15 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Current values.
+    /// Current values; reals at full precision unless --digits.
     Get {
         /// Segment name.
         segment: String,
         /// Variable names (case-insensitive); `name[3]` for one array element.
         #[arg(required = true)]
         names: Vec<String>,
+        #[command(flatten)]
+        format: display::FormatArgs,
     },
     /// Writes values: all are checked first, then sent as one request the program applies in one cycle, all or none.
     Set {
@@ -60,6 +65,7 @@ enum Command {
         assignments: Vec<String>,
     },
     /// A live, full-screen view of the variables; select one and press Enter to write it.
+    /// Reals show 6 significant digits (or --digits); `p` toggles full precision.
     Watch {
         /// Segment name.
         segment: String,
@@ -69,7 +75,44 @@ enum Command {
         /// Refreshes per second.
         #[arg(long, default_value_t = 10.0)]
         rate: f64,
+        #[command(flatten)]
+        format: display::FormatArgs,
     },
+    /// Holds values at both of the program's cycle boundaries until released: the program
+    /// reads a forced input, the bus gets a forced output whatever the program writes. Any
+    /// basic value or element; writes to a forced value are refused.
+    Force {
+        /// Segment name.
+        segment: String,
+        /// `path=value`, as `plc set` takes them (inputs, outputs and status too).
+        #[arg(required = true)]
+        assignments: Vec<String>,
+    },
+    /// Releases forces: the program's next value stands (or, with --restore, the value from
+    /// before the force comes back).
+    Unforce {
+        /// Segment name.
+        segment: String,
+        /// The forced values to release.
+        #[arg(required_unless_present = "all", conflicts_with = "all")]
+        paths: Vec<String>,
+        /// Release every force.
+        #[arg(long)]
+        all: bool,
+        /// Put back each value as it was before its force.
+        #[arg(long)]
+        restore: bool,
+    },
+    /// The forces held: path, value, who forced it and since when.
+    Forces {
+        /// Segment name.
+        segment: String,
+        #[command(flatten)]
+        format: display::FormatArgs,
+    },
+    /// Records values every cycle (or every Nth), as the program runs them, to a CSV file
+    /// and optionally an SVG plot; with a trigger, --pre rows before it and --post after.
+    Trace(cmd::trace::Options),
     /// Records values to a CSV file.
     Log {
         /// Segment name.
@@ -208,7 +251,11 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::List { segment, json } => cmd::list::run(segment.as_deref(), json),
-        Command::Get { segment, names } => cmd::get::run(&segment, &names),
+        Command::Get {
+            segment,
+            names,
+            format,
+        } => cmd::get::run(&segment, &names, &format.format()),
         Command::Set {
             segment,
             assignments,
@@ -217,7 +264,8 @@ fn main() -> ExitCode {
             segment,
             filter,
             rate,
-        } => cmd::watch::run(&segment, filter, rate),
+            format,
+        } => cmd::watch::run(&segment, filter, rate, format.format()),
         Command::Log {
             segment,
             names,
@@ -225,6 +273,18 @@ fn main() -> ExitCode {
             rate,
             seconds,
         } => cmd::log::run(&segment, &names, &csv, rate, seconds),
+        Command::Force {
+            segment,
+            assignments,
+        } => cmd::force::force(&segment, &assignments),
+        Command::Unforce {
+            segment,
+            paths,
+            all,
+            restore,
+        } => cmd::force::unforce(&segment, &paths, all, restore),
+        Command::Forces { segment, format } => cmd::force::list(&segment, &format.format()),
+        Command::Trace(options) => cmd::trace::run(&options),
         Command::Import {
             project,
             csv,

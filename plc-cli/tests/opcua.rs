@@ -301,3 +301,87 @@ fn writes_with_an_index_range_set_exactly_the_selected_elements() {
     owner.join().expect("the owner stops");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A program whose values a tool forces: a setpoint, a feed beside it, a row of speeds.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct Forceable {
+    #[plc(direction = "command")]
+    setpoint: f64,
+    #[plc(direction = "command")]
+    feed: f64,
+    #[plc(direction = "command")]
+    row: [i16; 4],
+    #[plc(direction = "status")]
+    cycles: u64,
+}
+
+#[test]
+fn a_forced_value_is_served_and_writes_to_it_are_refused_as_locked_until_released() {
+    use plc_core::{Value, write::Write};
+    python();
+    let dir = test_dir("force");
+    let segment = format!("opcua_force_{}", std::process::id());
+    let rt = plc_io::Runtime::<Forceable>::builder()
+        .period(Duration::from_millis(1))
+        .segment(&segment)
+        .handle_signals(false)
+        .build()
+        .expect("the program starts");
+    let stop = rt.stop_handle();
+    let program = std::thread::spawn(move || rt.run(|ctx| ctx.gm.cycles += 1));
+    let mut seg = None;
+    wait_for("the program", || {
+        seg = plc_io::shm::DynSegment::attach(&segment).ok();
+        seg.is_some()
+    });
+    let seg = seg.expect("attached");
+    let users = add_user(&dir);
+    let (_server, port) = serve(&dir, &segment, Some(&users));
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+
+    // Forced by a tool (as `plc force` does): setpoint = 2.5, row[2] = 40.
+    let setpoint = seg.index_of("setpoint").expect("declared");
+    let row = seg.index_of("row").expect("declared");
+    let forces = [
+        Write {
+            index: setpoint,
+            leaf: 0,
+            value: Value::Real(2.5),
+        },
+        Write {
+            index: row,
+            leaf: 2,
+            value: Value::Int(40),
+        },
+    ]
+    .map(|f| seg.check_force(f).expect("a valid force"));
+    seg.force(&forces).expect("forced");
+    let client_args = |what: &'static str| -> [&str; 5] {
+        [what, &url, &segment, "operator", "pw of the operator"]
+    };
+    client(&dir, &client_args("forced"));
+    assert_eq!(seg.read("setpoint").expect("read"), Value::Real(2.5));
+
+    seg.release(&[(setpoint, 0), (row, 2)], false)
+        .expect("released");
+    assert_eq!(seg.status().forces, 0);
+    client(&dir, &client_args("released"));
+    assert_eq!(seg.read("setpoint").expect("read"), Value::Real(7.0));
+
+    stop.stop();
+    program
+        .join()
+        .expect("the program thread")
+        .expect("the program stops");
+    let server_log = std::fs::read_to_string(dir.join("server.log")).unwrap_or_default();
+    let refusal = server_log
+        .lines()
+        .find(|l| l.contains("OPC UA write by `operator` refused: ") && l.contains("setpoint"));
+    assert!(
+        refusal.is_some_and(|l| l.contains("`setpoint` is forced (by uid ")
+            && l.contains("release it first")
+            && l.contains("(BadLocked)")),
+        "the refused write is logged as forced, naming who forced it:\n{server_log}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

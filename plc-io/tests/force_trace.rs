@@ -90,7 +90,10 @@ fn forced_inputs_and_outputs_hold_and_writes_to_them_are_refused() {
         leaf: 0,
         value: Value::Real(1.0),
     }]);
-    let Err(ShmError::Forced { variable, reason, .. }) = &refused else {
+    let Err(ShmError::Forced {
+        variable, reason, ..
+    }) = &refused
+    else {
         panic!("{refused:?}");
     };
     assert_eq!(variable, "setpoint");
@@ -183,7 +186,11 @@ fn a_trace_holds_every_cycle_in_order_and_every_nth_when_asked() {
         })
         .collect();
     for pair in rows.windows(2) {
-        assert_eq!(pair[1].cycle, pair[0].cycle + 1, "no cycle lost or repeated");
+        assert_eq!(
+            pair[1].cycle,
+            pair[0].cycle + 1,
+            "no cycle lost or repeated"
+        );
         assert!(pair[1].time_ns > pair[0].time_ns);
     }
     for r in &rows {
@@ -278,7 +285,10 @@ fn the_owner_refuses_hostile_forces_and_traces() {
         (seg.status().cycle_count > before + 10).then_some(())
     });
     assert_eq!(seg.status().forces, 0);
-    assert!(seg.status().writes_discarded > 0, "random bytes are malformed");
+    assert!(
+        seg.status().writes_discarded > 0,
+        "random bytes are malformed"
+    );
     force(&seg, "speeds", 3, Value::Int(12)).unwrap();
     assert_eq!(seg.read_element("speeds", 3).unwrap(), Value::Int(12));
     assert_eq!(seg.forces().unwrap().len(), 1);

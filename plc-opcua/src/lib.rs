@@ -21,14 +21,15 @@
 //! | AccessLevel | CurrentRead, plus CurrentWrite where a tool may write (read-write, neither input nor status) |
 //! | UserAccessLevel | the AccessLevel for users of the users file; CurrentRead only for anonymous sessions |
 //! | SourceTimestamp | the UTC time the owner stamped the cycle that produced the value |
-//! | StatusCode | Good while the owner runs; UncertainLastUsableValue while it is stalled; BadNoCommunication once it is gone, stopped or faulted |
+//! | StatusCode | Good while the owner runs, GoodLocalOverride for a value held by a force (`plc force`; a node any of whose elements is forced); UncertainLastUsableValue while it is stalled; BadNoCommunication once it is gone, stopped or faulted |
 //!
 //! Writes are refused with BadNotWritable (input, status, read-only), BadUserAccessDenied
-//! (anonymous session), BadOutOfRange (out of range, NaN or an infinity, text too long) and
-//! BadTypeMismatch (another kind, an array of other dimensions); an array written whole is applied in one
-//! cycle, and so is a part of one written with an index range (`2:4`, `1,0:2`, OPC UA's
-//! NumericRange; BadIndexRangeNoData past its end). Every write is logged with its user and the
-//! old and new value.
+//! (anonymous session), BadOutOfRange (out of range, NaN or an infinity, text too long),
+//! BadTypeMismatch (another kind, an array of other dimensions) and BadLocked (a value held by a
+//! force: release it first; the log line names who forced it and since when); an array written
+//! whole is applied in one cycle, and so is a part of one written with an index range (`2:4`,
+//! `1,0:2`, OPC UA's NumericRange; BadIndexRangeNoData past its end). Every write is logged with
+//! its user and the old and new value.
 //!
 //! # Security
 //!

@@ -307,6 +307,11 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
             | ValueError::Nul { .. }
             | ValueError::NotFinite { .. } => StatusCode::BadOutOfRange,
         },
+        // Held by an operator's force (`plc force`) until it is released: OPC UA's "the Node is
+        // locked by a different application" says that, and that the fix is to release the
+        // lock, not to change the value (BadOutOfRange), the user (BadUserAccessDenied) or the
+        // node's access (BadNotWritable: its AccessLevel still allows writing, rightly).
+        ShmError::Forced { .. } => StatusCode::BadLocked,
         ShmError::MailboxFull(_) => StatusCode::BadTooManyOperations,
         ShmError::OwnerGone(_) | ShmError::Replaced(_) | ShmError::Closed { .. } => {
             StatusCode::BadNoCommunication
@@ -327,6 +332,31 @@ pub fn value_status(state: OwnerState) -> StatusCode {
             StatusCode::BadNoCommunication
         }
     }
+}
+
+/// The status of a value whose owner's state gives `status`: a value held by a force (`forced`)
+/// while the owner runs is GoodLocalOverride, OPC UA's "the value has been overridden" (Part 8:
+/// a manually entered value has been forced), so a client sees the force without writing.
+pub fn forced_status(status: StatusCode, forced: bool) -> StatusCode {
+    if forced && status == StatusCode::Good {
+        StatusCode::GoodLocalOverride
+    } else {
+        status
+    }
+}
+
+/// Whether one of the basic values `first_leaf..first_leaf + elements` of variable `index` is
+/// among `forced` ((variable index, leaf), sorted).
+pub fn holds_force(
+    forced: &[(usize, usize)],
+    index: usize,
+    first_leaf: usize,
+    elements: usize,
+) -> bool {
+    let from = forced.partition_point(|&f| f < (index, first_leaf));
+    forced
+        .get(from)
+        .is_some_and(|&(i, leaf)| i == index && leaf < first_leaf + elements)
 }
 
 /// A DataValue that is only a status (no value), stamped with the server's time.

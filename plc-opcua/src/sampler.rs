@@ -2,8 +2,9 @@
 //! owner period it looks at the status block; after each new cycle it takes one seqlock
 //! snapshot and hands the monitored items the values that changed, stamped with the cycle's
 //! UTC time. It answers Read requests from a fresh snapshot. It follows the owner: values turn
-//! Bad or Uncertain when it is gone, stalled or faulted; after a restart or takeover it attaches
-//! again, and rebuilds the namespace if the declaration changed.
+//! Bad or Uncertain when it is gone, stalled or faulted (GoodLocalOverride while a force holds
+//! them); after a restart or takeover it attaches again, and rebuilds the namespace if the
+//! declaration changed.
 //!
 //! It only ever copies out of the segment (the seqlock reader retries, never blocks the owner),
 //! so however slow the clients are, the program's cycle does not wait for them.
@@ -40,6 +41,8 @@ pub struct Sampler {
     last_image: Vec<u8>,
     last_state: OwnerState,
     last_cycle: Option<u64>,
+    /// The forced values the monitored items were last given, sorted.
+    last_forced: Vec<(usize, usize)>,
     next_attach: Instant,
 }
 
@@ -49,6 +52,8 @@ struct Snapshot<'a> {
     image: &'a [u8],
     status: StatusCode,
     source: Option<DateTime>,
+    /// The values held by forces ((variable index, leaf), sorted).
+    forced: &'a [(usize, usize)],
 }
 
 impl Sampler {
@@ -69,6 +74,7 @@ impl Sampler {
             last_image: Vec::new(),
             last_state: OwnerState::Running,
             last_cycle: None,
+            last_forced: Vec::new(),
             next_attach: Instant::now(),
         }
     }
@@ -129,30 +135,42 @@ impl Sampler {
                 return;
             }
         };
+        let forced = forced(seg, status.forces);
         let snap = Snapshot {
             seg,
             image: &image,
             status: mapping::value_status(state),
             source: mapping::source_time(status.cycle_utc_ns),
+            forced: &forced,
         };
         let layout = self.shared.layout();
         let state_changed = state != self.last_state || self.last_cycle.is_none();
-        let previous = &self.last_image;
+        let (previous, previous_forced) = (&self.last_image, &self.last_forced);
         let changed = monitored.iter().filter(|id| {
-            let Some(var) = layout.var(id).map(|n| &n.var) else {
+            let Some(node) = layout.var(id) else {
                 return false;
             };
+            let var = &node.var;
             let bytes = |img: &[u8]| {
                 img.get(var.offset..var.offset + var.size)
                     .map(<[u8]>::to_vec)
             };
-            state_changed || bytes(previous) != bytes(&image) || refresh.contains(id)
+            // A force to the value it holds already, or a release that leaves it, changes only
+            // its status.
+            let holds = |f: &[(usize, usize)]| {
+                mapping::holds_force(f, node.index, node.first_leaf, var.elements())
+            };
+            state_changed
+                || bytes(previous) != bytes(&image)
+                || holds(previous_forced) != holds(&forced)
+                || refresh.contains(id)
         });
         self.subscriptions.maybe_notify(
             changed.map(|id| (id, AttributeId::Value)),
             |id, _, range, _| Some(snap.value(&layout, id, range, TimestampsToReturn::Both)),
         );
         self.last_image = image;
+        self.last_forced = forced;
         self.last_state = state;
         self.last_cycle = Some(status.cycle_count);
     }
@@ -218,11 +236,13 @@ impl Sampler {
         let fresh = self.fresh();
         let values = match (fresh, self.seg.as_ref()) {
             (Some((image, status, source)), Some(seg)) => {
+                let forced = forced(seg, seg.status().forces);
                 let snap = Snapshot {
                     seg,
                     image: &image,
                     status,
                     source,
+                    forced: &forced,
                 };
                 job.items
                     .iter()
@@ -284,9 +304,12 @@ impl Snapshot<'_> {
                 Err(status) => return mapping::status_only(status),
             },
         };
+        // The whole node's status, also for an index range that leaves its forced element out:
+        // the node is what a client monitors.
+        let forced = mapping::holds_force(self.forced, node.index, node.first_leaf, var.elements());
         let mut dv = DataValue {
             value: Some(variant),
-            status: Some(self.status),
+            status: Some(mapping::forced_status(self.status, forced)),
             source_timestamp: self.source,
             source_picoseconds: None,
             server_timestamp: Some(DateTime::now()),
@@ -306,6 +329,21 @@ impl Snapshot<'_> {
         }
         dv
     }
+}
+
+/// The values held by forces ((variable index, leaf), sorted), looked up only while the status
+/// block counts `count` of them. A table the owner is rewriting all the time counts as none:
+/// their values are served all the same, only not marked.
+fn forced(seg: &DynSegment, count: u64) -> Vec<(usize, usize)> {
+    if count == 0 {
+        return Vec::new();
+    }
+    let mut forced: Vec<(usize, usize)> = seg
+        .forces()
+        .map(|held| held.iter().map(|f| (f.index, f.leaf)).collect())
+        .unwrap_or_default();
+    forced.sort_unstable();
+    forced
 }
 
 /// How often to look at a segment: its owner's period, at least a millisecond (OPC UA intervals

@@ -82,7 +82,8 @@ impl DynSegment {
     /// The forces held now, as the owner published them (their values are in the image).
     pub fn forces(&self) -> Result<Vec<ForceInfo>, ShmError> {
         self.view.check_owner()?;
-        forces::read(&self.view.base, &self.view.off).ok_or_else(|| ShmError::Stuck(self.name().into()))
+        forces::read(&self.view.base, &self.view.off)
+            .ok_or_else(|| ShmError::Stuck(self.name().into()))
     }
 
     /// Starts a trace of `values` (basic values found by [`locate`](Self::locate), no STRING,
@@ -119,10 +120,13 @@ impl DynSegment {
         })?;
         let names: Vec<String> = values.iter().map(|v| v.path.clone()).collect();
         self.view.wait_answer(ticket, &names)?;
-        let fd = self.view.take_file(ticket).ok_or_else(|| ShmError::Protocol {
-            name: self.name().to_string(),
-            why: "its answer to the trace came without the trace's memory".into(),
-        })?;
+        let fd = self
+            .view
+            .take_file(ticket)
+            .ok_or_else(|| ShmError::Protocol {
+                name: self.name().to_string(),
+                why: "its answer to the trace came without the trace's memory".into(),
+            })?;
         Trace::receive(self.name(), fd, values)
     }
 

@@ -8,8 +8,8 @@ use super::layout::{Base, MAX_FORCES, Offsets};
 use super::protocol::Release;
 use plc_core::write::{self, Checked};
 use plc_core::{GlobalMemory, Value, VarInfo};
-use std::sync::mpsc::SyncSender;
 use std::sync::atomic::{Ordering, fence};
+use std::sync::mpsc::SyncSender;
 
 /// One force held.
 #[derive(Clone, Debug)]

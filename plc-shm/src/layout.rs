@@ -82,7 +82,9 @@ impl Offsets {
     pub const fn checked(image_size: usize) -> Option<Self> {
         // `new` adds a fixed amount to the padded image size: check that sum first.
         match image_size.checked_next_multiple_of(8) {
-            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES) => Some(Self::new(image_size)),
+            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES) => {
+                Some(Self::new(image_size))
+            }
             _ => None,
         }
     }

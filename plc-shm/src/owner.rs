@@ -3,8 +3,8 @@
 //! processes.
 
 use super::descriptor::LayoutDescriptor;
-use super::layout::*;
 use super::forces::ForceTable;
+use super::layout::*;
 use super::mailbox::{Counters, Inbox, Rejection};
 use super::policy::{Policy, Sharing};
 use super::protocol::Code;

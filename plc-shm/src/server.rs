@@ -13,12 +13,12 @@
 
 use super::layout::{Base, Offsets};
 use super::mailbox::{Batch, Conn, Count, Counters, Kind};
-use super::trace::Recording;
-use plc_core::write::Checked;
 use super::policy::Policy;
 use super::protocol::{self, Code};
+use super::trace::Recording;
 use super::unix::{self, Peer};
 use plc_core::VarInfo;
+use plc_core::write::Checked;
 use std::collections::HashMap;
 use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
@@ -145,7 +145,9 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
 
 /// Writes the lines the cycle thread left for the log.
 fn write_log(shared: &Shared) {
-    let Ok(rx) = shared.log.try_lock() else { return };
+    let Ok(rx) = shared.log.try_lock() else {
+        return;
+    };
     // Bounded per call; the channel is bounded too.
     for line in rx.try_iter().take(4096) {
         log::info!(target: "plc_io::shm", "segment `{}`: {line}", shared.name);
@@ -272,7 +274,9 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
         match request {
             Ok(r) => session.handle(r),
             Err(e) => {
-                shared.counters.add(Count::Malformed, 1, &shared.base, &shared.off);
+                shared
+                    .counters
+                    .add(Count::Malformed, 1, &shared.base, &shared.off);
                 conn.answer(0, Code::Malformed, 0, format!("not a request: {e}"));
             }
         }
@@ -312,7 +316,9 @@ impl Session<'_> {
     /// A writer the policy does not let write: refused, whatever it asks.
     fn refuse(&self, id: u64) {
         let shared = self.shared;
-        shared.counters.add(Count::Refused, 1, &shared.base, &shared.off);
+        shared
+            .counters
+            .add(Count::Refused, 1, &shared.base, &shared.off);
         let text = shared.policy.refusal(self.peer, &shared.name);
         log::warn!(target: "plc_io::shm", "segment `{}`: {text}", shared.name);
         self.conn.answer(id, Code::Refused, 0, text);
@@ -326,7 +332,9 @@ impl Session<'_> {
             Ok(w) => Some(w),
             Err((which, why)) => {
                 let n = request.writes.len() as u64;
-                shared.counters.add(Count::Rejected, n, &shared.base, &shared.off);
+                shared
+                    .counters
+                    .add(Count::Rejected, n, &shared.base, &shared.off);
                 self.conn.answer(request.id, Code::Rejected, which, why);
                 None
             }

@@ -188,7 +188,11 @@ const MAX_RING: usize = ROWS + 16_384 * 8 * (ROW_HEAD + 64);
 
 impl Trace {
     /// Maps the ring the owner passed for `values`, checking what it says of itself.
-    pub(crate) fn receive(name: &str, fd: OwnedFd, values: &[PathLocation]) -> Result<Trace, ShmError> {
+    pub(crate) fn receive(
+        name: &str,
+        fd: OwnedFd,
+        values: &[PathLocation],
+    ) -> Result<Trace, ShmError> {
         let corrupt = |why: String| ShmError::Corrupt {
             name: name.to_string(),
             why: format!("its trace: {why}"),
@@ -207,7 +211,10 @@ impl Trace {
             .checked_mul(stride(values.len()))
             .and_then(|n| n.checked_add(ROWS));
         if capacity == 0 || needed.is_none_or(|n| n > base.len()) {
-            return Err(corrupt(format!("{capacity} rows do not fit its {} bytes", base.len())));
+            return Err(corrupt(format!(
+                "{capacity} rows do not fit its {} bytes",
+                base.len()
+            )));
         }
         Ok(Trace {
             _mapping: mapping,
@@ -321,7 +328,12 @@ mod tests {
             time_ns: 0,
             values: vec![],
         });
-        let mut out = vec![TraceEvent::Lost(1), TraceEvent::Lost(2), row.clone(), TraceEvent::Lost(4)];
+        let mut out = vec![
+            TraceEvent::Lost(1),
+            TraceEvent::Lost(2),
+            row.clone(),
+            TraceEvent::Lost(4),
+        ];
         merge_losses(&mut out, 0);
         assert_eq!(out, vec![TraceEvent::Lost(3), row, TraceEvent::Lost(4)]);
     }

@@ -1,6 +1,8 @@
-//! `plc get <segment> <name>...`: one consistent snapshot, every name from it.
+//! `plc get <segment> <name>...`: one consistent snapshot, every name from it, printed as
+//! the `--digits`, `--hex` and `--bin` flags ask (reals at full precision without them).
 
 use super::{Error, is_path, leaves_of, resolve, show};
+use crate::display::{self, Format};
 use plc_shm::DynSegment;
 
 /// One name of the command line: a variable or array element as before, or the values a
@@ -10,7 +12,7 @@ enum Wanted {
     Paths(Vec<plc_shm::PathLocation>),
 }
 
-pub fn run(segment: &str, names: &[String]) -> Result<(), Error> {
+pub fn run(segment: &str, names: &[String], format: &Format) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
     let wanted: Vec<Wanted> = names
         .iter()
@@ -25,12 +27,16 @@ pub fn run(segment: &str, names: &[String]) -> Result<(), Error> {
     let image = seg.snapshot_bytes()?;
     for (spec, w) in names.iter().zip(wanted) {
         match w {
-            Wanted::Flat(i, element) => println!("{spec} = {}", show(&seg, &image, i, element)),
+            Wanted::Flat(i, element) => {
+                println!("{spec} = {}", show(&seg, &image, i, element, format))
+            }
             Wanted::Paths(paths) => {
                 for at in paths {
                     let value = seg
                         .value_at_location(&image, &at)
-                        .map_or("?".to_string(), |v| v.to_string());
+                        .map_or("?".to_string(), |v| {
+                            display::value(&v, at.var.iec_type, format)
+                        });
                     println!("{} = {value}", at.path);
                 }
             }

@@ -23,7 +23,7 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
                     serde_json::json!({
                         "name": s.name, "pid": s.pid, "state": state(s),
                         "cycles": s.cycle_count, "variables": s.variables,
-                        "retain_failures": s.retain_failures,
+                        "retain_failures": s.retain_failures, "forces": s.forces,
                         "problem": s.problem.as_ref().map(|p| p.to_string()),
                     })
                 })
@@ -35,18 +35,19 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
             println!("no running plc-vars programs");
         }
         println!(
-            "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14}",
-            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES", "FAILED SAVES"
+            "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6}",
+            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES", "FAILED SAVES", "FORCED"
         );
         for s in &all {
             println!(
-                "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14}",
+                "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6}",
                 s.name,
                 s.pid,
                 state(s),
                 s.cycle_count,
                 s.variables,
-                s.retain_failures
+                s.retain_failures,
+                s.forces
             );
             if let Some(problem) = &s.problem {
                 println!("  {problem}");
@@ -64,6 +65,14 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
     );
     print_level(&seg.descriptor().variables, 0);
+    let forces = seg.status().forces;
+    if forces > 0 {
+        let what = if forces == 1 { "value" } else { "values" };
+        println!(
+            "\n{forces} {what} forced (`plc forces {}` lists them)",
+            seg.name()
+        );
+    }
     Ok(())
 }
 

@@ -3,8 +3,12 @@
 //! It runs until `--seconds` have passed, the program stops, or Ctrl-C / SIGTERM: the signals
 //! only ask the loop to end, so the rows still buffered are written before it exits. The file is
 //! also flushed every second, so `tail -f` follows it and a `kill -9` loses at most a second.
+//! Values keep full precision; a STRING cell a spreadsheet would run as a formula (`=1+1`) is
+//! written as text, and control characters in text are escaped (see [`csv_cell`]).
 
 use super::{Error, is_path, leaves_of, period_of, resolve, show};
+use crate::display::{Format, csv_cell, value};
+use plc_core::IecType;
 use plc_shm::DynSegment;
 use plc_shm::PathLocation;
 use std::io::Write;
@@ -16,18 +20,9 @@ use std::time::{Duration, Instant};
 /// How often the CSV file is flushed while logging.
 const FLUSH_EVERY: Duration = Duration::from_secs(1);
 
-/// A CSV field, quoted per RFC 4180 when it needs to be.
-fn field(s: &str) -> String {
-    if s.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", s.replace('"', "\"\""))
-    } else {
-        s.to_string()
-    }
-}
-
 /// A flag that SIGINT (Ctrl-C) and SIGTERM set instead of ending the process, so the rows
 /// still buffered are written; a second signal while the first is pending ends it at once.
-fn stop_on_signals() -> std::io::Result<Arc<AtomicBool>> {
+pub(super) fn stop_on_signals() -> std::io::Result<Arc<AtomicBool>> {
     let stop = Arc::new(AtomicBool::new(false));
     for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
         // First the exit if a stop is already pending, then the flag: handlers of one signal
@@ -75,7 +70,7 @@ pub fn run(
     let header: Vec<String> = ["time_s", "cycle"]
         .iter()
         .map(|s| s.to_string())
-        .chain(columns.iter().map(|(n, _)| field(n)))
+        .chain(columns.iter().map(|(n, _)| csv_cell(n, false)))
         .collect();
     writeln!(out, "{}", header.join(","))?;
     out.flush()?;
@@ -83,6 +78,8 @@ pub fn run(
     let mut next = start;
     let mut flushed = start;
     let mut rows = 0u64;
+    // Full precision: a log is data for other programs, not for the eye.
+    let full = Format::default();
     while !stop.load(Ordering::Acquire) && seconds.is_none_or(|s| start.elapsed().as_secs_f64() < s)
     {
         let image = match seg.snapshot_bytes() {
@@ -98,12 +95,17 @@ pub fn run(
             seg.status().cycle_count.to_string(),
         ];
         row.extend(columns.iter().map(|(_, c)| {
-            field(&match c {
-                Column::Flat(i, e) => show(&seg, &image, *i, *e),
-                Column::Path(at) => seg
-                    .value_at_location(&image, at)
-                    .map_or("?".to_string(), |v| v.to_string()),
-            })
+            match c {
+                Column::Flat(i, e) => csv_cell(
+                    &show(&seg, &image, *i, *e, &full),
+                    seg.descriptor().variables[*i].iec_type == IecType::String,
+                ),
+                Column::Path(at) => csv_cell(
+                    &seg.value_at_location(&image, at)
+                        .map_or("?".to_string(), |v| value(&v, at.var.iec_type, &full)),
+                    at.var.iec_type == IecType::String,
+                ),
+            }
         }));
         writeln!(out, "{}", row.join(","))?;
         rows += 1;

@@ -2,14 +2,17 @@
 
 pub mod bus;
 pub mod export;
+pub mod force;
 pub mod get;
 pub mod import;
 pub mod list;
 pub mod log;
 pub mod opcua;
 pub mod set;
+pub mod trace;
 pub mod watch;
 
+use crate::display::{self, Format};
 use plc_core::rules::path::segments;
 use plc_shm::{DynSegment, PathLocation, PathTarget, VarDescriptor};
 
@@ -88,26 +91,34 @@ pub fn resolve<'a>(
     Ok((i, var, element))
 }
 
-/// A variable's value (all elements of an array, as `[a, b, c]`) from an image.
-pub fn show(seg: &DynSegment, image: &[u8], index: usize, element: Option<usize>) -> String {
+/// A variable's value (all elements of an array, as `[a, b, c]`) from an image, as `f` asks.
+pub fn show(
+    seg: &DynSegment,
+    image: &[u8],
+    index: usize,
+    element: Option<usize>,
+    f: &Format,
+) -> String {
     let var = &seg.descriptor().variables[index];
-    let one = |e: usize| {
-        seg.value_at(image, index, e)
-            .map_or("?".into(), |v| match v {
-                plc_core::Value::Text(t) if var.dims.is_empty() || element.is_some() => {
-                    t.to_string()
-                }
-                plc_core::Value::Text(t) => format!("{:?}", t.as_str()),
-                other => other.to_string(),
-            })
+    let listed = element.is_none() && !var.dims.is_empty();
+    let one = |e: usize| match seg.value_at(image, index, e) {
+        None => "?".to_string(),
+        // In a list each string is quoted, so a comma or quote in it is not read as the list's.
+        Some(v @ plc_core::Value::Text(_)) if listed => {
+            format!(
+                "\"{}\"",
+                display::value(&v, var.iec_type, f).replace('"', "\\\"")
+            )
+        }
+        Some(v) => display::value(&v, var.iec_type, f),
     };
-    match element {
-        Some(e) => one(e),
-        None if var.dims.is_empty() => one(0),
-        None => format!(
+    if listed {
+        format!(
             "[{}]",
             (0..var.elements()).map(one).collect::<Vec<_>>().join(", ")
-        ),
+        )
+    } else {
+        one(element.unwrap_or(0))
     }
 }
 

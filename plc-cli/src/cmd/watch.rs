@@ -1,11 +1,13 @@
 //! `plc watch <segment>`: a live watch window (ratatui). Keys: `/` filter, arrows and
 //! PgUp/PgDn select, Enter write a value to the selected variable (checked as `plc set`
-//! checks), `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
+//! checks), `p` toggle reals between 6 significant digits (or `--digits`) and full precision,
+//! `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
 //! changed in the last second are highlighted. Structures and arrays of structures are a tree:
 //! Right (or Enter) opens the selected one, Left closes it. `PLC_WATCH_FRAME_LOG=FILE` appends
 //! each refresh's time to FILE (see [`frame_log`]).
 
 use super::{Error, period_of, set, show, type_text};
+use crate::display::{self, Format};
 use plc_shm::{DynSegment, PathLocation, PathTarget};
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind};
 use ratatui::layout::{Constraint, Layout};
@@ -15,6 +17,10 @@ use ratatui::widgets::{Block, Paragraph, Row, Table, TableState};
 use std::collections::{HashMap, HashSet};
 use std::io::Write;
 use std::time::{Duration, Instant};
+
+/// Significant digits of reals unless `--digits` says otherwise: enough to read a measurement,
+/// few enough that the last digits of a computed value do not flicker.
+const DIGITS: u8 = 6;
 
 enum Mode {
     Browse,
@@ -62,10 +68,15 @@ struct Watch {
     values: HashMap<String, String>,
     changed: HashMap<String, Instant>,
     message: String,
+    /// How values are shown now.
+    format: Format,
+    /// The digits reals are rounded to when not at full precision.
+    digits: u8,
 }
 
 impl Watch {
-    fn new(seg: DynSegment, filter: Option<String>) -> Watch {
+    fn new(seg: DynSegment, filter: Option<String>, format: Format) -> Watch {
+        let digits = format.digits.unwrap_or(DIGITS);
         let vars = &seg.descriptor().variables;
         // Each word's bools in one pass: a scan of all variables per word is quadratic, and
         // a program of 4,000 variables would wait for it at every start.
@@ -95,6 +106,11 @@ impl Watch {
             values: HashMap::new(),
             changed: HashMap::new(),
             message: String::new(),
+            format: Format {
+                digits: Some(digits),
+                ..format
+            },
+            digits,
         };
         w.rebuild();
         w
@@ -156,12 +172,14 @@ impl Watch {
         let mut fresh = Vec::with_capacity(self.entries.len());
         for e in &self.entries {
             let value = match e {
-                Entry::Var(i) => show(&self.seg, &image, *i, None),
+                Entry::Var(i) => show(&self.seg, &image, *i, None, &self.format),
                 Entry::Group { .. } => String::new(),
                 Entry::Leaf { at, .. } => self
                     .seg
                     .value_at_location(&image, at)
-                    .map_or("?".into(), |v| v.to_string()),
+                    .map_or("?".into(), |v| {
+                        display::value(&v, at.var.iec_type, &self.format)
+                    }),
             };
             fresh.push((e.key(self).to_string(), value));
         }
@@ -197,6 +215,17 @@ impl Watch {
         self.rebuild();
         let _ = self.refresh();
         true
+    }
+
+    /// Switches reals between the rounded digits and full precision, and shows them so at
+    /// once; nothing is highlighted as changed, since no value changed.
+    fn toggle_precision(&mut self) {
+        self.format.digits = match self.format.digits {
+            Some(_) => None,
+            None => Some(self.digits),
+        };
+        self.values.clear();
+        let _ = self.refresh();
     }
 
     fn selected_entry(&self) -> Option<&Entry> {
@@ -315,10 +344,13 @@ impl Watch {
                 format!("{name} = {input}_   (Enter write, Esc cancel)")
             }
             Mode::Browse if !self.message.is_empty() => self.message.clone(),
-            Mode::Browse => {
-                "q quit | / filter | up/down select | right/left open/close | Enter write value"
-                    .into()
-            }
+            Mode::Browse => format!(
+                "q quit | / filter | up/down select | right/left open/close | Enter write value | p {}",
+                match self.format.digits {
+                    Some(_) => "full precision".to_string(),
+                    None => format!("{} digits", self.digits),
+                }
+            ),
         };
         f.render_widget(Line::from(foot_text), foot);
     }
@@ -350,21 +382,25 @@ impl Watch {
                 KeyCode::Enter => {
                     let input = input.clone();
                     self.mode = Mode::Browse;
-                    let name = match self.selected_entry() {
+                    let target = match self.selected_entry() {
                         Some(Entry::Var(i)) => {
-                            Some(self.seg.descriptor().variables[*i].name.clone())
+                            let v = &self.seg.descriptor().variables[*i];
+                            Some((v.name.clone(), v.iec_type))
                         }
-                        Some(Entry::Leaf { at, .. }) => Some(at.path.clone()),
+                        Some(Entry::Leaf { at, .. }) => Some((at.path.clone(), at.var.iec_type)),
                         _ => None,
                     };
-                    if let Some(name) = name {
+                    if let Some((name, iec_type)) = target {
                         let result =
                             set::check(&self.seg, &format!("{name}={input}")).and_then(|t| {
                                 self.seg.write_checked(&[t.write])?;
                                 Ok(t.write.write().value)
                             });
                         self.message = match result {
-                            Ok(v) => format!("wrote {name} = {v}"),
+                            Ok(v) => format!(
+                                "wrote {name} = {}",
+                                display::value(&v, iec_type, &self.format)
+                            ),
                             Err(e) => format!("not written: {e}"),
                         };
                     }
@@ -378,6 +414,7 @@ impl Watch {
                 match code {
                     KeyCode::Char('q') | KeyCode::Esc => return false,
                     KeyCode::Char('/') => self.mode = Mode::Filter,
+                    KeyCode::Char('p') => self.toggle_precision(),
                     KeyCode::Down => self.table.select(Some((sel + 1).min(n.saturating_sub(1)))),
                     KeyCode::Up => self.table.select(Some(sel.saturating_sub(1))),
                     KeyCode::PageDown => {
@@ -402,10 +439,10 @@ impl Watch {
     }
 }
 
-pub fn run(segment: &str, filter: Option<String>, rate: f64) -> Result<(), Error> {
+pub fn run(segment: &str, filter: Option<String>, rate: f64, format: Format) -> Result<(), Error> {
     let period = period_of(rate, 1000.0, "refreshes")?;
     let seg = DynSegment::attach(segment)?;
-    let mut w = Watch::new(seg, filter);
+    let mut w = Watch::new(seg, filter, format);
     w.refresh()?;
     let mut frame_log = frame_log()?;
     let mut terminal = ratatui::init();

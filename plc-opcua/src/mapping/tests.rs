@@ -254,6 +254,57 @@ fn refusals_map_to_the_status_codes_of_the_standard() {
 }
 
 #[test]
+fn a_write_to_a_forced_value_is_refused_as_locked() {
+    let forced = ShmError::Forced {
+        name: "s".into(),
+        variable: "speed".into(),
+        reason: "`speed` is forced (by uid 1000 since 2026-12-03 21:35:52 UTC): release it first"
+            .into(),
+    };
+    assert_eq!(write_refusal(&forced), StatusCode::BadLocked);
+    // A program's own refusal is another thing: not a lock.
+    let rejected = ShmError::WriteRejected {
+        name: "s".into(),
+        variable: "speed".into(),
+        reason: "too fast".into(),
+    };
+    assert_ne!(write_refusal(&rejected), StatusCode::BadLocked);
+}
+
+#[test]
+fn a_forced_value_reads_as_overridden_while_its_owner_runs() {
+    assert_eq!(
+        forced_status(StatusCode::Good, true),
+        StatusCode::GoodLocalOverride
+    );
+    assert_eq!(forced_status(StatusCode::Good, false), StatusCode::Good);
+    // The owner's state says more: its values are stale or gone, forced or not.
+    for status in [
+        StatusCode::UncertainLastUsableValue,
+        StatusCode::BadNoCommunication,
+    ] {
+        assert_eq!(forced_status(status, true), status);
+    }
+}
+
+#[test]
+fn a_node_holds_a_force_when_one_of_its_own_values_is_forced() {
+    // Variable 2's leaf 7 (an element of an array, or a member's), variable 4's leaf 0.
+    let forced = [(2, 7), (4, 0)];
+    assert!(holds_force(&forced, 2, 0, 10), "the whole array");
+    assert!(holds_force(&forced, 2, 7, 1), "the one element's member");
+    assert!(
+        holds_force(&forced, 2, 5, 3),
+        "a member array from leaf 5 to 7"
+    );
+    assert!(!holds_force(&forced, 2, 0, 7), "leaves 0 to 6 only");
+    assert!(!holds_force(&forced, 2, 8, 4), "the leaves after it");
+    assert!(!holds_force(&forced, 3, 0, 100), "another variable");
+    assert!(holds_force(&forced, 4, 0, 1));
+    assert!(!holds_force(&[], 4, 0, 1));
+}
+
+#[test]
 fn the_owners_state_decides_the_status_of_its_values() {
     assert_eq!(value_status(OwnerState::Running), StatusCode::Good);
     assert_eq!(

@@ -14,6 +14,13 @@
         writes with index ranges to `row` (INT[6]) and `plane` (INT[2,3]) set exactly the
         selected elements; a range past the end or of the wrong rank is refused; a change made
         while a monitored item is Disabled is reported once it is enabled again
+    opcua_client.py forced URL SEGMENT USER PASSWORD
+        with `setpoint` (LREAL) forced to 2.5 and `row[2]` (INT[4]) to 40: both read with their
+        forced value and GoodLocalOverride, `feed` beside them Good, their AccessLevel as
+        before; a write of `setpoint` or of the whole `row` is refused with BadLocked and
+        changes nothing, a write of `row[0]` alone is applied
+    opcua_client.py released URL SEGMENT USER PASSWORD
+        once released: `setpoint` and `row` read Good, and a write of `setpoint` = 7 is applied
 
 Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the first that fails.
 """
@@ -514,6 +521,68 @@ async def run_ranges(url, segment, user, password):
         await other.delete()
 
 
+def user_client(url, user, password):
+    client = Client(url)
+    client.set_user(user)
+    client.set_password(password)
+    return client
+
+
+async def becomes_status(client, node_id, want, what):
+    """Waits (at most 5 s) until the node's value reads with status `want`; its DataValue."""
+    deadline = time.time() + 5
+    while (dv := await status_of(client, node_id)).StatusCode.name != want:
+        check(time.time() < deadline, f"{what}: expected {want}, still {dv.StatusCode.name}")
+        await asyncio.sleep(0.02)
+    return dv
+
+
+async def run_forced(url, segment, user, password):
+    async with user_client(url, user, password) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        setpoint, feed, row = (ua.NodeId(n, ns) for n in ("setpoint", "feed", "row"))
+        dv = await becomes_status(client, setpoint, "GoodLocalOverride", "forced setpoint")
+        check(dv.Value.Value == 2.5, f"forced setpoint reads {dv.Value.Value}")
+        ok("the forced setpoint reads 2.5, GoodLocalOverride")
+        dv = await becomes_status(client, row, "GoodLocalOverride", "row with row[2] forced")
+        check(list(dv.Value.Value)[2] == 40, f"row reads {dv.Value.Value}")
+        ok(f"row, its element 2 forced, reads {list(dv.Value.Value)}, GoodLocalOverride")
+        expect_status((await status_of(client, feed)).StatusCode, "Good", "feed, not forced")
+        for node_id in (setpoint, row):
+            level = (await status_of(client, node_id, ua.AttributeIds.AccessLevel)).Value.Value
+            check(level == READ | WRITE, f"{node_id.Identifier}: AccessLevel {level}")
+        ok("a forced node's AccessLevel is unchanged (writable once released)")
+        status = await write_status(client, setpoint, ua.Variant(7.0, ua.VariantType.Double))
+        expect_status(status, "BadLocked", "write the forced setpoint")
+        status = await write_status(client, row, ua.Variant([1, 2, 3, 4], ua.VariantType.Int16))
+        expect_status(status, "BadLocked", "write the whole row, its element 2 forced")
+        expect_status(await write_range(client, row, [9], "0"), "Good",
+                      "write row[0], not forced")
+        deadline = time.time() + 5
+        while (got := list(await client.get_node(row).read_value())) != [9, 0, 40, 0]:
+            check(time.time() < deadline, f"row: expected [9, 0, 40, 0], still {got}")
+            await asyncio.sleep(0.02)
+        check(await client.get_node(setpoint).read_value() == 2.5,
+              "a refused write changed the forced setpoint")
+        ok(f"row is {got}: the refused writes changed nothing")
+
+
+async def run_released(url, segment, user, password):
+    async with user_client(url, user, password) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        setpoint, row = ua.NodeId("setpoint", ns), ua.NodeId("row", ns)
+        await becomes_status(client, setpoint, "Good", "released setpoint")
+        await becomes_status(client, row, "Good", "released row")
+        ok("released, setpoint and row read Good")
+        status = await write_status(client, setpoint, ua.Variant(7.0, ua.VariantType.Double))
+        expect_status(status, "Good", "write the released setpoint = 7")
+        deadline = time.time() + 5
+        while (got := await client.get_node(setpoint).read_value()) != 7.0:
+            check(time.time() < deadline, f"setpoint: expected 7.0, still {got}")
+            await asyncio.sleep(0.02)
+        ok("setpoint reads 7.0")
+
+
 def main():
     try:
         if sys.argv[1] == "check":
@@ -524,6 +593,10 @@ def main():
             asyncio.run(run_values(*sys.argv[2:5]))
         elif sys.argv[1] == "ranges":
             asyncio.run(run_ranges(*sys.argv[2:6]))
+        elif sys.argv[1] == "forced":
+            asyncio.run(run_forced(*sys.argv[2:6]))
+        elif sys.argv[1] == "released":
+            asyncio.run(run_released(*sys.argv[2:6]))
         else:
             raise Failed(f"unknown command {sys.argv[1]}")
     except Failed as e:

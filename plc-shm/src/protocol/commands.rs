@@ -81,7 +81,7 @@ fn encode_values(out: &mut Vec<u8>, values: &[(usize, usize)]) {
 pub fn encode_release(release: &Release) -> Vec<u8> {
     let mut out = vec![TAG_RELEASE];
     out.extend_from_slice(&release.id.to_le_bytes());
-    out.push(u8::from(release.restore) * RESTORE | u8::from(release.all) * ALL);
+    out.push((u8::from(release.restore) * RESTORE) | (u8::from(release.all) * ALL));
     encode_values(&mut out, &release.values);
     out
 }
