@@ -477,6 +477,18 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
     wait_until("the window to confirm the write", || {
         screen().contains("wrote speed_setpoint = 2500")
     });
+    // A forced value is marked, and the header counts the forces.
+    assert!(
+        plc(&["force", &owner.segment, "speed_setpoint=3000"])
+            .status
+            .success()
+    );
+    wait_until("the force marked", || {
+        let s = screen();
+        s.contains("F 3000") && s.contains("1 forced (F)")
+    });
+    assert!(plc(&["unforce", &owner.segment, "--all"]).status.success());
+    wait_until("the mark gone", || !screen().contains("F 3000"));
     tmux(&["send-keys", "-t", &session, "q"]);
     wait_until("watch to quit", || {
         !tmux(&["has-session", "-t", &session]).status.success()

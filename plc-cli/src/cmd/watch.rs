@@ -2,7 +2,7 @@
 //! PgUp/PgDn select, Enter write a value to the selected variable (checked as `plc set`
 //! checks), `p` toggle reals between 6 significant digits (or `--digits`) and full precision,
 //! `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
-//! changed in the last second are highlighted. Structures and arrays of structures are a tree:
+//! changed in the last second are highlighted; forced values (`plc force`) are marked `F`. Structures and arrays of structures are a tree:
 //! Right (or Enter) opens the selected one, Left closes it. `PLC_WATCH_FRAME_LOG=FILE` appends
 //! each refresh's time to FILE (see [`frame_log`]).
 
@@ -72,6 +72,9 @@ struct Watch {
     format: Format,
     /// The digits reals are rounded to when not at full precision.
     digits: u8,
+    /// The values forced now, as (variable, leaf), and the variables holding one.
+    forced: HashSet<(usize, usize)>,
+    forced_vars: HashSet<usize>,
 }
 
 impl Watch {
@@ -111,6 +114,8 @@ impl Watch {
                 ..format
             },
             digits,
+            forced: HashSet::new(),
+            forced_vars: HashSet::new(),
         };
         w.rebuild();
         w
@@ -168,6 +173,15 @@ impl Watch {
 
     fn refresh(&mut self) -> Result<(), Error> {
         let image = self.seg.snapshot_bytes()?;
+        // The table of forces is read only while the status block counts some.
+        self.forced.clear();
+        self.forced_vars.clear();
+        if self.seg.status().forces > 0 {
+            for f in self.seg.forces()? {
+                self.forced.insert((f.index, f.leaf));
+                self.forced_vars.insert(f.index);
+            }
+        }
         let now = Instant::now();
         let mut fresh = Vec::with_capacity(self.entries.len());
         for e in &self.entries {
@@ -259,6 +273,10 @@ impl Watch {
             st.bus_state,
             if st.bus_fault { " FAULT" } else { "" },
         );
+        let header = match st.forces {
+            0 => header,
+            n => format!("{header} | {n} forced (F)"),
+        };
         f.render_widget(
             Paragraph::new(header).block(Block::bordered().title(" plc watch ")),
             head,
@@ -299,8 +317,19 @@ impl Watch {
                 ),
             };
             let key = entry.key(self);
-            let mut value =
-                ratatui::text::Span::raw(self.values.get(key).cloned().unwrap_or_default());
+            let forced = match entry {
+                Entry::Var(i) => self.forced_vars.contains(i),
+                Entry::Leaf { at, .. } => self.forced.contains(&(at.index, at.leaf)),
+                Entry::Group { .. } => false,
+            };
+            let text = self.values.get(key).cloned().unwrap_or_default();
+            let mut value = if forced {
+                ratatui::text::Span::raw(format!("F {text}"))
+                    .magenta()
+                    .bold()
+            } else {
+                ratatui::text::Span::raw(text)
+            };
             if self
                 .changed
                 .get(key)
