@@ -125,7 +125,7 @@ fn tower(log: &Path) -> Option<String> {
 fn a_forced_lamp_lights_the_simulated_tower_and_a_forced_input_drives_the_program() {
     let dir = scratch("tower");
     let segment = format!("cm_tower_{}", std::process::id());
-    let (_program, log) = tensile_tester(&dir, &segment);
+    let (program, log) = tensile_tester(&dir, &segment);
     // The program writes `lamp_red` FALSE every cycle (no fault): forced, the EL2004 shows it on.
     let out = plc(&["force", &segment, "lamp_red=true"]);
     assert!(out.status.success(), "{}", stderr(&out));
@@ -134,14 +134,21 @@ fn a_forced_lamp_lights_the_simulated_tower_and_a_forced_input_drives_the_progra
         tower(&log).is_some_and(|t| t.split(' ').nth(2) == Some("R"))
     });
     assert_eq!(get(&segment, "lamp_red"), "true");
-    assert_eq!(get(&segment, "fault_text"), "", "no fault: the program writes it off");
+    assert_eq!(
+        get(&segment, "fault_text"),
+        "",
+        "no fault: the program writes it off"
+    );
     // A write to it is refused, naming the force and who holds it.
     let refused = plc(&["set", &segment, "lamp_red=false"]);
     assert!(!refused.status.success());
     let why = stderr(&refused);
     assert!(why.contains("`lamp_red` is forced (by uid"), "{why}");
     let listed = stdout(&plc(&["forces", &segment]));
-    assert!(listed.contains("lamp_red") && listed.contains("true"), "{listed}");
+    assert!(
+        listed.contains("lamp_red") && listed.contains("true"),
+        "{listed}"
+    );
     let list = stdout(&plc(&["list", &segment]));
     assert!(list.contains("1 value forced"), "{list}");
 
@@ -154,7 +161,10 @@ fn a_forced_lamp_lights_the_simulated_tower_and_a_forced_input_drives_the_progra
         get(&segment, "tests_completed").parse::<u64>().unwrap() > before
     });
     let max: f64 = get(&segment, "max_force_kn").parse().unwrap();
-    assert!(max < 0.5, "the test ended at {max} kN: the forced break was not seen");
+    assert!(
+        max < 0.5,
+        "the test ended at {max} kN: the forced break was not seen"
+    );
 
     // Released: without --restore the program's next value stands; --all ends the rest.
     let out = plc(&["unforce", &segment, "lamp_red"]);
@@ -163,8 +173,30 @@ fn a_forced_lamp_lights_the_simulated_tower_and_a_forced_input_drives_the_progra
         tower(&log).is_some_and(|t| t.split(' ').nth(2) == Some("r"))
     });
     let out = plc(&["unforce", &segment, "--all", "--restore"]);
-    assert_eq!(stdout(&out).trim(), "1 force released (restored to the value before the force)");
+    assert_eq!(
+        stdout(&out).trim(),
+        "1 force released (restored to the value before the force)"
+    );
     assert!(stdout(&plc(&["forces", &segment])).contains("no forces held"));
+
+    // Each force and release is in the program's log with its uid; a stop says what it ends.
+    assert!(
+        plc(&["force", &segment, "lamp_green=true"])
+            .status
+            .success()
+    );
+    let mut program = program;
+    assert!(terminate(&mut program.0), "a clean stop");
+    let text = std::fs::read_to_string(&log).unwrap();
+    let uid = plc_io::shm::euid();
+    for line in [
+        format!("uid {uid} forces `lamp_red` = true"),
+        format!("uid {uid} releases `lamp_red` (forced by uid {uid})"),
+        format!("uid {uid} releases `specimen_broken` (forced by uid {uid}, false restored)"),
+        "the program stops with 1 force held, which ends with it: `lamp_green` = true".into(),
+    ] {
+        assert!(text.contains(&line), "`{line}` in the log:\n{text}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -180,14 +212,23 @@ fn unforce_with_restore_puts_back_the_value_from_before_the_force() {
     assert_eq!(get(&segment, "speed"), "1.25");
     // Not forced any more: a second release is refused, naming the value.
     let again = plc(&["unforce", &segment, "speed"]);
-    assert!(stderr(&again).contains("`speed` is not forced"), "{}", stderr(&again));
+    assert!(
+        stderr(&again).contains("`speed` is not forced"),
+        "{}",
+        stderr(&again)
+    );
 }
 
 /// The rows of a trace CSV: (cycle, time_s, values...).
 fn rows(csv: &Path) -> (Vec<String>, Vec<Vec<String>>) {
     let text = std::fs::read_to_string(csv).unwrap();
     let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(str::to_string).collect();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
     let rows = lines
         .map(|l| l.split(',').map(str::to_string).collect())
         .collect();
@@ -265,9 +306,15 @@ fn a_trigger_keeps_exactly_pre_and_post_rows_and_the_plot_shows_them() {
     let (_, rows) = rows(&csv);
     assert_eq!(rows.len(), 100 + 1 + 250);
     let fired = (at + 1).to_string();
-    assert_eq!(rows[100][0], fired, "the trigger row is the first with counter > {at}");
+    assert_eq!(
+        rows[100][0], fired,
+        "the trigger row is the first with counter > {at}"
+    );
     assert_eq!(rows[100][1], "0.000000000", "time zero is the trigger");
-    assert!(rows[0][1].starts_with('-'), "rows before the trigger have negative times");
+    assert!(
+        rows[0][1].starts_with('-'),
+        "rows before the trigger have negative times"
+    );
     assert_eq!(rows[0][0], (at + 1 - 100).to_string());
     assert_eq!(rows[350][0], (at + 1 + 250).to_string());
     assert!(stderr(&out).contains(&format!("triggered at cycle {fired}")));
@@ -283,7 +330,10 @@ fn a_trigger_keeps_exactly_pre_and_post_rows_and_the_plot_shows_them() {
         .map(str::trim)
         .collect();
     for want in ["counter", "blink", "trigger", "time from trigger (s)"] {
-        assert!(texts.iter().any(|t| t.contains(want)), "{want} in {texts:?}");
+        assert!(
+            texts.iter().any(|t| t.contains(want)),
+            "{want} in {texts:?}"
+        );
     }
     let lines = doc
         .descendants()

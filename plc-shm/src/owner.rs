@@ -442,9 +442,13 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         // Forces end with the program: say which were still held.
         let held = self.inbox.forces.borrow().held_lines();
         if !held.is_empty() {
+            let (n, what) = match held.len() {
+                1 => (1, "force held, which ends"),
+                n => (n, "forces held, which end"),
+            };
             log::warn!(target: "plc_io::shm",
-                "segment `{}`: the program stops with {} forces held, which end with it: {}",
-                self.name(), held.len(), held.join("; "));
+                "segment `{}`: the program stops with {n} {what} with it: {}",
+                self.name(), held.join("; "));
         }
         for r in self.inbox.recordings.borrow().iter() {
             r.end();
