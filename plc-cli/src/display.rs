@@ -148,7 +148,7 @@ fn bits_of(v: &Value, iec_type: IecType) -> u128 {
 fn literal(prefix: &str, digits: &str) -> String {
     let mut out = String::from(prefix);
     for (i, c) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i) % 4 == 0 {
+        if i > 0 && (digits.len() - i).is_multiple_of(4) {
             out.push('_');
         }
         out.push(c);
