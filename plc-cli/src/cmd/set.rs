@@ -4,6 +4,7 @@
 //! for its answer and reports the program's refusal, naming the variable and the reason.
 
 use super::{Error, is_path, resolve};
+use crate::display::{self, Format};
 use plc_core::Value;
 use plc_core::write::{Checked, Write};
 use plc_shm::DynSegment;
@@ -13,6 +14,8 @@ use plc_shm::DynSegment;
 pub struct Assignment {
     pub label: String,
     pub write: Checked,
+    /// The type of the value written, to print it as that type.
+    pub iec_type: plc_core::IecType,
 }
 
 /// Parses `name=value` (or `path=value`) and checks it against the segment with the one write
@@ -35,7 +38,11 @@ pub fn check(seg: &DynSegment, assignment: &str) -> Result<Assignment, Error> {
     };
     let value = Value::parse(text, iec_type).map_err(|e| format!("`{label}`: {e}"))?;
     let write = seg.check_write(Write { index, leaf, value })?;
-    Ok(Assignment { label, write })
+    Ok(Assignment {
+        label,
+        write,
+        iec_type,
+    })
 }
 
 pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
@@ -57,7 +64,8 @@ pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
             .into());
         }
         for a in part {
-            println!("{} <- {}", a.label, a.write.write().value);
+            let value = display::value(&a.write.write().value, a.iec_type, &Format::default());
+            println!("{} <- {value}", display::escape_text(&a.label));
         }
     }
     Ok(())
