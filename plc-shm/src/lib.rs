@@ -50,6 +50,7 @@ mod guard;
 mod ids;
 mod io_status;
 mod layout;
+mod log_limit;
 pub mod mailbox;
 mod memfd;
 mod owner;
@@ -79,6 +80,7 @@ pub use paths::{PathLocation, PathTarget};
 pub use policy::Sharing;
 pub use priority::normal_priority;
 pub use rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
+pub use server::{GREETING_GRACE, MAX_CONNECTIONS, MAX_PER_UID, RESERVED_FOR_WRITERS};
 pub use status::{OwnerState, RunState, Status};
 
 /// A running (or left behind) segment, as `plc list` shows it.

@@ -1,7 +1,9 @@
 //! The owner's socket server: threads of their own, never the cycle thread's time.
 //!
-//! One thread accepts connections (at most [`MAX_CONNECTIONS`], [`MAX_PER_UID`] of one user),
-//! learns each peer's credentials, and sends it the greeting with the segment's descriptor.
+//! One thread accepts connections (at most [`MAX_CONNECTIONS`], [`MAX_PER_UID`] of one user, the
+//! last [`RESERVED_FOR_WRITERS`] only for tools that may write), learns each peer's
+//! credentials, and sends it the greeting with the segment's descriptor; a tool that has not
+//! taken it within [`GREETING_GRACE`] is disconnected. Refusals are logged at a bounded rate.
 //! Each connection then has a thread that receives its requests (one message each, at most
 //! [`protocol::MAX_MESSAGE`] bytes), refuses a writer the policy does not let write, decodes
 //! and checks each request against the program's declaration and queues it (bounded, and at
@@ -12,6 +14,7 @@
 //! connection. The accepting thread also writes the lines the cycle leaves for the log.
 
 use super::layout::{Base, Offsets};
+use super::log_limit::LogLimit;
 use super::mailbox::{Batch, Conn, Count, Counters, Kind};
 use super::policy::Policy;
 use super::protocol::{self, Code};
@@ -29,8 +32,14 @@ use std::time::Duration;
 
 /// Connections at once.
 pub const MAX_CONNECTIONS: usize = 64;
+/// Of those, the places kept for tools that may write (the owner's uid, the write group):
+/// readers of other uids cannot lock out `plc set` or the OPC UA server.
+pub const RESERVED_FOR_WRITERS: usize = 8;
 /// Connections of one user at once: one user cannot take every place.
 pub const MAX_PER_UID: usize = 32;
+/// How long a tool has to take its greeting (and the segment with it): a connection that
+/// holds no segment after that is closed, so idle connections cannot keep places.
+pub const GREETING_GRACE: Duration = Duration::from_secs(5);
 /// Requests of one connection waiting for the cycle thread.
 pub const MAX_OUTSTANDING: usize = 64;
 /// Requests waiting for the cycle thread, from all connections.
@@ -58,6 +67,8 @@ struct Shared {
     traces: AtomicUsize,
     /// Lines the cycle thread logs (forces), written here.
     log: Mutex<Receiver<String>>,
+    /// Refusals and closed connections, logged at a bounded rate.
+    refusals: LogLimit,
 }
 
 #[derive(Default)]
@@ -106,6 +117,7 @@ impl Server {
             conns: Mutex::new(Registry::default()),
             traces: AtomicUsize::new(0),
             log: Mutex::new(setup.log),
+            refusals: LogLimit::default(),
         });
         let listener = Arc::new(listener);
         let (s, l) = (shared.clone(), listener.clone());
@@ -192,8 +204,15 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
         let _ = t.join();
     }
     let mine = reg.per_uid.get(&peer.uid).copied().unwrap_or(0);
+    let writer = shared.policy.may_write(&peer);
     let full = if reg.open.len() >= MAX_CONNECTIONS {
         Some(format!("it has {MAX_CONNECTIONS} connections already"))
+    } else if !writer && reg.open.len() >= MAX_CONNECTIONS - RESERVED_FOR_WRITERS {
+        Some(format!(
+            "it has {} connections, and keeps the last {RESERVED_FOR_WRITERS} places for \
+             tools that may write",
+            reg.open.len()
+        ))
     } else if mine >= MAX_PER_UID {
         Some(format!(
             "uid {} has {MAX_PER_UID} connections already",
@@ -207,6 +226,12 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
         outstanding: Default::default(),
     });
     if let Some(why) = full {
+        shared.refusals.warn(|| {
+            format!(
+                "segment `{}`: turned away a connection of uid {} (pid {}): {why}",
+                shared.name, peer.uid, peer.pid
+            )
+        });
         conn.answer(
             0,
             Code::Busy,
@@ -240,8 +265,40 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
     }
 }
 
+/// Waits until the tool has taken its greeting (and the segment), at most [`GREETING_GRACE`];
+/// whether it did.
+fn greeting_taken(shared: &Shared, conn: &Conn, peer: &Peer) -> bool {
+    let fd = conn.fd.as_raw_fd();
+    let start = std::time::Instant::now();
+    loop {
+        match unix::unread(fd) {
+            Ok(0) => return true,
+            Ok(_) => {}
+            // Unknown: do not close what may be a working tool.
+            Err(_) => return true,
+        }
+        if shared.stop.load(Relaxed) || unix::hung_up(fd) {
+            return false;
+        }
+        if start.elapsed() >= GREETING_GRACE {
+            shared.refusals.warn(|| {
+                format!(
+                    "segment `{}`: closed a connection of uid {} (pid {}) that did not take the \
+                     segment within {GREETING_GRACE:?}",
+                    shared.name, peer.uid, peer.pid
+                )
+            });
+            return false;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
 /// Receives one connection's requests until it closes or the server stops.
 fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
+    if !greeting_taken(shared, conn, peer) {
+        return;
+    }
     let mut session = Session {
         shared,
         conn,
@@ -320,7 +377,9 @@ impl Session<'_> {
             .counters
             .add(Count::Refused, 1, &shared.base, &shared.off);
         let text = shared.policy.refusal(self.peer, &shared.name);
-        log::warn!(target: "plc_io::shm", "segment `{}`: {text}", shared.name);
+        shared
+            .refusals
+            .warn(|| format!("segment `{}`: {text}", shared.name));
         self.conn.answer(id, Code::Refused, 0, text);
     }
 

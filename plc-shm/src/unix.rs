@@ -127,6 +127,15 @@ pub fn hung_up(fd: RawFd) -> bool {
     n > 0 && p.revents & (libc::POLLHUP | libc::POLLRDHUP | libc::POLLERR | libc::POLLNVAL) != 0
 }
 
+/// Bytes this end sent that the peer has not read yet (`SIOCOUTQ`): a tool that took its
+/// greeting, and the segment with it, leaves none.
+pub fn unread(fd: RawFd) -> io::Result<usize> {
+    let mut n: libc::c_int = 0;
+    // SAFETY: TIOCOUTQ (SIOCOUTQ) writes one int through the pointer given.
+    check(unsafe { libc::ioctl(fd, libc::TIOCOUTQ, &mut n) })?;
+    Ok(usize::try_from(n).unwrap_or(0))
+}
+
 /// Accepts a connection, or `None` if none is waiting.
 pub fn accept(listener: &OwnedFd) -> io::Result<Option<OwnedFd>> {
     // SAFETY: plain system call; no address is asked for.

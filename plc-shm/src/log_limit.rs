@@ -1,0 +1,70 @@
+//! Refusals logged at a bounded rate: a process that sends thousands of refused requests a
+//! second must not fill the owner's log (or its disk), and must not hide either: the line
+//! after a quiet spell says how many were not logged.
+
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// Lines per window at most.
+const LINES: u32 = 10;
+/// The window.
+const WINDOW: Duration = Duration::from_secs(10);
+
+/// Lets through at most ten lines every ten seconds, counting the rest.
+#[derive(Debug, Default)]
+pub(crate) struct LogLimit(Mutex<State>);
+
+#[derive(Debug, Default)]
+struct State {
+    since: Option<Instant>,
+    lines: u32,
+    suppressed: u64,
+}
+
+impl LogLimit {
+    /// Logs `line` (built only if it will be logged) as a warning, or counts it.
+    pub fn warn(&self, line: impl FnOnce() -> String) {
+        if let Some(note) = self.allow(Instant::now()) {
+            log::warn!(target: "plc_io::shm", "{}{note}", line());
+        }
+    }
+
+    /// Whether a line may be logged at `now`: `Some` with a note of the lines suppressed
+    /// before it (empty if none), or `None`.
+    fn allow(&self, now: Instant) -> Option<String> {
+        let mut s = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        if s.since.is_none_or(|t| now.duration_since(t) >= WINDOW) {
+            s.since = Some(now);
+            s.lines = 0;
+        }
+        if s.lines >= LINES {
+            s.suppressed += 1;
+            return None;
+        }
+        s.lines += 1;
+        Some(match std::mem::take(&mut s.suppressed) {
+            0 => String::new(),
+            n => format!(" ({n} more like it were not logged in the last {WINDOW:?})"),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ten_lines_a_window_and_the_next_says_how_many_were_not_logged() {
+        let limit = LogLimit::default();
+        let t = Instant::now();
+        for _ in 0..10 {
+            assert_eq!(limit.allow(t).as_deref(), Some(""));
+        }
+        for _ in 0..500 {
+            assert_eq!(limit.allow(t + Duration::from_secs(1)), None);
+        }
+        let next = limit.allow(t + WINDOW).unwrap();
+        assert!(next.contains("500 more like it"), "{next}");
+        assert_eq!(limit.allow(t + WINDOW).as_deref(), Some(""));
+    }
+}
