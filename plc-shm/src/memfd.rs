@@ -1,7 +1,8 @@
 //! The segment's memory: an anonymous file (`memfd_create`) that exists only as long as a
 //! process holds it, sized once and sealed so that nobody can change its size
 //! (`F_SEAL_SHRINK | F_SEAL_GROW`), nor, once its owner mapped it writable, map it writable or
-//! write it (`F_SEAL_FUTURE_WRITE`), nor add or remove seals (`F_SEAL_SEAL`). Tools receive
+//! write it (`F_SEAL_FUTURE_WRITE`), nor add or remove seals (`F_SEAL_SEAL`), and, where the
+//! kernel has it, never executable (`MFD_NOEXEC_SEAL`). Tools receive
 //! the descriptor over the segment's socket and map it read-only: the seals are the kernel's,
 //! so they hold against any process, the owner's own user's included.
 
@@ -72,13 +73,27 @@ impl Mapping {
         // The name is only what /proc/<pid>/fd shows; it need not be unique.
         let label = std::ffi::CString::new(format!("plc.{name}"))
             .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
-        // SAFETY: a valid C string; the descriptor returned is ours.
-        let raw = unsafe {
-            libc::memfd_create(label.as_ptr(), libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC)
+        let create = |flags: libc::c_uint| {
+            // SAFETY: a valid C string; the descriptor returned is ours.
+            let raw = unsafe {
+                libc::memfd_create(
+                    label.as_ptr(),
+                    libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC | flags,
+                )
+            };
+            if raw < 0 {
+                Err(io::Error::last_os_error())
+            } else {
+                Ok(raw)
+            }
         };
-        if raw < 0 {
-            return Err(io::Error::last_os_error());
-        }
+        // Never executable (`F_SEAL_EXEC` with it), which kernels set to `vm.memfd_noexec=2`
+        // require; a kernel before 6.3 does not know the flag and refuses it (EINVAL): the
+        // segment is then made as those kernels make every memfd.
+        let raw = match create(libc::MFD_NOEXEC_SEAL) {
+            Err(e) if e.raw_os_error() == Some(libc::EINVAL) => create(0)?,
+            made => made?,
+        };
         // SAFETY: a fresh descriptor nobody else owns.
         let fd = unsafe { OwnedFd::from_raw_fd(raw) };
         // SAFETY: plain system call on our descriptor.
@@ -163,5 +178,24 @@ impl Drop for Mapping {
         drop(self.guard.take());
         // SAFETY: our own mapping, unmapped once; nothing uses it after this.
         unsafe { libc::munmap(self.ptr as *mut libc::c_void, self.len) };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_segment_is_sealed_and_never_executable_where_the_kernel_can_say_so() {
+        let m = Mapping::create("memfd_test", 4096).unwrap();
+        let got = seals(m.fd()).unwrap();
+        assert_eq!(got & SEALS, SEALS);
+        // F_SEAL_EXEC exists from Linux 6.3 on.
+        let release = std::fs::read_to_string("/proc/sys/kernel/osrelease").unwrap_or_default();
+        let mut parts = release.trim().split(['.', '-']).map(|p| p.parse::<u32>().unwrap_or(0));
+        let (major, minor) = (parts.next().unwrap_or(0), parts.next().unwrap_or(0));
+        if (major, minor) >= (6, 3) {
+            assert_ne!(got & libc::F_SEAL_EXEC, 0, "seals {got:#x}");
+        }
     }
 }
