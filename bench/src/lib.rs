@@ -3,6 +3,7 @@
 #![deny(missing_docs)]
 
 pub mod bus;
+pub mod commissioning;
 pub mod cycle;
 pub mod cycle_10k;
 pub mod derive_check;

@@ -192,7 +192,10 @@ mod tests {
         assert_eq!(got & SEALS, SEALS);
         // F_SEAL_EXEC exists from Linux 6.3 on.
         let release = std::fs::read_to_string("/proc/sys/kernel/osrelease").unwrap_or_default();
-        let mut parts = release.trim().split(['.', '-']).map(|p| p.parse::<u32>().unwrap_or(0));
+        let mut parts = release
+            .trim()
+            .split(['.', '-'])
+            .map(|p| p.parse::<u32>().unwrap_or(0));
         let (major, minor) = (parts.next().unwrap_or(0), parts.next().unwrap_or(0));
         if (major, minor) >= (6, 3) {
             assert_ne!(got & libc::F_SEAL_EXEC, 0, "seals {got:#x}");

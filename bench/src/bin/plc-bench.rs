@@ -2,7 +2,7 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua`
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua,commissioning`
 //! runs some groups of figures.
 //! `cycle_10k`, `derive`, `tools` and `opcua` compile generated crates: their first run takes
 //! minutes.
@@ -27,7 +27,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 10] = [
+const GROUPS: [&str; 11] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -38,6 +38,7 @@ const GROUPS: [&str; 10] = [
     "bus",
     "tools",
     "opcua",
+    "commissioning",
 ];
 
 /// Groups that run only when asked for (`--full`, or by name in `--only`).
@@ -112,6 +113,10 @@ fn main() {
             "opcua" => match plc_bench::opcua::run(quick) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&e),
+            },
+            "commissioning" => match plc_bench::commissioning::run(quick, cycle_batches) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&format!("commissioning: {e}")),
             },
             _ => import_10k(),
         }
