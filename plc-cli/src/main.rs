@@ -189,12 +189,59 @@ enum OpcuaCommand {
         /// client certificates go in its trusted/ directory.
         #[arg(long, default_value = "pki")]
         pki: PathBuf,
+        #[command(flatten)]
+        limits: OpcuaLimits,
     },
     /// Users of the OPC UA server.
     User {
         #[command(subcommand)]
         command: OpcuaUserCommand,
     },
+}
+
+/// What OPC UA clients may hold (defaults serve a plant of 10,000 variables).
+#[derive(clap::Args)]
+struct OpcuaLimits {
+    /// Let users sign in and write over None (unsigned) too: on a closed network only, as
+    /// anyone on the path can read and change those writes.
+    #[arg(long)]
+    allow_unsigned_writes: bool,
+    /// Sessions in all.
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().sessions)]
+    max_sessions: usize,
+    /// Sessions from one client address.
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().sessions_per_address)]
+    max_sessions_per_address: usize,
+    /// Connections in all.
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().connections)]
+    max_connections: usize,
+    /// Connections from one client address.
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().connections_per_address)]
+    max_connections_per_address: usize,
+    /// Monitored items in one subscription (a session holds at most 4 subscriptions).
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().monitored_items)]
+    max_monitored_items: usize,
+    /// Nodes in one Read, Write, Browse or CreateMonitoredItems.
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().nodes_per_call)]
+    max_nodes_per_call: usize,
+    /// Refused client certificates kept in the pki's rejected/ directory (the newest).
+    #[arg(long, default_value_t = plc_opcua::ServeLimits::default().rejected_certificates)]
+    max_rejected: usize,
+}
+
+impl From<OpcuaLimits> for plc_opcua::ServeLimits {
+    fn from(l: OpcuaLimits) -> Self {
+        plc_opcua::ServeLimits {
+            allow_unsigned_writes: l.allow_unsigned_writes,
+            sessions: l.max_sessions,
+            sessions_per_address: l.max_sessions_per_address,
+            connections: l.max_connections,
+            connections_per_address: l.max_connections_per_address,
+            monitored_items: l.max_monitored_items,
+            nodes_per_call: l.max_nodes_per_call,
+            rejected_certificates: l.max_rejected,
+        }
+    }
 }
 
 #[derive(Subcommand)]
@@ -311,6 +358,7 @@ fn main() -> ExitCode {
                     host,
                     users,
                     pki,
+                    limits,
                 },
         } => cmd::opcua::serve(&plc_opcua::ServeOptions {
             segments,
@@ -318,6 +366,7 @@ fn main() -> ExitCode {
             port,
             users,
             pki,
+            limits: limits.into(),
         }),
         Command::Opcua {
             command:

@@ -293,9 +293,19 @@ fn writes_with_an_index_range_set_exactly_the_selected_elements() {
     let users = add_user(&dir);
     let (_server, port) = serve(&dir, &segment, Some(&users));
     let url = format!("opc.tcp://127.0.0.1:{port}/");
+    let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
+    let pki = pki.to_str().expect("a UTF-8 temp dir");
     client(
         &dir,
-        &["ranges", &url, &segment, "operator", "pw of the operator"],
+        &[
+            "ranges",
+            &url,
+            &segment,
+            "operator",
+            "pw of the operator",
+            pki,
+            work,
+        ],
     );
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the owner stops");
@@ -356,8 +366,10 @@ fn a_forced_value_is_served_and_writes_to_it_are_refused_as_locked_until_release
     ]
     .map(|f| seg.check_force(f).expect("a valid force"));
     seg.force(&forces).expect("forced");
-    let client_args = |what: &'static str| -> [&str; 5] {
-        [what, &url, &segment, "operator", "pw of the operator"]
+    let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
+    let pki = pki.to_str().expect("a UTF-8 temp dir");
+    let client_args = |what: &'static str| -> [&str; 7] {
+        [what, &url, &segment, "operator", "pw of the operator", pki, work]
     };
     client(&dir, &client_args("forced"));
     assert_eq!(seg.read("setpoint").expect("read"), Value::Real(2.5));

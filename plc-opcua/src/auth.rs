@@ -1,19 +1,24 @@
 //! Who may do what: anonymous sessions browse and read; users of the users file also write.
 //! A user name token must carry its password encrypted with the server's certificate (OPC UA
 //! Part 4, 7.41): one sent in plain text is refused while the request is decoded, before the
-//! password is looked at.
+//! password is looked at. User names are offered only on the signed endpoints (Sign,
+//! SignAndEncrypt): a user's writes would otherwise travel unsigned, for anyone on the path to
+//! read or change, under the user's name. `--allow-unsigned-writes` offers them on None too,
+//! for a closed network.
 
 use crate::mapping;
+use crate::signin::SignIns;
 use crate::users_file::UsersFile;
 use opcua::crypto::SecurityPolicy;
 use opcua::nodes::AccessLevel;
 use opcua::server::ServerEndpoint;
 use opcua::server::authenticator::{AuthManager, Password, UserToken};
 use opcua::types::{
-    BinaryDecodable, Context, DynEncodable, EncodingResult, Error, NodeId, ObjectId, StatusCode,
-    TypeLoader, TypeLoaderPriority, UAString, UserNameIdentityToken, UserTokenPolicy,
-    UserTokenType,
+    BinaryDecodable, Context, DynEncodable, EncodingResult, Error, MessageSecurityMode, NodeId,
+    ObjectId, StatusCode, TypeLoader, TypeLoaderPriority, UAString, UserNameIdentityToken,
+    UserTokenPolicy, UserTokenType,
 };
+use plc_shm::LogLimit;
 use std::io::Read;
 use std::sync::Arc;
 
@@ -23,16 +28,35 @@ const POLICY_ANONYMOUS: &str = "anonymous";
 /// RSA-OAEP (Basic256Sha256's asymmetric encryption).
 const POLICY_USER_NAME: &str = "userpass_rsa_oaep";
 
+/// Refused sign-ins, logged at a bounded rate.
+static REFUSED: LogLimit = LogLimit::new("plc_opcua::auth");
+
 /// The server's authenticator.
 pub struct PlcAuth {
     users: Arc<UsersFile>,
+    sign_ins: SignIns,
+    unsigned_writes: bool,
 }
 
 impl PlcAuth {
-    /// An authenticator for the users of this file (as it is when each session signs in).
-    pub fn new(users: Arc<UsersFile>) -> PlcAuth {
-        PlcAuth { users }
+    /// An authenticator for the users of this file (as it is when each session signs in);
+    /// `unsigned_writes`: user names offered on the None endpoint too.
+    pub fn new(users: Arc<UsersFile>, unsigned_writes: bool) -> PlcAuth {
+        PlcAuth {
+            users,
+            sign_ins: SignIns::default(),
+            unsigned_writes,
+        }
     }
+}
+
+/// Whether users may sign in (and so write) over a channel of `mode`.
+pub fn users_allowed(mode: MessageSecurityMode, unsigned_writes: bool) -> bool {
+    unsigned_writes
+        || matches!(
+            mode,
+            MessageSecurityMode::Sign | MessageSecurityMode::SignAndEncrypt
+        )
 }
 
 #[async_trait::async_trait]
@@ -43,28 +67,37 @@ impl AuthManager for PlcAuth {
 
     async fn authenticate_username_identity_token(
         &self,
-        _endpoint: &ServerEndpoint,
+        endpoint: &ServerEndpoint,
         username: &str,
         password: &Password,
     ) -> Result<UserToken, Error> {
+        // The name is logged only if it is one the file could hold: nothing forged.
+        let shown = if crate::users::valid_name(username) {
+            username
+        } else {
+            "?"
+        };
+        if !users_allowed(endpoint.message_security_mode(), self.unsigned_writes) {
+            REFUSED.warn(|| {
+                format!(
+                    "OPC UA sign-in refused for user `{shown}`: over a channel without \
+                     signing (connect with Sign or SignAndEncrypt)"
+                )
+            });
+            return Err(Error::new(
+                StatusCode::BadSecurityModeInsufficient,
+                "users sign in over Sign or SignAndEncrypt only",
+            ));
+        }
         let users = self.users.current();
-        let name = username.to_string();
         let password = password.get().to_string();
-        // argon2 takes tens of milliseconds on purpose: not on the async threads.
-        let ok = tokio::task::spawn_blocking(move || users.verify(&name, &password))
-            .await
-            .unwrap_or(false);
-        if ok {
+        if self.sign_ins.check(users, username, password).await {
             log::info!("OPC UA user `{username}` signed in");
             Ok(UserToken(username.to_string()))
         } else {
-            // The name is logged only if it is one the file could hold: nothing forged.
-            let shown = if crate::users::valid_name(username) {
-                username
-            } else {
-                "?"
-            };
-            log::warn!("OPC UA sign-in refused for user `{shown}`: unknown user or wrong password");
+            REFUSED.warn(|| {
+                format!("OPC UA sign-in refused for user `{shown}`: unknown user or wrong password")
+            });
             Err(Error::new(
                 StatusCode::BadUserAccessDenied,
                 "unknown user or wrong password",
@@ -81,7 +114,7 @@ impl AuthManager for PlcAuth {
         mapping::user_access_level(user_access_level, !may_write(&self.users, token))
     }
 
-    fn user_token_policies(&self, _endpoint: &ServerEndpoint) -> Vec<UserTokenPolicy> {
+    fn user_token_policies(&self, endpoint: &ServerEndpoint) -> Vec<UserTokenPolicy> {
         let mut policies = vec![UserTokenPolicy {
             policy_id: UAString::from(POLICY_ANONYMOUS),
             token_type: UserTokenType::Anonymous,
@@ -89,9 +122,11 @@ impl AuthManager for PlcAuth {
             issuer_endpoint_url: UAString::null(),
             security_policy_uri: UAString::null(),
         }];
-        if !self.users.current().is_empty() {
-            // On every endpoint, None included, the password travels encrypted with the
-            // server's certificate under Basic256Sha256.
+        if !self.users.current().is_empty()
+            && users_allowed(endpoint.message_security_mode(), self.unsigned_writes)
+        {
+            // The password travels encrypted with the server's certificate under
+            // Basic256Sha256 (on None too, where unsigned writes are allowed).
             policies.push(UserTokenPolicy {
                 policy_id: UAString::from(POLICY_USER_NAME),
                 token_type: UserTokenType::UserName,

@@ -46,17 +46,20 @@
 
 pub mod address;
 pub mod auth;
+pub mod gate;
 pub mod mapping;
 pub mod node_manager;
+pub mod rejected;
 pub mod sampler;
 pub mod server;
 pub mod shared;
+pub mod signin;
 pub mod users;
 pub mod users_file;
 pub mod writer;
 
 /// async-opcua, as this crate uses it (its types appear in this crate's API).
 pub use opcua;
-pub use server::{ServeError, ServeOptions, serve};
+pub use server::{ServeError, ServeLimits, ServeOptions, serve};
 pub use users::{Users, UsersError, add_user};
 pub use users_file::UsersFile;

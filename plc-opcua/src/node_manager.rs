@@ -32,6 +32,8 @@ pub type SegmentManager = InMemoryNodeManager<SegmentNodes>;
 pub struct SegmentNodes {
     shared: Arc<Shared>,
     users: Arc<UsersFile>,
+    /// Writes allowed over channels without signing (`--allow-unsigned-writes`).
+    unsigned_writes: bool,
     namespace: NamespaceMetadata,
 }
 
@@ -42,6 +44,7 @@ pub fn builder(
     first: plc_shm::LayoutDescriptor,
     period: Duration,
     users: Arc<UsersFile>,
+    unsigned_writes: bool,
     make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,
 ) -> impl NodeManagerBuilder {
     InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {
@@ -57,6 +60,7 @@ pub fn builder(
         SegmentNodes {
             shared: make_shared(layout),
             users,
+            unsigned_writes,
             namespace: NamespaceMetadata {
                 namespace_uri: uri,
                 namespace_index: ns,
@@ -123,6 +127,15 @@ impl SegmentNodes {
             return refuse(
                 "only users of the server's users file may write",
                 StatusCode::BadUserAccessDenied,
+            );
+        }
+        // The session's mode, as it was made (a user signs in only on a signed endpoint
+        // unless unsigned writes are allowed; this holds if that ever changes).
+        let mode = context.session.read().message_security_mode();
+        if !crate::auth::users_allowed(mode, self.unsigned_writes) {
+            return refuse(
+                "writes travel over Sign or SignAndEncrypt channels only",
+                StatusCode::BadSecurityModeInsufficient,
             );
         }
         let Some(variant) = value.value.value.as_ref() else {

@@ -2,6 +2,7 @@
 //! manager and two threads per segment, and the run until Ctrl-C or SIGTERM.
 
 use crate::auth::{PlcAuth, RefusePlainTextPasswords};
+use crate::gate::{Gate, GateLimits};
 use crate::node_manager::{self, SegmentManager};
 use crate::sampler::Sampler;
 use crate::shared::Shared;
@@ -32,6 +33,55 @@ pub struct ServeOptions {
     /// `trusted/` (client certificates allowed to connect with Sign or SignAndEncrypt),
     /// `rejected/` (certificates of clients that tried; move one to `trusted/` to allow it).
     pub pki: PathBuf,
+    /// What one client, and all of them, may hold; whether users may write over None.
+    pub limits: ServeLimits,
+}
+
+/// What clients may hold, with defaults that serve a plant of 10,000 variables (every one in
+/// one subscription, one Read or one Browse) while no one address can take what the others
+/// need. `plc opcua serve` has a flag for each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ServeLimits {
+    /// Users sign in and write over None too (`--allow-unsigned-writes`): only for a closed
+    /// network, where nobody on the path could read or change a write.
+    pub allow_unsigned_writes: bool,
+    /// Sessions in all (`--max-sessions`).
+    pub sessions: usize,
+    /// Sessions from one client address (`--max-sessions-per-address`).
+    pub sessions_per_address: usize,
+    /// Connections in all (`--max-connections`).
+    pub connections: usize,
+    /// Connections from one client address (`--max-connections-per-address`).
+    pub connections_per_address: usize,
+    /// Monitored items in one subscription (`--max-monitored-items`); a session has at most
+    /// [`SUBSCRIPTIONS_PER_SESSION`] subscriptions.
+    pub monitored_items: usize,
+    /// Nodes in one Read, Write, Browse, RegisterNodes or CreateMonitoredItems
+    /// (`--max-nodes-per-call`).
+    pub nodes_per_call: usize,
+    /// Refused client certificates kept in `pki/rejected/`, the newest (`--max-rejected`).
+    pub rejected_certificates: usize,
+}
+
+/// Subscriptions one session may hold.
+pub const SUBSCRIPTIONS_PER_SESSION: usize = 4;
+
+/// The longest a session lives without its client (the server's longest session timeout).
+pub const SESSION_TIMEOUT: Duration = Duration::from_secs(60);
+
+impl Default for ServeLimits {
+    fn default() -> Self {
+        ServeLimits {
+            allow_unsigned_writes: false,
+            sessions: 100,
+            sessions_per_address: 10,
+            connections: 200,
+            connections_per_address: 20,
+            monitored_items: 10_000,
+            nodes_per_call: 10_000,
+            rejected_certificates: 64,
+        }
+    }
 }
 
 /// Why the server could not start.
@@ -96,6 +146,7 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
             seg.descriptor().clone(),
             period,
             users.clone(),
+            options.limits.allow_unsigned_writes,
             move |layout| {
                 let shared = Arc::new(Shared::new(segment, layout, read_tx, write_tx));
                 *fill.lock().unwrap_or_else(|e| e.into_inner()) = Some(shared.clone());
@@ -113,23 +164,31 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
     // Sampling and publishing down to the fastest owner's period, in whole milliseconds.
     let fastest_ms = (fastest.as_secs_f64() * 1000.0).max(1.0);
     {
+        let asked = &options.limits;
         let limits = builder.limits_mut();
         limits.subscriptions.min_sampling_interval_ms = fastest_ms;
         limits.subscriptions.min_publishing_interval_ms = fastest_ms;
-        limits.subscriptions.max_monitored_items_per_sub = 100_000;
-        limits.subscriptions.max_queued_notifications = 1_000_000;
-        limits.operational.max_nodes_per_read = 100_000;
-        limits.operational.max_monitored_items_per_call = 100_000;
-        limits.operational.max_nodes_per_browse = 100_000;
-        // One Read (or CreateMonitoredItems) of every variable of a large program: 10,000
-        // nodes are a request of about 300 KB holding an array of 10,000, which
-        // async-opcua's defaults (arrays of 1,000 elements, messages of 5 chunks of 64 KiB)
-        // refuse. Up to the node limits above, still bounded: 16 MiB a message.
-        limits.max_array_length = 100_000;
-        limits.max_message_size = 16 << 20;
-        limits.max_chunk_count = 256;
+        limits.subscriptions.max_monitored_items_per_sub = asked.monitored_items;
+        limits.subscriptions.max_subscriptions_per_session = SUBSCRIPTIONS_PER_SESSION;
+        limits.subscriptions.max_queued_notifications = asked.monitored_items.max(20);
+        limits.max_sessions = asked.sessions;
+        let per_call = asked.nodes_per_call;
+        limits.operational.max_nodes_per_read = per_call;
+        limits.operational.max_nodes_per_write = per_call;
+        limits.operational.max_monitored_items_per_call = per_call;
+        limits.operational.max_nodes_per_browse = per_call;
+        limits.operational.max_nodes_per_register_nodes = per_call;
+        // One Read (or CreateMonitoredItems) of every variable of a plant: 10,000 nodes are a
+        // request of about 300 KB holding an array of 10,000, which async-opcua's defaults
+        // (arrays of 1,000 elements, messages of 5 chunks of 64 KiB) refuse. Its answer, or a
+        // Browse of as many nodes, takes a few MiB: 8 MiB a message at most.
+        limits.max_array_length = per_call.max(1000);
+        limits.max_message_size = 8 << 20;
+        limits.max_chunk_count = 128;
     }
-    builder = builder.subscription_poll_interval_ms(fastest_ms as u64);
+    builder = builder
+        .subscription_poll_interval_ms(fastest_ms as u64)
+        .max_session_timeout_ms(SESSION_TIMEOUT.as_millis() as u64);
     let (server, handle) = builder.build().map_err(ServeError)?;
     refuse_plain_text_passwords(&handle);
     protect_private_key(&options.pki)?;
@@ -184,8 +243,48 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
         log::info!("OPC UA server stopping");
         cancel.cancel();
     });
-    let listener = listen(&options.host, options.port).await?;
-    let result = server.run_with(listener).await.map_err(ServeError);
+    if options.limits.allow_unsigned_writes {
+        log::warn!(
+            "OPC UA: users sign in and write over None too (--allow-unsigned-writes): anyone on \
+             the network path can read and change their writes; use it on a closed network only"
+        );
+    }
+    // The public port is the gate's; the server listens on a loopback port of its own behind
+    // it, and announces the public one in its endpoints.
+    let public = listen(&options.host, options.port).await?;
+    let public_port = public
+        .local_addr()
+        .map_err(|e| ServeError(format!("the listener has no address: {e}")))?
+        .port();
+    let inner = listen("127.0.0.1", 0).await?;
+    let inner_addr = inner
+        .local_addr()
+        .map_err(|e| ServeError(format!("the server's own listener has no address: {e}")))?;
+    let info = handle.info().clone();
+    let serving = tokio::spawn(server.run_with(inner));
+    // `run_with` writes its listener's port into the server's info first: write the public
+    // port over it once it has.
+    while info.port.load(Ordering::Relaxed) != inner_addr.port() && !serving.is_finished() {
+        tokio::time::sleep(Duration::from_millis(5)).await;
+    }
+    info.port.store(public_port, Ordering::Relaxed);
+    let gate = Arc::new(Gate::new(GateLimits {
+        connections: options.limits.connections,
+        connections_per_address: options.limits.connections_per_address,
+        sessions_per_address: options.limits.sessions_per_address,
+        session_hold: SESSION_TIMEOUT,
+    }));
+    let door = tokio::spawn(gate.run(public, inner_addr));
+    let sweeper = tokio::spawn(crate::rejected::keep_newest(
+        options.pki.join("rejected"),
+        options.limits.rejected_certificates,
+    ));
+    let result = match serving.await {
+        Ok(r) => r.map_err(ServeError),
+        Err(e) => Err(ServeError(format!("the server stopped: {e}"))),
+    };
+    door.abort();
+    sweeper.abort();
     stop.store(true, Ordering::Relaxed);
     for t in threads {
         let _ = t.join();
@@ -253,7 +352,10 @@ fn configure(options: &ServeOptions, users: Arc<UsersFile>) -> Result<ServerBuil
             "basic256sha256_sign_encrypt",
             secure(MessageSecurityMode::SignAndEncrypt),
         )
-        .with_authenticator(Arc::new(PlcAuth::new(users)))
+        .with_authenticator(Arc::new(PlcAuth::new(
+            users,
+            options.limits.allow_unsigned_writes,
+        )))
         .diagnostics_enabled(false))
 }
 

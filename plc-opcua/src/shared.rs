@@ -36,10 +36,16 @@ pub struct WriteJob {
 /// The nodes that have monitored items being sampled (not Disabled), with a count per node,
 /// and the same set as a list the sampler takes without holding the lock; and the nodes whose
 /// items were enabled again, to be given their current value at the next sample.
+///
+/// A change of an item costs a hash update; the list is made again only when the sampler asks
+/// for it after a change, once per sample at most: a CreateMonitoredItems of 10,000 items is
+/// 10,000 updates and one list, not 10,000 lists.
 #[derive(Default)]
 struct Monitored {
     counts: HashMap<NodeId, usize>,
     list: Arc<Vec<NodeId>>,
+    /// Whether `list` is older than `counts`.
+    stale: bool,
     enabled: HashMap<MonitoredItemHandle, (NodeId, bool)>,
     refresh: Vec<NodeId>,
 }
@@ -54,7 +60,15 @@ impl Monitored {
                 self.counts.remove(node);
             }
         }
-        self.list = Arc::new(self.counts.keys().cloned().collect());
+        self.stale = true;
+    }
+
+    fn list(&mut self) -> Arc<Vec<NodeId>> {
+        if self.stale {
+            self.list = Arc::new(self.counts.keys().cloned().collect());
+            self.stale = false;
+        }
+        self.list.clone()
     }
 }
 
@@ -150,7 +164,7 @@ impl Shared {
 
     /// The monitored nodes now.
     pub fn monitored(&self) -> Arc<Vec<NodeId>> {
-        lock(&self.monitored).list.clone()
+        lock(&self.monitored).list()
     }
 
     /// Sends a read to the segment's sampler; `None` once it has stopped.

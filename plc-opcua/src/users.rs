@@ -36,6 +36,24 @@ pub struct Users {
     hashes: BTreeMap<String, String>,
 }
 
+/// A hash with the parameters of every user's (argon2's defaults), of a password nobody
+/// knows, made once: what a name the file does not hold is checked against.
+fn stand_in_hash() -> &'static str {
+    static HASH: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    HASH.get_or_init(|| {
+        let salt = SaltString::generate(&mut argon2::password_hash::rand_core::OsRng);
+        let mut secret = [0u8; 32];
+        argon2::password_hash::rand_core::RngCore::fill_bytes(
+            &mut argon2::password_hash::rand_core::OsRng,
+            &mut secret,
+        );
+        Argon2::default()
+            .hash_password(&secret, &salt)
+            .map(|h| h.to_string())
+            .unwrap_or_default()
+    })
+}
+
 /// Whether `name` is a user name the file can hold: 1 to 64 ASCII letters, digits, `_`, `-`,
 /// `.` or `@` (no `:`, which separates the hash, and nothing a log line could be forged with).
 pub fn valid_name(name: &str) -> bool {
@@ -69,9 +87,19 @@ impl Users {
         if !meta.is_file() {
             return Err(err("it is not a regular file".into()));
         }
-        if meta.mode() & 0o022 != 0 {
+        // Whoever may read it may try the hashes offline: the server's user's alone.
+        let me = plc_shm::euid();
+        if meta.uid() != me {
             return Err(err(format!(
-                "other users may write it (mode {:o}): `chmod 600 {}`",
+                "it belongs to uid {}, not to the server's user (uid {me}): \
+                 `chown {me} {}`, or run the server as its owner",
+                meta.uid(),
+                path.display()
+            )));
+        }
+        if meta.mode() & 0o077 != 0 {
+            return Err(err(format!(
+                "other users may read or write it (mode {:o}): `chmod 600 {}`",
                 meta.mode() & 0o777,
                 path.display()
             )));
@@ -132,15 +160,20 @@ impl Users {
     }
 
     /// Whether `password` is `name`'s. Slow on purpose (argon2): call it off the async threads.
+    ///
+    /// A name the file does not hold costs the same: the password is checked against a hash
+    /// of the same parameters, so the answer's time does not tell which names exist.
     pub fn verify(&self, name: &str, password: &str) -> bool {
-        let Some(hash) = self.hashes.get(name) else {
-            return false;
+        let (hash, known) = match self.hashes.get(name) {
+            Some(hash) => (hash.as_str(), true),
+            None => (stand_in_hash(), false),
         };
-        PasswordHash::new(hash).is_ok_and(|h| {
+        let matches = PasswordHash::new(hash).is_ok_and(|h| {
             Argon2::default()
                 .verify_password(password.as_bytes(), &h)
                 .is_ok()
-        })
+        });
+        known && matches
     }
 
     /// Adds a user, or gives an existing one a new password: stores a fresh salted hash.
@@ -210,7 +243,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_users_file_others_may_write_is_refused_and_a_saved_one_is_private() {
+    fn a_users_file_others_may_read_or_another_user_owns_is_refused_and_a_saved_one_is_private() {
         use std::os::unix::fs::PermissionsExt;
         let dir = std::env::temp_dir().join(format!("plc-opcua-users-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -219,12 +252,26 @@ mod tests {
         let mode = std::fs::metadata(&path).unwrap().permissions().mode() & 0o777;
         assert_eq!(mode, 0o600);
         assert!(Users::load(&path).unwrap().verify("operator", "pw"));
-        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o666)).unwrap();
-        let e = Users::load(&path).unwrap_err().to_string();
-        assert!(
-            e.contains("other users may write it") && e.contains("chmod 600"),
-            "{e}"
-        );
+        for mode in [0o666, 0o644, 0o640, 0o604] {
+            std::fs::set_permissions(&path, std::fs::Permissions::from_mode(mode)).unwrap();
+            let e = Users::load(&path).unwrap_err().to_string();
+            assert!(
+                e.contains("other users may read or write it") && e.contains("chmod 600"),
+                "mode {mode:o}: {e}"
+            );
+        }
+        std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600)).unwrap();
+        // Owned by another user (root may give it away; others cannot, and skip this).
+        if plc_shm::euid() == 0 {
+            std::os::unix::fs::chown(&path, Some(4242), None).unwrap();
+            let e = Users::load(&path).unwrap_err().to_string();
+            assert!(
+                e.contains("belongs to uid 4242") && e.contains("chown 0"),
+                "{e}"
+            );
+            std::os::unix::fs::chown(&path, Some(0), None).unwrap();
+        }
+        assert!(Users::load(&path).is_ok());
         let link = dir.join("link");
         let _ = std::fs::remove_file(&link);
         std::os::unix::fs::symlink(&path, &link).unwrap();

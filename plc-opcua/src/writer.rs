@@ -109,21 +109,25 @@ fn refused(user: &str, target: &str, e: &ShmError) -> StatusCode {
     log_refusal(user, target, e, mapping::write_refusal(e))
 }
 
-/// Logs a refused write with its reason and status code, and gives the code.
+/// Refused writes, logged at a bounded rate.
+static REFUSED: plc_shm::LogLimit = plc_shm::LogLimit::new("plc_opcua::writer");
+
+/// Logs a refused write with its reason and status code (at a bounded rate), and gives the
+/// code.
 pub fn log_refusal(
     user: &str,
     target: &str,
     why: &dyn std::fmt::Display,
     status: StatusCode,
 ) -> StatusCode {
-    log::warn!("OPC UA write by `{user}` refused: {target}: {why} ({status})");
+    REFUSED.warn(|| format!("OPC UA write by `{user}` refused: {target}: {why} ({status})"));
     status
 }
 
 /// Values as the log shows them: one, or a bracketed list.
 fn show(values: impl Iterator<Item = Option<Value>>) -> String {
     let texts: Vec<String> = values
-        .map(|v| v.map_or_else(|| "?".to_string(), |v| v.to_string()))
+        .map(|v| v.map_or_else(|| "?".to_string(), |v| plc_shm::shown_in_log(&v)))
         .collect();
     match texts.as_slice() {
         [one] => one.clone(),

@@ -134,7 +134,7 @@ impl ForceTable {
             let line = format!(
                 "uid {uid} forces `{}` = {}",
                 self.path(index, leaf),
-                shown(&checked.write().value)
+                shown_in_log(&checked.write().value)
             );
             let force = Force {
                 write: *checked,
@@ -192,7 +192,7 @@ impl ForceTable {
             let restored = match (release.restore, f.before) {
                 (true, Some(before)) => {
                     let _ = gm.set(w.index, w.leaf, before);
-                    format!(", {} restored", shown(&before))
+                    format!(", {} restored", shown_in_log(&before))
                 }
                 _ => String::new(),
             };
@@ -220,7 +220,7 @@ impl ForceTable {
                 format!(
                     "`{}` = {} (by uid {} since {})",
                     self.path(w.index, w.leaf),
-                    shown(&w.value),
+                    shown_in_log(&w.value),
                     f.uid,
                     utc_text(f.since_utc_ns)
                 )
@@ -301,7 +301,14 @@ pub fn path_of<N: plc_rules::path::Node>(vars: &[N], index: usize, leaf: usize) 
 
 /// A value in a log line: text quoted with its control characters escaped, so a value cannot
 /// forge lines or drive a terminal.
-fn shown(value: &Value) -> String {
+///
+/// ```
+/// use plc_core::{FixedString, Value};
+/// let text = Value::Text(FixedString::from_str_truncate("ok\n\u{1b}[2J"));
+/// assert_eq!(plc_shm::shown_in_log(&text), r#""ok\n\u{1b}[2J""#);
+/// assert_eq!(plc_shm::shown_in_log(&Value::Int(-3)), "-3");
+/// ```
+pub fn shown_in_log(value: &Value) -> String {
     match value {
         Value::Text(t) => format!("{:?}", t.as_str()),
         other => other.to_string(),

@@ -11,8 +11,25 @@ const LINES: u32 = 10;
 const WINDOW: Duration = Duration::from_secs(10);
 
 /// Lets through at most ten lines every ten seconds, counting the rest.
-#[derive(Debug, Default)]
-pub(crate) struct LogLimit(Mutex<State>);
+///
+/// ```
+/// static REFUSALS: plc_shm::LogLimit = plc_shm::LogLimit::new("my_server");
+/// for _ in 0..1000 {
+///     // Ten lines are logged; the first after ten quiet seconds says how many were not.
+///     REFUSALS.warn(|| "a request was refused".to_string());
+/// }
+/// ```
+#[derive(Debug)]
+pub struct LogLimit {
+    target: &'static str,
+    state: Mutex<State>,
+}
+
+impl Default for LogLimit {
+    fn default() -> Self {
+        LogLimit::new("plc_io::shm")
+    }
+}
 
 #[derive(Debug, Default)]
 struct State {
@@ -22,17 +39,29 @@ struct State {
 }
 
 impl LogLimit {
+    /// A limit for lines logged under the log target `target`.
+    pub const fn new(target: &'static str) -> LogLimit {
+        LogLimit {
+            target,
+            state: Mutex::new(State {
+                since: None,
+                lines: 0,
+                suppressed: 0,
+            }),
+        }
+    }
+
     /// Logs `line` (built only if it will be logged) as a warning, or counts it.
     pub fn warn(&self, line: impl FnOnce() -> String) {
         if let Some(note) = self.allow(Instant::now()) {
-            log::warn!(target: "plc_io::shm", "{}{note}", line());
+            log::warn!(target: self.target, "{}{note}", line());
         }
     }
 
     /// Whether a line may be logged at `now`: `Some` with a note of the lines suppressed
     /// before it (empty if none), or `None`.
     fn allow(&self, now: Instant) -> Option<String> {
-        let mut s = self.0.lock().unwrap_or_else(|p| p.into_inner());
+        let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
         if s.since.is_none_or(|t| now.duration_since(t) >= WINDOW) {
             s.since = Some(now);
             s.lines = 0;

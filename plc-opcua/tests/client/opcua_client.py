@@ -10,22 +10,26 @@
         declaration), each read Good, an array with its dimensions
     opcua_client.py values URL SEGMENT good|bad
         every variable's status: Good, or BadNoCommunication (the program is gone)
-    opcua_client.py ranges URL SEGMENT USER PASSWORD
+    opcua_client.py ranges URL SEGMENT USER PASSWORD PKI WORKDIR
         writes with index ranges to `row` (INT[6]) and `plane` (INT[2,3]) set exactly the
         selected elements; a range past the end or of the wrong rank is refused; a change made
         while a monitored item is Disabled is reported once it is enabled again
-    opcua_client.py forced URL SEGMENT USER PASSWORD
+    opcua_client.py forced URL SEGMENT USER PASSWORD PKI WORKDIR
         with `setpoint` (LREAL) forced to 2.5 and `row[2]` (INT[4]) to 40: both read with their
         forced value and GoodLocalOverride, `feed` beside them Good, their AccessLevel as
         before; a write of `setpoint` or of the whole `row` is refused with BadLocked and
         changes nothing, a write of `row[0]` alone is applied
-    opcua_client.py released URL SEGMENT USER PASSWORD
+    opcua_client.py released URL SEGMENT USER PASSWORD PKI WORKDIR
         once released: `setpoint` and `row` read Good, and a write of `setpoint` = 7 is applied
+
+Users connect as an HMI does, over Basic256Sha256 Sign with a certificate the server trusts
+(PKI is the server's certificate store, WORKDIR where the client's certificate is made).
 
 Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the first that fails.
 """
 
 import asyncio
+import hashlib
 import itertools
 import json
 import math
@@ -302,10 +306,8 @@ async def refused_plain_text(url, user, password):
     raise Failed("a user name token with a plain-text password was accepted")
 
 
-async def writes(url, plc_bin, segment, ns, user, password):
-    client = Client(url)
-    client.set_user(user)
-    client.set_password(password)
+async def writes(url, plc_bin, segment, ns, user, password, pki, workdir):
+    client = await user_client(url, user, password, pki, workdir)
     async with client:
         node = lambda name: client.get_node(ua.NodeId(name, ns))
         speed = node("test_speed_mm_s")
@@ -403,7 +405,8 @@ async def run_check(url, segment, plc_bin, pki, workdir, user, password):
                                     ua.Variant(True, ua.VariantType.Boolean))
         expect_status(status, "BadUserAccessDenied", "anonymous write of cmd_start")
     await refused_plain_text(url, user, password)
-    await writes(url, plc_bin, segment, ns, user, password)
+    await unsigned_user_refused(url, user, password)
+    await writes(url, plc_bin, segment, ns, user, password, pki, workdir)
     await sign_and_encrypt(url, pki, workdir, user, password, ns)
 
 
@@ -460,11 +463,8 @@ async def run_names(url, segment, expected):
         ok(f"the namespace holds {names}, every value Good")
 
 
-async def run_ranges(url, segment, user, password):
-    client = Client(url)
-    client.set_user(user)
-    client.set_password(password)
-    async with client:
+async def run_ranges(url, segment, user, password, pki, workdir):
+    async with await user_client(url, user, password, pki, workdir) as client:
         ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
         row = client.get_node(ua.NodeId("row", ns))
         plane = client.get_node(ua.NodeId("plane", ns))
@@ -521,11 +521,71 @@ async def run_ranges(url, segment, user, password):
         await other.delete()
 
 
-def user_client(url, user, password):
+async def user_client(url, user, password, pki, workdir):
+    """A user's client as a careful HMI connects: Basic256Sha256 Sign, its certificate trusted
+    by the server (placed in the server's pki/trusted/ under the name the server looks for)."""
+    key, cert = Path(workdir) / "hmi-key.pem", Path(workdir) / "hmi-cert.der"
+    app_uri = "urn:plc-vars:test-hmi"
+    async def make():
+        client = Client(url)
+        client.application_uri = app_uri
+        client.set_user(user)
+        client.set_password(password)
+        await client.set_security(security_policies.SecurityPolicyBasic256Sha256, str(cert),
+                                  str(key), mode=ua.MessageSecurityMode.Sign)
+        return client
+
+    if not cert.exists():
+        await setup_self_signed_certificate(key, cert, app_uri, socket.gethostname(),
+                                            [ExtendedKeyUsageOID.CLIENT_AUTH], {"commonName": "plc-vars hmi"})
+        # As an operator trusts a new HMI: its first try is refused and its certificate kept
+        # in pki/rejected/, from where it is moved to pki/trusted/.
+        try:
+            first = await make()
+            await first.connect()
+            await first.disconnect()
+            raise Failed("an untrusted HMI certificate was accepted")
+        except Failed:
+            raise
+        except Exception:
+            pass
+        thumbprint = hashlib.sha1(cert.read_bytes()).hexdigest()
+        found = [f for f in (Path(pki) / "rejected").glob("*.der") if f"[{thumbprint}]" in f.name]
+        check(len(found) == 1, f"the HMI's certificate is not in {pki}/rejected")
+        shutil.move(str(found[0]), str(Path(pki) / "trusted" / found[0].name))
+    return await make()
+
+
+async def unsigned_user_refused(url, user, password):
+    """A user over None: the None endpoint offers no user name, and a client that sends one
+    anyway is refused; the session never gets to write."""
+    for e in await Client(url).connect_and_get_server_endpoints():
+        if e.SecurityMode == ua.MessageSecurityMode.None_:
+            kinds = [t.TokenType for t in e.UserIdentityTokens]
+            check(ua.UserTokenType.UserName not in kinds,
+                  f"the None endpoint offers user names: {kinds}")
+    ok("the None endpoint offers anonymous sign-in only")
     client = Client(url)
     client.set_user(user)
     client.set_password(password)
-    return client
+    # What a careless client does: the user name policy of a signed endpoint, over None.
+    client.server_policy = lambda token_type: ua.UserTokenPolicy(
+        PolicyId="userpass_rsa_oaep", TokenType=token_type,
+        SecurityPolicyUri=security_policies.SecurityPolicyBasic256Sha256.URI)
+    try:
+        await client.connect()
+    except Exception as e:
+        text = f"{type(e).__name__}: {e}"
+        check("BadIdentityTokenRejected" in text or "BadSecurityModeInsufficient" in text
+              or "BadUserAccessDenied" in text, f"refused, but why? {text}")
+        ok(f"a user's sign-in over None is refused ({text[:90]})")
+        return
+    try:
+        status = await write_status(client, ua.NodeId("test_speed_mm_s", 2),
+                                    ua.Variant(1.0, ua.VariantType.Double))
+        raise Failed(f"a user signed in over None (a write answered {status.name})")
+    finally:
+        await client.disconnect()
 
 
 async def becomes_status(client, node_id, want, what):
@@ -537,8 +597,8 @@ async def becomes_status(client, node_id, want, what):
     return dv
 
 
-async def run_forced(url, segment, user, password):
-    async with user_client(url, user, password) as client:
+async def run_forced(url, segment, user, password, pki, workdir):
+    async with await user_client(url, user, password, pki, workdir) as client:
         ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
         setpoint, feed, row = (ua.NodeId(n, ns) for n in ("setpoint", "feed", "row"))
         dv = await becomes_status(client, setpoint, "GoodLocalOverride", "forced setpoint")
@@ -567,8 +627,8 @@ async def run_forced(url, segment, user, password):
         ok(f"row is {got}: the refused writes changed nothing")
 
 
-async def run_released(url, segment, user, password):
-    async with user_client(url, user, password) as client:
+async def run_released(url, segment, user, password, pki, workdir):
+    async with await user_client(url, user, password, pki, workdir) as client:
         ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
         setpoint, row = ua.NodeId("setpoint", ns), ua.NodeId("row", ns)
         await becomes_status(client, setpoint, "Good", "released setpoint")
@@ -592,11 +652,11 @@ def main():
         elif sys.argv[1] == "values":
             asyncio.run(run_values(*sys.argv[2:5]))
         elif sys.argv[1] == "ranges":
-            asyncio.run(run_ranges(*sys.argv[2:6]))
+            asyncio.run(run_ranges(*sys.argv[2:8]))
         elif sys.argv[1] == "forced":
-            asyncio.run(run_forced(*sys.argv[2:6]))
+            asyncio.run(run_forced(*sys.argv[2:8]))
         elif sys.argv[1] == "released":
-            asyncio.run(run_released(*sys.argv[2:6]))
+            asyncio.run(run_released(*sys.argv[2:8]))
         else:
             raise Failed(f"unknown command {sys.argv[1]}")
     except Failed as e:
