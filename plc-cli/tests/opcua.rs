@@ -397,3 +397,42 @@ fn a_forced_value_is_served_and_writes_to_it_are_refused_as_locked_until_release
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn attackers_on_loopback_cannot_lock_out_an_operator_or_exhaust_the_server() {
+    python();
+    let dir = test_dir("attack");
+    let segment = format!("opcua_attack_{}", std::process::id());
+    let _program = start_program(&dir, &segment, 1);
+    let users = add_user(&dir);
+    let (server, port) = serve(&dir, &segment, Some(&users));
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
+    let pid = server.0.id().to_string();
+    client(
+        &dir,
+        &[
+            "attack",
+            &url,
+            &segment,
+            "operator",
+            "pw of the operator",
+            pki.to_str().expect("a UTF-8 temp dir"),
+            work,
+            &pid,
+        ],
+    );
+    let log = std::fs::read_to_string(dir.join("server.log")).unwrap_or_default();
+    let refusals = log.lines().filter(|l| l.contains("refused")).count();
+    // 220 refusals (20 sessions, 200 sign-ins) over about 40 s: ten lines per ten seconds
+    // for each kind of refusal, not one line each.
+    assert!(
+        refusals < 100,
+        "refusals are logged at a bounded rate, not one line each ({refusals} lines):\n{log}"
+    );
+    assert!(
+        log.contains("more like it were not logged"),
+        "the log says how many refusals it did not log:\n{log}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
