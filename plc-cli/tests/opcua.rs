@@ -369,7 +369,15 @@ fn a_forced_value_is_served_and_writes_to_it_are_refused_as_locked_until_release
     let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
     let pki = pki.to_str().expect("a UTF-8 temp dir");
     let client_args = |what: &'static str| -> [&str; 7] {
-        [what, &url, &segment, "operator", "pw of the operator", pki, work]
+        [
+            what,
+            &url,
+            &segment,
+            "operator",
+            "pw of the operator",
+            pki,
+            work,
+        ]
     };
     client(&dir, &client_args("forced"));
     assert_eq!(seg.read("setpoint").expect("read"), Value::Real(2.5));
