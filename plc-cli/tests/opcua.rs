@@ -278,6 +278,12 @@ pub struct Arrays {
     row: [i16; 6],
     #[plc(direction = "command")]
     plane: [[i16; 3]; 2],
+    /// Larger than one request held before (64 writes): written whole, it lands in one cycle.
+    #[plc(direction = "command")]
+    table: [i32; 1000],
+    /// Larger than one cycle's request: refused whole, written in parts.
+    #[plc(direction = "command")]
+    huge: [i16; 1100],
 }
 
 #[test]

@@ -298,6 +298,31 @@ fn writes_are_refused_up_front_with_the_reason() {
     );
 }
 
+#[test]
+fn requests_of_a_thousand_writes_wait_up_to_a_bound_of_writes_not_only_of_requests() {
+    // A request may hold 1,024 writes (an array written whole), so what waits for a program
+    // that takes no writes is bounded by writes: 16 such requests, then Busy.
+    let name = unique("bigwait");
+    let _owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
+    let seg = DynSegment::attach(&name).unwrap();
+    let one = seg
+        .check_write(named(&seg, "speed", 0, Value::UInt(3)))
+        .unwrap();
+    let request = vec![one; plc_io::shm::protocol::MAX_WRITES];
+    for _ in 0..16 {
+        seg.post_checked(&request).unwrap();
+    }
+    assert_eq!(
+        seg.write_checked(&request),
+        Err(ShmError::MailboxFull(name.clone())),
+        "16,384 writes wait: the next request is turned away"
+    );
+    assert_eq!(seg.status().writes_pending, 16);
+    // Larger than a request may be: refused before anything is sent.
+    let too_many = vec![one; plc_io::shm::protocol::MAX_WRITES + 1];
+    assert!(seg.post_checked(&too_many).is_err());
+}
+
 /// A write to element `leaf` of the variable called `name` in `seg`.
 fn named(seg: &DynSegment, name: &str, leaf: usize, value: Value) -> Write {
     let index = seg.index_of(name).expect("the variable is declared");

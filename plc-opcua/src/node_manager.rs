@@ -146,6 +146,19 @@ impl SegmentNodes {
             Ok(e) => e,
             Err(status) => return refuse("the value does not fit the variable", status),
         };
+        // What the program takes in one cycle: a larger array is written in parts (index
+        // ranges), each landing whole.
+        let most = plc_shm::protocol::MAX_WRITES;
+        if elements.len() > most {
+            return refuse(
+                &format!(
+                    "{} elements in one write, more than the {most} a cycle takes: write it in \
+                     parts with index ranges",
+                    elements.len()
+                ),
+                StatusCode::BadTooManyOperations,
+            );
+        }
         let (reply, answer) = oneshot::channel();
         let sent = self.shared.send_write(WriteJob {
             node: value.node_id.clone(),

@@ -18,8 +18,8 @@ impl DynSegment {
             .map_err(|r| super::error::refusal(self.name(), r))
     }
 
-    /// Forces values (checked by [`check_force`](Self::check_force); at most 64 in one
-    /// request, 256 held at once): the owner holds each at both of its cycle's boundaries
+    /// Forces values (checked by [`check_force`](Self::check_force); at most 256 held at
+    /// once): the owner holds each at both of its cycle's boundaries
     /// until it is released or the program stops, and refuses writes to it. Who may force is
     /// who may write. Returns once the owner holds them, or with its refusal.
     ///

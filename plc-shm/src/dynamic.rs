@@ -120,7 +120,7 @@ impl DynSegment {
     }
 
     /// Sends writes checked by [`check_write`](Self::check_write) as one request (at most
-    /// 64), applied by the owner in one cycle, all or none; returns once it answered.
+    /// 1,024, and 64 KiB: [`protocol::request_len`](crate::protocol::request_len)), applied by the owner in one cycle, all or none; returns once it answered.
     pub fn write_checked(&self, writes: &[Checked]) -> Result<(), ShmError> {
         self.view.send_and_wait(writes)
     }
@@ -131,7 +131,8 @@ impl DynSegment {
     }
 
     /// Writes several basic values as one request: checked whole before anything is sent,
-    /// applied by the owner in one cycle, all or none. At most 64 writes.
+    /// applied by the owner in one cycle, all or none. At most 1,024 writes (an array of up to
+    /// 1,024 elements written whole), and 64 KiB of them.
     ///
     /// ```no_run
     /// use plc_core::{Value, write::Write};
@@ -157,6 +158,13 @@ impl DynSegment {
     ) -> Result<Ticket, ShmError> {
         let checked = self.view.check_element(name, element, value)?;
         self.view.post(&[checked])
+    }
+
+    /// Sends writes checked by [`check_write`](Self::check_write) as one request, as
+    /// [`write_checked`](Self::write_checked) does, without waiting: its ticket, to ask for its
+    /// [`outcome`](Self::outcome) later.
+    pub fn post_checked(&self, writes: &[Checked]) -> Result<Ticket, ShmError> {
+        self.view.post(writes)
     }
 
     /// What became of a posted write: pending, applied, rejected or refused by the owner, not

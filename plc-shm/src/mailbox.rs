@@ -99,7 +99,13 @@ pub(crate) struct Counters {
     busy: AtomicU64,
     /// Requests queued for the cycle thread.
     pending: AtomicU64,
+    /// Writes (and forces and releases) in the queued requests: what the queue holds is
+    /// bounded by these ([`MAX_WAITING_WRITES`]), as a request holds up to 1,024.
+    pub waiting_writes: AtomicU64,
 }
+
+/// Writes that may wait for the cycle thread in all: about 4.5 MiB of queued values.
+pub const MAX_WAITING_WRITES: u64 = 16_384;
 
 /// Which counter to add to.
 #[derive(Clone, Copy, Debug)]
@@ -211,7 +217,7 @@ pub(crate) enum Kind {
 
 impl Kind {
     /// The values it writes or names, as the write counters count them.
-    fn count(&self) -> u64 {
+    pub fn count(&self) -> u64 {
         match self {
             Kind::Write(w) | Kind::Force(w) => w.len() as u64,
             Kind::Release(r) => r.values.len().max(1) as u64,
@@ -257,6 +263,10 @@ pub(crate) struct Inbox {
 
 /// How many requests one cycle applies at most; the rest wait for the next cycle.
 pub const PER_CYCLE: usize = 256;
+/// How many writes one cycle applies at most (a request is never split: one larger than the
+/// rest of this budget waits for the next cycle, and the first request of a cycle is always
+/// taken).
+pub const PER_CYCLE_WRITES: u64 = 4096;
 
 impl Inbox {
     /// Applies the queued requests to `gm`, in order, each all or none; answers each one.
@@ -280,7 +290,11 @@ impl Inbox {
         };
         self.answer_applied();
         let mut applied = 0;
+        let mut taken = 0;
         for _ in 0..PER_CYCLE {
+            if taken >= PER_CYCLE_WRITES {
+                break;
+            }
             let batch = match rx.try_recv() {
                 Ok(b) => b,
                 Err(TryRecvError::Empty | TryRecvError::Disconnected) => break,
@@ -288,6 +302,8 @@ impl Inbox {
             self.counters.queued(-1, base, off);
             batch.conn.outstanding.fetch_sub(1, Relaxed);
             let n = batch.kind.count();
+            taken += n;
+            self.counters.waiting_writes.fetch_sub(n, Relaxed);
             let forces = &mut self.forces.borrow_mut();
             let done = match batch.kind {
                 Kind::Write(writes) => {

@@ -15,7 +15,7 @@
 
 use super::layout::{Base, Offsets};
 use super::log_limit::LogLimit;
-use super::mailbox::{Batch, Conn, Count, Counters, Kind};
+use super::mailbox::{Batch, Conn, Count, Counters, Kind, MAX_WAITING_WRITES};
 use super::policy::Policy;
 use super::protocol::{self, Code};
 use super::trace::Recording;
@@ -462,6 +462,19 @@ impl Session<'_> {
             );
             return false;
         }
+        let writes = kind.count();
+        let waiting = &shared.counters.waiting_writes;
+        if waiting.fetch_add(writes, Relaxed) + writes > MAX_WAITING_WRITES {
+            waiting.fetch_sub(writes, Relaxed);
+            shared.counters.add(Count::Busy, 1, base, off);
+            conn.answer(
+                id,
+                Code::Busy,
+                0,
+                format!("{MAX_WAITING_WRITES} writes wait for the program already"),
+            );
+            return false;
+        }
         conn.outstanding.fetch_add(1, Relaxed);
         shared.counters.queued(1, base, off);
         let batch = Batch {
@@ -473,6 +486,7 @@ impl Session<'_> {
         match shared.queue.try_send(batch) {
             Ok(()) => true,
             Err(TrySendError::Full(b) | TrySendError::Disconnected(b)) => {
+                waiting.fetch_sub(writes, Relaxed);
                 conn.outstanding.fetch_sub(1, Relaxed);
                 shared.counters.queued(-1, base, off);
                 shared.counters.add(Count::Busy, 1, base, off);

@@ -308,6 +308,19 @@ impl View {
                 .into(),
             });
         }
+        let writes: Vec<Write> = requests.iter().map(|c| *c.write()).collect();
+        let len = super::protocol::request_len(&writes);
+        if len > super::protocol::MAX_MESSAGE {
+            return Err(ShmError::Os {
+                name: self.name().to_string(),
+                what: format!("cannot send {} writes as one request", requests.len()),
+                error: format!(
+                    "they take {len} bytes and a request at most {}: send the texts in parts",
+                    super::protocol::MAX_MESSAGE
+                )
+                .into(),
+            });
+        }
         self.client()?.post(requests)
     }
 

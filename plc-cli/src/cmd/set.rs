@@ -51,11 +51,12 @@ pub fn run(segment: &str, assignments: &[String]) -> Result<(), Error> {
         .iter()
         .map(|a| check(&seg, a))
         .collect::<Result<_, _>>()?;
-    // One request of at most 64 writes; a longer list goes in requests of 64, each whole.
-    for (n, part) in checked.chunks(64).enumerate() {
+    // One request of at most MAX_WRITES writes; a longer list goes in several, each whole.
+    let most = plc_shm::protocol::MAX_WRITES;
+    for (n, part) in checked.chunks(most).enumerate() {
         let writes: Vec<Checked> = part.iter().map(|a| a.write).collect();
         if let Err(e) = seg.write_checked(&writes) {
-            let done = n * 64;
+            let done = n * most;
             return Err(if done == 0 {
                 e.to_string()
             } else {

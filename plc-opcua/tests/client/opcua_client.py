@@ -527,6 +527,26 @@ async def run_ranges(url, segment, user, password, pki, workdir):
         await sub.delete()
         await other.delete()
 
+        # Arrays larger than 64 elements (a request held 64 writes once): written whole, in
+        # one cycle; one larger than a cycle's request is refused at once and written in parts.
+        table = client.get_node(ua.NodeId("table", ns))
+        values = [k * 3 - 1000 for k in range(1000)]
+        status = await write_status(client, table.nodeid, ua.Variant(values, ua.VariantType.Int32))
+        expect_status(status, "Good", "write the whole table (1,000 DINTs)")
+        await becomes(table, values, "table after its whole write")
+        ok("an array of 1,000 elements written whole is applied")
+        huge = client.get_node(ua.NodeId("huge", ns))
+        t = time.perf_counter()
+        status = await write_status(client, huge.nodeid, ua.Variant([5] * 1100, ua.VariantType.Int16))
+        expect_status(status, "BadTooManyOperations", "write 1,100 elements whole")
+        check(time.perf_counter() - t < 2, "the refusal took as long as a timeout")
+        expect_status(await write_range(client, huge.nodeid, [5] * 1000, "0:999"), "Good",
+                      "write huge[0:999]")
+        expect_status(await write_range(client, huge.nodeid, [6] * 100, "1000:1099"), "Good",
+                      "write huge[1000:1099]")
+        await becomes(huge, [5] * 1000 + [6] * 100, "huge after two parts")
+        ok("1,100 elements whole: BadTooManyOperations at once; in two parts: applied")
+
 
 async def user_client(url, user, password, pki, workdir):
     """A user's client as a careful HMI connects: Basic256Sha256 Sign, its certificate trusted

@@ -37,11 +37,13 @@ use plc_core::{FixedString, Value};
 pub const VERSION: u16 = 2;
 /// The greeting's first bytes.
 const GREETING_MAGIC: &[u8; 4] = b"PLCW";
-/// Writes in one request (a request is checked whole and applied in one cycle).
-pub const MAX_WRITES: usize = 64;
-/// The largest message either side sends or reads: a request of [`MAX_WRITES`] texts of 255
-/// bytes fits.
-pub const MAX_MESSAGE: usize = 11 + MAX_WRITES * (4 + 4 + 1 + 1 + 255);
+/// Writes in one request (a request is checked whole and applied in one cycle): an array of
+/// up to 1,024 elements written whole lands in one cycle.
+pub const MAX_WRITES: usize = 1024;
+/// The largest message either side sends or reads: [`MAX_WRITES`] numbers fit (about 17 KiB),
+/// and 247 texts of 255 bytes; a request of longer texts is refused before it is sent
+/// ([`request_len`]).
+pub const MAX_MESSAGE: usize = 64 << 10;
 /// The longest reason a reply carries.
 const MAX_REASON: usize = 1024;
 
@@ -318,7 +320,23 @@ pub fn decode_greeting(bytes: &[u8]) -> Result<Greeting, DecodeError> {
     Ok(Greeting { version, may_write })
 }
 
-/// A request's bytes. The caller keeps to [`MAX_WRITES`].
+/// How many bytes a request (or force) of `writes` takes: at most [`MAX_MESSAGE`] can be sent.
+pub fn request_len(writes: &[Write]) -> usize {
+    11 + writes
+        .iter()
+        .map(|w| {
+            4 + 4
+                + 1
+                + match w.value {
+                    Value::Bool(_) => 1,
+                    Value::Text(t) => 1 + t.as_str().len(),
+                    _ => 8,
+                }
+        })
+        .sum::<usize>()
+}
+
+/// A request's bytes. The caller keeps to [`MAX_WRITES`] and [`MAX_MESSAGE`].
 pub fn encode_request(request: &WriteRequest) -> Vec<u8> {
     encode_writes(TAG_WRITE, request)
 }
@@ -496,6 +514,31 @@ mod tests {
         }
     }
 
+    #[test]
+    fn a_thousand_numbers_fit_a_request_and_texts_as_many_as_64_kib_hold() {
+        let number = Write {
+            index: 1,
+            leaf: 2,
+            value: Value::Real(1.5),
+        };
+        assert!(request_len(&vec![number; MAX_WRITES]) <= MAX_MESSAGE);
+        let text = Write {
+            value: Value::Text(FixedString::from_str_truncate(&"x".repeat(255))),
+            ..number
+        };
+        assert!(request_len(&vec![text; 247]) <= MAX_MESSAGE);
+        assert!(request_len(&vec![text; 248]) > MAX_MESSAGE);
+        let bytes = encode_request(&WriteRequest {
+            id: 9,
+            writes: vec![text; 248],
+        });
+        assert_eq!(bytes.len(), request_len(&vec![text; 248]));
+        assert!(
+            decode_request(&bytes).is_err(),
+            "the owner refuses what a tool would not send"
+        );
+    }
+
     proptest! {
         /// Whatever bytes arrive, the decoders answer (a value or an error), never panic, and
         /// what they accept encodes back to the same bytes: one meaning per message.
@@ -534,7 +577,12 @@ mod tests {
                     .collect(),
             };
             let bytes = encode_request(&request);
-            prop_assert!(bytes.len() <= MAX_MESSAGE);
+            prop_assert_eq!(bytes.len(), request_len(&request.writes));
+            if bytes.len() > MAX_MESSAGE {
+                // A tool refuses to send it (`request_len`); the owner would refuse it too.
+                prop_assert!(decode_request(&bytes).is_err());
+                return Ok(());
+            }
             let back = decode_request(&bytes).unwrap();
             prop_assert_eq!(back.id, request.id);
             prop_assert_eq!(back.writes.len(), request.writes.len());
