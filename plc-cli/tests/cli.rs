@@ -137,6 +137,19 @@ fn get_and_set_reach_the_program() {
     assert!(got.contains("serial = 7"), "{got}");
     let dwell = stdout(&plc(&["get", s, "dwell"]));
     assert!(dwell.contains("dwell = LTIME#2m30s500ms"), "{dwell}");
+
+    // A STRING written by another tool with an escape sequence and a line end: `plc get`
+    // shows it escaped, so a value cannot clear the terminal or forge an output line.
+    let seg = plc_io::shm::DynSegment::attach(s).expect("attached");
+    let hostile = FixedString::from_str_truncate("ok\u{1b}[2J\nx = 1");
+    seg.write("recipe", plc_core::Value::Text(hostile))
+        .expect("written");
+    let got = stdout(&plc(&["get", s, "recipe"]));
+    assert!(
+        got.contains(r"recipe = ok\x1b[2J\nx = 1") && !got.contains('\u{1b}'),
+        "{got:?}"
+    );
+    assert_eq!(got.lines().count(), 1, "{got:?}");
 }
 
 #[test]

@@ -165,10 +165,11 @@ impl TypeLoader for RefusePlainTextPasswords {
         Some(
             UserNameIdentityToken::decode(stream, ctx).and_then(|token| {
                 if token.encryption_algorithm.is_empty() {
-                    log::warn!(
-                        "OPC UA sign-in refused: a user name token with its password in plain text \
-                     (the client must encrypt it with the server's certificate)"
-                    );
+                    REFUSED.warn(|| {
+                        "OPC UA sign-in refused: a user name token with its password in plain \
+                         text (the client must encrypt it with the server's certificate)"
+                            .to_string()
+                    });
                     Err(Error::new(
                         StatusCode::BadIdentityTokenRejected,
                         "the password of a user name token must be encrypted",
