@@ -42,6 +42,7 @@ pub mod fb;
 mod fixed_string;
 mod global_memory;
 mod image_bytes;
+pub mod motion;
 mod plc_type;
 mod process_image;
 mod raw_bits;
