@@ -47,3 +47,7 @@
 /// The examples of `docs/structures.md`, compiled and run as doctests so the page stays true.
 #[doc = include_str!("../../docs/structures.md")]
 pub mod structures_doc {}
+
+/// The examples of `docs/motion.md`, compiled and run as doctests so the page stays true.
+#[doc = include_str!("../../docs/motion.md")]
+pub mod motion_doc {}
