@@ -238,9 +238,20 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
             }
             item.set_initial_value(value);
             item.set_status(StatusCode::Good);
+            // As the server revised it (never below the program's period).
+            let ms = item.sampling_interval();
+            let interval = if ms.is_finite() && ms > 0.0 {
+                Duration::from_secs_f64((ms / 1000.0).min(3600.0))
+            } else {
+                Duration::ZERO
+            };
             let sampling = item.monitoring_mode() != MonitoringMode::Disabled;
-            self.shared
-                .monitor(item.handle(), &item.item_to_monitor().node_id, sampling);
+            self.shared.monitor(
+                item.handle(),
+                &item.item_to_monitor().node_id,
+                sampling,
+                interval,
+            );
         }
     }
 

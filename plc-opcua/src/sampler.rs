@@ -1,6 +1,6 @@
-//! A segment's sampler thread: the one place that reads the program's shared memory. Once per
-//! owner period it looks at the status block; after each new cycle it takes one seqlock
-//! snapshot and hands the monitored items the values that changed, stamped with the cycle's
+//! A segment's sampler thread: the one place that reads the program's shared memory. As often
+//! as the fastest monitored item asks (at most once per owner period) it looks at the status
+//! block; after each new cycle it takes one seqlock snapshot and hands the monitored items the values that changed, stamped with the cycle's
 //! UTC time. It answers Read requests from a fresh snapshot. It follows the owner: values turn
 //! Bad or Uncertain when it is gone, stalled or faulted (GoodLocalOverride while a force holds
 //! them); after a restart or takeover it attaches again, and rebuilds the namespace if the
@@ -86,12 +86,14 @@ impl Sampler {
             let now = Instant::now();
             if now >= next_poll {
                 self.poll();
-                // Without monitored items only the owner's state is followed, ten times a
-                // second; skip missed polls rather than catch up: only the newest cycle matters.
-                let every = if self.shared.monitored().is_empty() {
-                    self.period.max(IDLE_POLL)
-                } else {
-                    self.period
+                // As often as the fastest monitored item asks (never faster than the program
+                // cycles): an HMI sampling at 100 ms costs the program's machine ten
+                // snapshots a second, not one per cycle. Without monitored items only the
+                // owner's state is followed, ten times a second. Missed polls are skipped,
+                // not caught up: only the newest cycle matters.
+                let every = match self.shared.fastest_sampling() {
+                    Some(asked) => self.period.max(asked),
+                    None => self.period.max(IDLE_POLL),
                 };
                 next_poll = (next_poll + every).max(now);
             }

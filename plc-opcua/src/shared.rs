@@ -6,9 +6,10 @@ use crate::address::Layout;
 use opcua::server::MonitoredItemHandle;
 use opcua::types::{DataValue, NodeId, NumericRange, StatusCode, TimestampsToReturn};
 use plc_core::Value;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 use std::sync::mpsc::Sender;
 use std::sync::{Arc, Mutex, PoisonError, RwLock};
+use std::time::Duration;
 use tokio::sync::oneshot;
 
 /// Values to read: each node with its index range.
@@ -46,18 +47,31 @@ struct Monitored {
     list: Arc<Vec<NodeId>>,
     /// Whether `list` is older than `counts`.
     stale: bool,
-    enabled: HashMap<MonitoredItemHandle, (NodeId, bool)>,
+    /// Each item's node, whether it is sampled, and its sampling interval (microseconds).
+    enabled: HashMap<MonitoredItemHandle, (NodeId, bool, u64)>,
+    /// The sampling intervals of the sampled items, with a count each: the sampler samples
+    /// as fast as the fastest asks, not every cycle of the program.
+    intervals: BTreeMap<u64, usize>,
     refresh: Vec<NodeId>,
 }
 
 impl Monitored {
-    fn count(&mut self, node: &NodeId, up: bool) {
+    fn count(&mut self, node: &NodeId, interval_us: u64, up: bool) {
         if up {
             *self.counts.entry(node.clone()).or_default() += 1;
-        } else if let Some(n) = self.counts.get_mut(node) {
-            *n -= 1;
-            if *n == 0 {
-                self.counts.remove(node);
+            *self.intervals.entry(interval_us).or_default() += 1;
+        } else {
+            if let Some(n) = self.counts.get_mut(node) {
+                *n -= 1;
+                if *n == 0 {
+                    self.counts.remove(node);
+                }
+            }
+            if let Some(n) = self.intervals.get_mut(&interval_us) {
+                *n -= 1;
+                if *n == 0 {
+                    self.intervals.remove(&interval_us);
+                }
             }
         }
         self.stale = true;
@@ -118,32 +132,48 @@ impl Shared {
         *self.layout.write().unwrap_or_else(PoisonError::into_inner) = layout;
     }
 
-    /// Records monitored item `item` on `node`, sampled unless `sampling` is false (created
-    /// Disabled).
-    pub fn monitor(&self, item: MonitoredItemHandle, node: &NodeId, sampling: bool) {
+    /// Records monitored item `item` on `node`, sampled every `interval` unless `sampling` is
+    /// false (created Disabled).
+    pub fn monitor(
+        &self,
+        item: MonitoredItemHandle,
+        node: &NodeId,
+        sampling: bool,
+        interval: Duration,
+    ) {
+        let us = u64::try_from(interval.as_micros()).unwrap_or(u64::MAX);
         let mut m = lock(&self.monitored);
-        if let Some((old, was)) = m.enabled.insert(item, (node.clone(), sampling))
+        if let Some((old, was, old_us)) = m.enabled.insert(item, (node.clone(), sampling, us))
             && was
         {
-            m.count(&old, false);
+            m.count(&old, old_us, false);
         }
         if sampling {
-            m.count(node, true);
+            m.count(node, us, true);
         }
+    }
+
+    /// How often the fastest sampled item asks to be sampled (`None`: no item is sampled).
+    pub fn fastest_sampling(&self) -> Option<Duration> {
+        let m = lock(&self.monitored);
+        m.intervals
+            .keys()
+            .next()
+            .map(|&us| Duration::from_micros(us))
     }
 
     /// Sets whether item `item` is sampled (its monitoring mode is not Disabled); one enabled
     /// again gets its node's current value at the next sample.
     pub fn set_sampling(&self, item: MonitoredItemHandle, sampling: bool) {
         let mut m = lock(&self.monitored);
-        let Some((node, was)) = m.enabled.get(&item).cloned() else {
+        let Some((node, was, us)) = m.enabled.get(&item).cloned() else {
             return;
         };
         if was == sampling {
             return;
         }
-        m.enabled.insert(item, (node.clone(), sampling));
-        m.count(&node, sampling);
+        m.enabled.insert(item, (node.clone(), sampling, us));
+        m.count(&node, us, sampling);
         if sampling {
             m.refresh.push(node);
         }
@@ -152,8 +182,8 @@ impl Shared {
     /// Forgets monitored item `item`.
     pub fn unmonitor(&self, item: MonitoredItemHandle) {
         let mut m = lock(&self.monitored);
-        if let Some((node, true)) = m.enabled.remove(&item) {
-            m.count(&node, false);
+        if let Some((node, true, us)) = m.enabled.remove(&item) {
+            m.count(&node, us, false);
         }
     }
 
@@ -175,5 +205,28 @@ impl Shared {
     /// Sends a write to the segment's writer; `None` once it has stopped.
     pub fn send_write(&self, job: WriteJob) -> Option<()> {
         lock(&self.writes).send(job).ok()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_fastest_sampled_interval_is_kept_as_items_come_and_go() {
+        let mut m = Monitored::default();
+        let (a, b) = (NodeId::new(1, "a"), NodeId::new(1, "b"));
+        m.count(&a, 100_000, true);
+        m.count(&b, 10_000, true);
+        m.count(&a, 10_000, true);
+        assert_eq!(m.intervals.keys().next(), Some(&10_000));
+        assert_eq!(m.list().len(), 2);
+        m.count(&b, 10_000, false);
+        assert_eq!(m.intervals.keys().next(), Some(&10_000), "a's second item");
+        m.count(&a, 10_000, false);
+        assert_eq!(m.intervals.keys().next(), Some(&100_000));
+        assert_eq!(m.list().as_slice(), [a.clone()]);
+        m.count(&a, 100_000, false);
+        assert!(m.intervals.is_empty() && m.list().is_empty());
     }
 }
