@@ -159,6 +159,26 @@ fn test_dir(what: &str) -> PathBuf {
     dir
 }
 
+/// Runs the client script's check `what` as the user `operator`, with the server's
+/// certificate store (`dir/pki`) and `dir` to make the client's certificate in.
+fn user_client(dir: &Path, what: &str, url: &str, segment: &str) {
+    let (pki, work) = (dir.join("pki"), dir);
+    let utf8 = |p: &Path| p.to_str().expect("a UTF-8 temp dir").to_string();
+    let (pki, work) = (utf8(&pki), utf8(work));
+    client(
+        dir,
+        &[
+            what,
+            url,
+            segment,
+            "operator",
+            "pw of the operator",
+            &pki,
+            &work,
+        ],
+    );
+}
+
 /// A TCP port free just now.
 fn free_port() -> u16 {
     let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
@@ -299,20 +319,7 @@ fn writes_with_an_index_range_set_exactly_the_selected_elements() {
     let users = add_user(&dir);
     let (_server, port) = serve(&dir, &segment, Some(&users));
     let url = format!("opc.tcp://127.0.0.1:{port}/");
-    let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
-    let pki = pki.to_str().expect("a UTF-8 temp dir");
-    client(
-        &dir,
-        &[
-            "ranges",
-            &url,
-            &segment,
-            "operator",
-            "pw of the operator",
-            pki,
-            work,
-        ],
-    );
+    user_client(&dir, "ranges", &url, &segment);
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the owner stops");
     let _ = std::fs::remove_dir_all(&dir);
@@ -372,26 +379,13 @@ fn a_forced_value_is_served_and_writes_to_it_are_refused_as_locked_until_release
     ]
     .map(|f| seg.check_force(f).expect("a valid force"));
     seg.force(&forces).expect("forced");
-    let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
-    let pki = pki.to_str().expect("a UTF-8 temp dir");
-    let client_args = |what: &'static str| -> [&str; 7] {
-        [
-            what,
-            &url,
-            &segment,
-            "operator",
-            "pw of the operator",
-            pki,
-            work,
-        ]
-    };
-    client(&dir, &client_args("forced"));
+    user_client(&dir, "forced", &url, &segment);
     assert_eq!(seg.read("setpoint").expect("read"), Value::Real(2.5));
 
     seg.release(&[(setpoint, 0), (row, 2)], false)
         .expect("released");
     assert_eq!(seg.status().forces, 0);
-    client(&dir, &client_args("released"));
+    user_client(&dir, "released", &url, &segment);
     assert_eq!(seg.read("setpoint").expect("read"), Value::Real(7.0));
 
     stop.stop();

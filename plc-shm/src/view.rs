@@ -297,29 +297,24 @@ impl View {
     /// Sends checked writes as one request.
     pub fn post(&self, requests: &[Checked]) -> Result<Ticket, ShmError> {
         self.check_owner()?;
-        if requests.is_empty() || requests.len() > super::protocol::MAX_WRITES {
-            return Err(ShmError::Os {
-                name: self.name().to_string(),
-                what: format!("cannot send {} writes as one request", requests.len()),
-                error: format!(
-                    "a request holds 1 to {} writes",
-                    super::protocol::MAX_WRITES
-                )
-                .into(),
-            });
+        let too_large = |why: String| ShmError::Os {
+            name: self.name().to_string(),
+            what: format!("cannot send {} writes as one request", requests.len()),
+            error: why.into(),
+        };
+        let most = super::protocol::MAX_WRITES;
+        if requests.is_empty() || requests.len() > most {
+            return Err(too_large(format!("a request holds 1 to {most} writes")));
         }
         let writes: Vec<Write> = requests.iter().map(|c| *c.write()).collect();
-        let len = super::protocol::request_len(&writes);
-        if len > super::protocol::MAX_MESSAGE {
-            return Err(ShmError::Os {
-                name: self.name().to_string(),
-                what: format!("cannot send {} writes as one request", requests.len()),
-                error: format!(
-                    "they take {len} bytes and a request at most {}: send the texts in parts",
-                    super::protocol::MAX_MESSAGE
-                )
-                .into(),
-            });
+        let (len, most) = (
+            super::protocol::request_len(&writes),
+            super::protocol::MAX_MESSAGE,
+        );
+        if len > most {
+            return Err(too_large(format!(
+                "they take {len} bytes and a request at most {most}: send the texts in parts"
+            )));
         }
         self.client()?.post(requests)
     }
