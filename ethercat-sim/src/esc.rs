@@ -47,8 +47,35 @@ pub mod reg {
     pub const DC_SYSTEM_TIME_OFFSET: usize = 0x0920;
     /// DC system time delay (u32).
     pub const DC_SYSTEM_TIME_DELAY: usize = 0x0928;
-    /// DC system time difference (u32, read-only).
+    /// DC system time difference (u32, read-only): sign (bit 31, local copy smaller) and
+    /// magnitude of the mean difference between the local copy and the received system time.
     pub const DC_SYSTEM_TIME_DIFFERENCE: usize = 0x092C;
+    /// DC speed counter start (u16): bandwidth of the time control loop; a write resets it.
+    pub const DC_SPEED_COUNTER_START: usize = 0x0930;
+    /// DC speed counter diff (u16, two's complement, read-only): the loop's rate correction.
+    pub const DC_SPEED_COUNTER_DIFF: usize = 0x0932;
+    /// DC system time difference filter depth (u8, bits 0-3).
+    pub const DC_TIME_FILTER_DEPTH: usize = 0x0934;
+    /// DC speed counter filter depth (u8, bits 0-3).
+    pub const DC_SPEED_FILTER_DEPTH: usize = 0x0935;
+    /// DC cyclic unit control (u8): bit 0 assigns the SYNC out unit to the PDI.
+    pub const DC_CYCLIC_UNIT_CONTROL: usize = 0x0980;
+    /// DC activation (u8): bit 0 SYNC out unit, bit 1 SYNC0, bit 2 SYNC1 (see `dc/sync0.rs`).
+    pub const DC_ACTIVATION: usize = 0x0981;
+    /// DC pulse length of the SYNC signals (u16, read-only, from SII word 2; 0 is
+    /// acknowledge mode).
+    pub const DC_PULSE_LENGTH: usize = 0x0982;
+    /// DC activation status (u8, read-only): bit 0 first SYNC0 pulse pending.
+    pub const DC_ACTIVATION_STATUS: usize = 0x0984;
+    /// DC SYNC0 status (u8, read-only): bit 0 set by a SYNC0 pulse.
+    pub const DC_SYNC0_STATUS: usize = 0x098E;
+    /// DC start time of cyclic operation (u64): written, the first SYNC0 pulse; read, the
+    /// next one.
+    pub const DC_SYNC0_START_TIME: usize = 0x0990;
+    /// DC SYNC0 cycle time (u32, ns; 0 is a single pulse).
+    pub const DC_SYNC0_CYCLE_TIME: usize = 0x09A0;
+    /// DC SYNC1 cycle time (u32, ns; kept, SYNC1 is not generated).
+    pub const DC_SYNC1_CYCLE_TIME: usize = 0x09A4;
     /// Process data RAM starts here.
     pub const PROCESS_RAM: usize = 0x1000;
 }
@@ -124,6 +151,9 @@ pub fn writable(a: usize) -> bool {
             | 0x0904..=0x090F
             | 0x0918..=0x091F
             | 0x092C..=0x092F
+            | 0x0932..=0x0933
+            | 0x0982..=0x098F
+            | 0x0998..=0x099F
     )
 }
 

@@ -3,9 +3,14 @@
 //!
 //! - [`Device`]: Beckhoff EK1100, EL1004, EL2004, EL2828, EL2889 and EL3004, built from the
 //!   SII EEPROM images of real terminals (`data/`), with the ESC's registers, EEPROM interface
-//!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed-clock
-//!   registers; the EL3004 with a CoE mailbox (expedited SDO upload and download, normal
-//!   upload of its device name 0x1008) through which ethercrab reads its PDO assignment.
+//!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed clocks
+//!   (a local clock per device that drifts, seeded per bus, its time control loop and its
+//!   SYNC0 output: [`SimBus::with_clock_seed`], [`Sync0`]); the EL3004 with a CoE mailbox
+//!   (expedited SDO upload and download, normal upload of its device name 0x1008) through
+//!   which ethercrab reads its PDO assignment; and a Kollmorgen AKD servo drive (order name
+//!   `AKD`, alias `servo`; `Device::akd`), a CiA 402 drive over CoE with its state machine,
+//!   cyclic synchronous position and velocity, homing on the current position, a motor model
+//!   and a following error window.
 //! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR,
 //!   LRD/LWR/LRW, FRMW and the read-write variants) with working counters as real ESCs count
 //!   them; inputs, outputs and faults for tests.
@@ -38,7 +43,8 @@
 //!         eeprom: Duration::from_millis(200),
 //!         ..Timeouts::default()
 //!     },
-//!     // 100 static DC sync frames instead of 10 000: the simulated clocks do not drift.
+//!     // 100 static DC sync frames instead of 10 000: enough here, where no test looks at
+//!     // the clocks (they settle within about a hundred; see `tests/dc.rs`).
 //!     MainDeviceConfig { dc_static_sync_iterations: 100, ..Default::default() },
 //! );
 //! let group = block_on(md.init_single_group::<4, 8>(ethercrab::std::ethercat_now)).unwrap();
@@ -66,7 +72,7 @@
 //!
 //! Not simulated: mailbox services other than expedited SDO transfers and normal uploads
 //! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of
-//! terminals with a microcontroller, SYNC0/1 signals, bit-granular FMMUs, watchdog timing (a
+//! terminals with a microcontroller, SYNC1 signals, bit-granular FMMUs, watchdog timing (a
 //! test trips the watchdog), line errors (the RX error counters 0x0300-0x0307 count nothing;
 //! a write clears them, as on an ESC), and EEPROM contents the captures do not hold (see
 //! `data/README.md`).
@@ -85,6 +91,7 @@ mod transport;
 
 pub use bus::{FrameCounters, REPLY_SOURCE, SimBus};
 pub use datagram::{Command, Datagram, ETHERTYPE, Malformed};
+pub use dc::{HOP_NS, Sync0};
 pub use device::Device;
 pub use esc::EscInfo;
 pub use sii::SiiSyncManager;

@@ -3,9 +3,10 @@
 //!
 //! This file holds the shared bus ([`SimBus`]): building it, its lock, what a test reads of
 //! it, and frames in; beside it: [`routing`] (a frame's datagrams through the devices, with
-//! working counters), [`io`] (inputs and outputs for tests) and [`faults`] (fault
-//! injection).
+//! working counters), [`io`] (inputs and outputs for tests), [`dc`] (distributed clocks and
+//! SYNC0 as tests see them) and [`faults`] (fault injection).
 
+mod dc;
 mod faults;
 mod io;
 mod routing;
@@ -14,7 +15,7 @@ mod tests;
 
 pub use routing::{FrameCounters, REPLY_SOURCE};
 
-use crate::dc::Position;
+use crate::dc::{self as clocks, Position};
 use crate::device::Device;
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::Instant;
@@ -23,10 +24,15 @@ use std::time::Instant;
 /// times; capture \[A\] shows clocks at 0x158A.., 0x1636.., 0x15A9..).
 const CLOCK_SPREAD_NS: u64 = 0x0B00_0000;
 
+/// The clock seed of [`SimBus::new`].
+const DEFAULT_CLOCK_SEED: u64 = 0x00DC_C10C;
+
 struct Ring {
     devices: Vec<Device>,
     counters: FrameCounters,
     epoch: Instant,
+    /// Bus time of the last frame.
+    now: u64,
 }
 
 /// Simulated SubDevices in ring order, shared between the transport and the test or example
@@ -59,16 +65,39 @@ impl std::fmt::Debug for SimBus {
 
 impl SimBus {
     /// A bus of `devices` in a line, in ring order: every device but the last has ports 0
-    /// and 1 open, the last only port 0 (its port 1 closes the ring).
-    pub fn new(mut devices: Vec<Device>) -> SimBus {
+    /// and 1 open, the last only port 0 (its port 1 closes the ring). The devices' local
+    /// clocks drift as [`with_clock_seed`](Self::with_clock_seed) describes, with a fixed
+    /// seed: every bus of the same devices has the same clocks.
+    pub fn new(devices: Vec<Device>) -> SimBus {
+        SimBus::with_clock_seed(devices, DEFAULT_CLOCK_SEED)
+    }
+
+    /// A bus as [`new`](Self::new) makes it, whose devices' local clocks come from `seed`:
+    /// each starts at its own time (hundreds of milliseconds apart, as terminals that
+    /// powered up one after the other) and drifts by 5 to 100 ppm, faster or slower
+    /// ([`Device::dc_drift_ppb`]). The same seed gives the same clocks; a MainDevice that
+    /// distributes the reference clock's time (ethercrab's static drift compensation and
+    /// cyclic FRMW) brings their system times together through each device's time control
+    /// loop.
+    ///
+    /// ```
+    /// use ethercat_sim::{Device, SimBus};
+    /// let bus = SimBus::with_clock_seed(vec![Device::ek1100(), Device::el2004()], 42);
+    /// let again = SimBus::with_clock_seed(vec![Device::ek1100(), Device::el2004()], 42);
+    /// let drift = bus.device(1).dc_drift_ppb();
+    /// assert!((5_000..=100_000).contains(&drift.abs()));
+    /// assert_eq!(drift, again.device(1).dc_drift_ppb());
+    /// ```
+    pub fn with_clock_seed(mut devices: Vec<Device>, seed: u64) -> SimBus {
         let count = devices.len();
         for (index, d) in devices.iter_mut().enumerate() {
             d.position = Position {
                 index,
                 count,
-                clock_offset: 0x1580_0000 + CLOCK_SPREAD_NS * ((index as u64 * 5) % 3),
                 next_link_lost: false,
             };
+            let start = 0x1580_0000 + CLOCK_SPREAD_NS * ((index as u64 * 5) % 3);
+            d.dc.clock = clocks::seeded(seed, index, start);
             d.set_dl_status();
         }
         SimBus {
@@ -76,6 +105,7 @@ impl SimBus {
                 devices,
                 counters: FrameCounters::default(),
                 epoch: Instant::now(),
+                now: 0,
             })),
         }
     }
@@ -152,12 +182,14 @@ impl SimBus {
 
     /// [`process_frame`](Self::process_frame) at bus time `now_ns` instead of the bus's
     /// clock, for replaying captures with their timestamps: EEPROM busy times and DC
-    /// receive times follow the given time. Keep to one time base per bus.
+    /// receive times, local clocks and SYNC0 follow the given time. Keep to one time base per
+    /// bus.
     pub fn process_frame_at(&self, frame: &[u8], now_ns: u64) -> Option<Vec<u8>> {
         Self::process(&mut self.ring(), frame, now_ns)
     }
 
     fn process(ring: &mut Ring, frame: &[u8], now: u64) -> Option<Vec<u8>> {
+        ring.now = now;
         routing::process(&mut ring.devices, &mut ring.counters, frame, now)
     }
 }

@@ -32,6 +32,10 @@ pub(super) fn process(
     frame: &[u8],
     now: u64,
 ) -> Option<Vec<u8>> {
+    for dev in devices.iter_mut() {
+        // SYNC0 pulses run on each device's own clock, whether the frame reaches it or not.
+        dev.tick_dc(now);
+    }
     let mut out = frame.to_vec();
     let mut datagrams = 0;
     let result = datagram::for_each(&mut out, |d| {
@@ -86,6 +90,8 @@ fn process_datagram(devices: &mut [Device], d: &mut Datagram<'_>, now: u64) {
             }
             Command::Lrd | Command::Lwr | Command::Lrw => {
                 let start = d.logical_address();
+                // A drive's firmware runs its cycle before the exchange (device/servo).
+                dev.before_process_data(now, start, d.data.len());
                 logical(dev, d.command, start, d.data, &mut d.wkc);
             }
             Command::Frmw | Command::Armw => {

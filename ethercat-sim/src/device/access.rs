@@ -1,11 +1,10 @@
 //! What a datagram's read or write does to the ESC: registers that change by themselves
-//! brought up to date before a read (EEPROM interface, system time), read-only bytes kept on
-//! a write, and the ESC's reactions to written registers (AL control, EEPROM commands, DC
-//! latches and system time, RX error counters, the output mailbox).
+//! brought up to date before a read (EEPROM interface, DC registers), read-only bytes kept
+//! on a write, and the ESC's reactions to written registers (AL control, EEPROM commands,
+//! RX error counters, the output mailbox; DC registers in [`super::dc`]).
 
 use super::Device;
 use crate::al;
-use crate::dc;
 use crate::esc::{self, SPACE, reg};
 use crate::sii::Completed;
 
@@ -32,11 +31,7 @@ impl Device {
         if overlaps(SII_REGS) {
             self.tick_eeprom(now);
         }
-        if overlaps(reg::DC_SYSTEM_TIME..reg::DC_SYSTEM_TIME + 8) {
-            let local = self.position.arrival(now);
-            let offset = self.u64_at(reg::DC_SYSTEM_TIME_OFFSET);
-            self.set_u64(reg::DC_SYSTEM_TIME, dc::system_time(local, offset));
-        }
+        self.refresh_dc(ado, len, now);
     }
 
     fn tick_eeprom(&mut self, now: u64) {
@@ -91,17 +86,7 @@ impl Device {
         if touches(reg::SII_CONTROL) || touches(reg::SII_CONTROL + 1) {
             self.on_sii_command(now);
         }
-        if touches(reg::DC_RECEIVE_TIME) && self.esc.has_dc() {
-            self.on_latch(now);
-        }
-        if let Some(old) = old_system_time
-            && self.esc.dc_system_time
-        {
-            // System time is not set by a write: the ESC compares and corrects its clock.
-            let written = self.u64_at(reg::DC_SYSTEM_TIME);
-            self.set_u64(reg::DC_SYSTEM_TIME, old);
-            self.on_system_time_write(written, now);
-        }
+        self.after_dc_write(ado, data.len(), now, old_system_time);
     }
 
     fn on_al_control(&mut self) {
@@ -128,28 +113,5 @@ impl Device {
         }
         let status = self.eeprom.status();
         self.set_u16(reg::SII_CONTROL, status);
-    }
-
-    fn on_latch(&mut self, now: u64) {
-        let (ports, unit) = dc::latch(&self.position, now);
-        for (i, time) in ports.iter().enumerate() {
-            if let Some(t) = time {
-                let a = reg::DC_RECEIVE_TIME + 4 * i;
-                self.mem[a..a + 4].copy_from_slice(&t.to_le_bytes());
-            }
-        }
-        if self.esc.dc_system_time {
-            self.set_u64(reg::DC_RECEIVE_TIME_PU, unit);
-        }
-    }
-
-    fn on_system_time_write(&mut self, written: u64, now: u64) {
-        let local = self.position.arrival(now);
-        let offset = self.u64_at(reg::DC_SYSTEM_TIME_OFFSET);
-        let delay = self.u32_at(reg::DC_SYSTEM_TIME_DELAY);
-        let (offset, diff) = dc::on_system_time_write(local, offset, delay, written);
-        self.set_u64(reg::DC_SYSTEM_TIME_OFFSET, offset);
-        self.mem[reg::DC_SYSTEM_TIME_DIFFERENCE..reg::DC_SYSTEM_TIME_DIFFERENCE + 4]
-            .copy_from_slice(&diff.to_le_bytes());
     }
 }

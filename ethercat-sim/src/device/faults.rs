@@ -8,14 +8,18 @@ use crate::esc::reg;
 impl Device {
     /// The device restarts, as after losing its power: every register and the process RAM
     /// back to their power-on values (INIT, station address 0, SyncManagers and FMMUs off,
-    /// alias reloaded from the EEPROM, CoE objects back to their defaults), the EEPROM
-    /// contents kept. Injected faults stay.
+    /// alias reloaded from the EEPROM, CoE objects back to their defaults, the DC loop and
+    /// SYNC unit reset), the EEPROM contents kept. Injected faults stay.
     pub(crate) fn power_on_reset(&mut self) {
         let fresh = Device::from_sii(self.eeprom.words.clone(), self.esc);
         self.mem = fresh.mem;
         self.eeprom = fresh.eeprom;
         self.coe.clone_from(&self.coe_at_power_on);
+        if let Some(drive) = self.servo.as_deref_mut() {
+            *drive = super::servo::Drive::default();
+        }
         self.faults.latched = None;
+        self.dc.power_on_reset();
         self.set_dl_status();
     }
 

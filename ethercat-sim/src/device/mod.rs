@@ -3,20 +3,23 @@
 //!
 //! This file holds the device's state, its power-on values and what can be read of it
 //! directly; beside it: [`access`] (datagram reads and writes of the ESC and its reactions),
+//! [`dc`] (the distributed-clock registers),
 //! [`mailbox`] (the CoE mailbox), [`process_data`] (FMMUs and SyncManager areas),
 //! [`faults`] (a power cycle, a tripped watchdog) and [`models`] (the modelled terminals).
 
 mod access;
+mod dc;
 mod faults;
 mod mailbox;
 mod models;
 mod process_data;
+mod servo;
 #[cfg(test)]
 mod tests;
 
 use crate::al;
 use crate::coe::Dictionary;
-use crate::dc::Position;
+use crate::dc::{DcUnit, Position, Sync0};
 use crate::esc::{EscInfo, SPACE, reg};
 use crate::fault::Faults;
 use crate::sii::{self, Eeprom, SiiSyncManager};
@@ -38,6 +41,8 @@ pub struct Device {
     sync_managers: Vec<SiiSyncManager>,
     pub(crate) faults: Faults,
     pub(crate) position: Position,
+    /// The distributed-clock unit: local clock, time control loop, SYNC0.
+    pub(crate) dc: DcUnit,
     /// The CoE object dictionary of a device with a mailbox.
     coe: Option<Dictionary>,
     /// Its contents at power-on (the firmware keeps SDO writes in RAM only).
@@ -46,6 +51,8 @@ pub struct Device {
     /// does not mirror the acknowledge bit of AL control (EMULATOR-NOTES §5: 0x0001 after
     /// `BWR 0x0120 = 0x0011`).
     microcontroller: bool,
+    /// The firmware of a CiA 402 drive, run on each process-data exchange (see [`servo`]).
+    servo: Option<Box<servo::Drive>>,
 }
 
 impl Device {
@@ -74,16 +81,32 @@ impl Device {
             eeprom: Eeprom::new(words, esc.sii_idle),
             faults: Faults::default(),
             position: Position::default(),
+            dc: DcUnit::default(),
             coe: None,
             coe_at_power_on: None,
             microcontroller: false,
+            servo: None,
         };
         d.load_from_eeprom();
         d.set_u16(reg::AL_CONTROL, al::INIT as u16);
         d.set_u16(reg::AL_STATUS, al::INIT as u16);
         d.set_u16(reg::SII_CONTROL, esc.sii_idle);
         d.set_dl_status();
+        if esc.dc_system_time {
+            d.set_dc_power_on_values();
+        }
         d
+    }
+
+    /// Power-on values of the time control loop and the SYNC unit (datasheet, Section II):
+    /// speed counter start 0x1000, filter depths 4 and 12, and the pulse length of the SYNC
+    /// signals from SII word 2 (0 on the modelled terminals: acknowledge mode).
+    fn set_dc_power_on_values(&mut self) {
+        self.set_u16(reg::DC_SPEED_COUNTER_START, 0x1000);
+        self.mem[reg::DC_TIME_FILTER_DEPTH] = 0x04;
+        self.mem[reg::DC_SPEED_FILTER_DEPTH] = 0x0C;
+        let pulse_length = self.eeprom.words.get(2).copied().unwrap_or(0);
+        self.set_u16(reg::DC_PULSE_LENGTH, pulse_length);
     }
 
     /// The model name (the SII's order number, e.g. "EK1100").
@@ -143,6 +166,18 @@ impl Device {
         self.u16_at(reg::AL_STATUS_CODE)
     }
 
+    /// The drift of the device's local clock in parts per billion (its oscillator runs
+    /// `1 + drift` ns per ns of bus time); 0 for a device that is on no bus.
+    pub fn dc_drift_ppb(&self) -> i64 {
+        self.dc.clock.drift_ppb()
+    }
+
+    /// What the device's SYNC0 output has done, up to the last frame it saw (nothing on a
+    /// device without a DC system-time unit).
+    pub fn sync0(&self) -> Sync0 {
+        self.dc.sync.snapshot()
+    }
+
     /// Reads registers or process RAM directly, as the device's own PDI would (not a
     /// datagram: no working counter, no side effects; 0 beyond the modelled space).
     pub fn register(&self, address: usize, out: &mut [u8]) {
@@ -159,7 +194,7 @@ impl Device {
         self.mem[a..a + 2].copy_from_slice(&v.to_le_bytes());
     }
 
-    fn u32_at(&self, a: usize) -> u32 {
+    pub(crate) fn u32_at(&self, a: usize) -> u32 {
         u32::from_le_bytes([
             self.mem[a],
             self.mem[a + 1],

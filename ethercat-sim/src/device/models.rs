@@ -76,11 +76,13 @@ impl Device {
     }
 
     /// The order numbers of the modelled terminals, as [`Device::model`] takes them.
-    pub const MODELS: [&'static str; 6] =
-        ["EK1100", "EL1004", "EL2004", "EL2828", "EL2889", "EL3004"];
+    pub const MODELS: [&'static str; 7] = [
+        "EK1100", "EL1004", "EL2004", "EL2828", "EL2889", "EL3004", "AKD",
+    ];
 
     /// The model of order number `name` (case-insensitive: `"el1004"` is the EL1004), or
-    /// `None` for a terminal that is not modelled (see [`Device::MODELS`]).
+    /// `None` for a terminal that is not modelled (see [`Device::MODELS`]). `"servo"` is
+    /// another name of the AKD servo drive ([`Device::akd`]).
     ///
     /// ```
     /// use ethercat_sim::Device;
@@ -95,6 +97,7 @@ impl Device {
             "EL2828" => Device::el2828,
             "EL2889" => Device::el2889,
             "EL3004" => Device::el3004,
+            "AKD" | "SERVO" => Device::akd,
             _ => return None,
         };
         Some(make())
