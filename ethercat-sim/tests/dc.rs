@@ -261,7 +261,10 @@ fn sync0_with_a_start_time_in_the_past_never_fires() {
     }
     let s = bus.sync0(1);
     assert!(s.pulses >= 3, "{s:?}");
-    assert_eq!(s.last_pulse.unwrap() % 500_000, (now + 20_000_000) % 500_000);
+    assert_eq!(
+        s.last_pulse.unwrap() % 500_000,
+        (now + 20_000_000) % 500_000
+    );
 }
 
 /// A frame from 10:10:10:10:10:10 with one datagram.
