@@ -1,0 +1,271 @@
+//! A servo axis of `plc_core::motion` driving the simulated Kollmorgen AKD through real
+//! ethercrab: the drive's entries linked at the top level and copied into the axis each
+//! cycle, as docs/motion.md shows.
+
+#[path = "common/sim_bench.rs"]
+mod sim_bench;
+
+use ethercat_sim::{Device, SimBus};
+use plc_core::GlobalMemory;
+use plc_core::motion::{
+    Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error,
+};
+use plc_io::ethercat::{BusConfig, EtherCatBackend, StartupSdo};
+use std::time::{Duration, Instant};
+
+/// The drive's 2^20 increments per revolution, one revolution per 10 mm of travel.
+const SCALE: f64 = 1_048_576.0 / 10.0;
+
+#[derive(GlobalMemory, Debug, Clone)]
+struct Machine {
+    #[plc(link = "ethercat.servo.controlword", direction = "output")]
+    controlword: u16,
+    #[plc(link = "ethercat.servo.modes_of_operation", direction = "output")]
+    mode: i8,
+    #[plc(link = "ethercat.servo.target_position", direction = "output")]
+    target_position: i32,
+    #[plc(link = "ethercat.servo.target_velocity", direction = "output")]
+    target_velocity: i32,
+    #[plc(link = "ethercat.servo.statusword", direction = "input")]
+    statusword: u16,
+    #[plc(link = "ethercat.servo.modes_of_operation_display", direction = "input")]
+    mode_display: i8,
+    #[plc(link = "ethercat.servo.position_actual_value", direction = "input")]
+    position: i32,
+    #[plc(link = "ethercat.servo.velocity_actual_value", direction = "input")]
+    velocity: i32,
+    #[plc(link = "ethercat.servo.following_error_actual_value", direction = "input")]
+    following_error: i32,
+    #[plc(link = "ethercat.servo.error_code", direction = "input")]
+    error_code: u16,
+    /// The crosshead, in mm.
+    #[plc(quantity = "length")]
+    axis: Axis,
+    power: McPower,
+    home: McHome,
+    move_to: McMoveAbsolute,
+    stop: McStop,
+    reset: McReset,
+}
+
+/// The AKD's process image as the simulated drive maps it (0x1600 and 0x1A00).
+fn description(startup: Vec<StartupSdo>) -> BusConfig {
+    BusConfig::from_toml_str(
+        r#"
+        [[devices]]
+        name = "servo"
+        description = "Kollmorgen AKD servo drive, CiA 402"
+        identity = { vendor = 0x6a, product = 0x00414b44 }
+        entries = [
+            { name = "controlword", direction = "output", bits = 16, type = "UINT" },
+            { name = "modes_of_operation", direction = "output", bits = 8, type = "SINT" },
+            { name = "target_position", direction = "output", bits = 32, type = "DINT" },
+            { name = "target_velocity", direction = "output", bits = 32, type = "DINT" },
+            { name = "statusword", direction = "input", bits = 16, type = "UINT" },
+            { name = "modes_of_operation_display", direction = "input", bits = 8, type = "SINT" },
+            { name = "position_actual_value", direction = "input", bits = 32, type = "DINT" },
+            { name = "velocity_actual_value", direction = "input", bits = 32, type = "DINT" },
+            { name = "following_error_actual_value", direction = "input", bits = 32, type = "DINT" },
+            { name = "error_code", direction = "input", bits = 16, type = "UINT" },
+        ]
+        "#,
+    )
+    .map(|mut bus| {
+        bus.devices[0].startup = startup;
+        bus
+    })
+    .unwrap()
+}
+
+/// The program and its bus, cycled at 1 ms.
+struct Running {
+    backend: EtherCatBackend<Machine>,
+    gm: Machine,
+    last: Instant,
+}
+
+impl Running {
+    fn start(startup: Vec<StartupSdo>) -> Running {
+        let bus = SimBus::new(vec![Device::akd()]);
+        let mut backend = sim_bench::backend::<Machine>(&bus, description(startup));
+        backend.start().unwrap();
+        let mut gm = Machine::default();
+        gm.axis.scale = SCALE;
+        Running {
+            backend,
+            gm,
+            last: Instant::now(),
+        }
+    }
+
+    /// One cycle: exchange, the drive's inputs into the axis, `program`, the axis's outputs
+    /// out. The period the profile runs at is the time since the previous cycle.
+    fn cycle(&mut self, program: impl FnOnce(&mut Machine)) {
+        let status = self.backend.exchange(&mut self.gm);
+        assert!(status.inputs_valid, "{status:?}");
+        let gm = &mut self.gm;
+        let d = &mut gm.axis.drive;
+        d.statusword = gm.statusword;
+        d.modes_of_operation_display = gm.mode_display;
+        d.position_actual_value = gm.position;
+        d.velocity_actual_value = gm.velocity;
+        d.following_error_actual_value = gm.following_error;
+        d.error_code = gm.error_code;
+        gm.axis.read_drive();
+        program(gm);
+        gm.axis.cycle(0.001);
+        let d = &gm.axis.drive;
+        gm.controlword = d.controlword;
+        gm.mode = d.modes_of_operation;
+        gm.target_position = d.target_position;
+        gm.target_velocity = d.target_velocity;
+        // About 1 ms a cycle (the drive integrates the bus's real time).
+        let next = self.last + Duration::from_millis(1);
+        if let Some(wait) = next.checked_duration_since(Instant::now()) {
+            std::thread::sleep(wait);
+        }
+        self.last = Instant::now();
+    }
+
+    fn until(
+        &mut self,
+        most: usize,
+        mut program: impl FnMut(&mut Machine),
+        mut done: impl FnMut(&Machine) -> bool,
+    ) {
+        for _ in 0..most {
+            self.cycle(&mut program);
+            if done(&self.gm) {
+                return;
+            }
+        }
+        panic!("not within {most} cycles: {:?}", self.gm.axis);
+    }
+
+    fn powered(&mut self) {
+        self.until(
+            500,
+            |gm| {
+                gm.power.call(&mut gm.axis, true);
+            },
+            |gm| gm.power.Status && gm.axis.state() == AxisState::Standstill,
+        );
+    }
+}
+
+#[test]
+fn an_axis_powers_homes_and_moves_the_simulated_drive_to_its_target() {
+    let mut m = Running::start(Vec::new());
+    m.powered();
+    m.cycle(|gm| {
+        gm.power.call(&mut gm.axis, true);
+        gm.home.call(&mut gm.axis, true, 0.0);
+    });
+    assert!(m.gm.home.Done && m.gm.axis.homed);
+    // 20 mm at 20 mm/s (2 revolutions per second), 200 mm/s² both ways.
+    let mut most_lag: f64 = 0.0;
+    m.until(
+        5_000,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.move_to.call(&mut gm.axis, true, 20.0, 20.0, 200.0, 200.0);
+        },
+        |gm| {
+            most_lag = most_lag.max((gm.axis.set_position - gm.axis.actual_position).abs());
+            gm.move_to.Done
+        },
+    );
+    // The set point is there at once; the drive within a few cycles.
+    m.until(
+        200,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+        },
+        |gm| (gm.axis.actual_position - 20.0).abs() < 0.001,
+    );
+    assert_eq!(m.gm.axis.state(), AxisState::Standstill);
+    assert!(most_lag < 1.0, "the drive lagged the set point by {most_lag} mm");
+    // Off again: the drive goes to switch on disabled.
+    m.until(
+        100,
+        |gm| {
+            gm.power.call(&mut gm.axis, false);
+        },
+        |gm| gm.statusword & 0x4F == 0x40,
+    );
+    m.backend.stop();
+}
+
+#[test]
+fn a_stop_aborts_a_move_and_the_axis_rests_where_it_stopped() {
+    let mut m = Running::start(Vec::new());
+    m.powered();
+    for _ in 0..200 {
+        m.cycle(|gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.move_to.call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
+        });
+    }
+    m.until(
+        2_000,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.move_to.call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
+            gm.stop.call(&mut gm.axis, true, 600.0);
+        },
+        |gm| gm.stop.Done,
+    );
+    assert!(m.gm.move_to.CommandAborted);
+    let rest = m.gm.axis.set_position;
+    assert!(rest > 0.5 && rest < 50.0, "stopped at {rest} mm");
+    m.until(
+        200,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.stop.call(&mut gm.axis, true, 600.0);
+        },
+        |gm| (gm.axis.actual_position - rest).abs() < 0.001,
+    );
+    m.backend.stop();
+}
+
+#[test]
+fn a_following_error_faults_the_drive_and_mc_reset_recovers_the_axis() {
+    // A window of 1,000 increments (0.01 mm), set by a start-up SDO.
+    let window = StartupSdo {
+        index: 0x6065,
+        subindex: 0,
+        value: 1_000,
+        bits: 32,
+    };
+    let mut m = Running::start(vec![window]);
+    m.powered();
+    // A fast move lags more than that: the drive faults, the axis stops on the error.
+    m.until(
+        2_000,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.move_to.call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
+        },
+        |gm| gm.axis.state() == AxisState::ErrorStop,
+    );
+    m.cycle(|gm| {
+        gm.power.call(&mut gm.axis, true);
+        gm.move_to.call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
+    });
+    assert_eq!(m.gm.axis.error_id, error::DRIVE_FAULT);
+    assert!(m.gm.move_to.Error && m.gm.move_to.ErrorID == error::DRIVE_FAULT);
+    assert_eq!((m.gm.power.Error, m.gm.power.ErrorID), (true, 0x8611));
+    m.until(
+        500,
+        |gm| {
+            gm.power.call(&mut gm.axis, true);
+            gm.reset.call(&mut gm.axis, true);
+        },
+        |gm| gm.reset.Done,
+    );
+    m.powered();
+    assert_eq!(m.gm.axis.error_id, 0);
+    assert_eq!(m.gm.error_code, 0);
+    m.backend.stop();
+}
