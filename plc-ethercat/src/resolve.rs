@@ -295,6 +295,23 @@ mod tests {
     }
 
     #[test]
+    fn a_type_of_the_same_rust_type_is_named_by_its_iec_type() {
+        // WORD and UINT are both `u16`: "declare it `u16`" would not help.
+        assert_problems(
+            &[var(
+                "word_typed",
+                IecType::Word,
+                Direction::Output,
+                "ethercat.dq.word",
+            )],
+            &[
+                "WORD does not widen implicitly to UINT (IEC 61131-3): declare it with \
+               `iec_type = \"UINT\"`, or give the entry the type WORD in the bus description",
+            ],
+        );
+    }
+
+    #[test]
     fn arrays_strings_and_status_variables_cannot_be_linked() {
         let mut array = var("arr", IecType::Bool, Direction::Input, "ethercat.di.input1");
         (array.dims, array.size) = (&[4], 4);

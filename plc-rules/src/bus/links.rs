@@ -189,6 +189,11 @@ fn check_one<'l>(
         if !can_widen(from, to) {
             let suggestion = match entry.iec_type {
                 IecType::Bool => "declare it `bool`".to_string(),
+                // The same Rust type (`u16` is UINT, WORD is `u16` too): the IEC type says it.
+                t if t.rust_name() == ty.rust_name() => format!(
+                    "declare it with `iec_type = \"{t}\"`, or give the entry the type {ty} in \
+                     the bus description"
+                ),
                 t => format!(
                     "declare it `{}` (or a type it widens {} implicitly)",
                     t.rust_name(),
