@@ -1,17 +1,20 @@
 //! The EtherCAT I/O backend: ethercrab's MainDevice driving one group of SubDevices, moving the
 //! linked variables of a `GlobalMemory` struct to and from the process data each cycle. The
-//! steps live beside it: `transport` (frames), `bringup` (to OP), `process_data` (the
-//! variables), `recovery` (back to OP after a fault), `status` (what an exchange counts).
+//! steps live beside it: `transport` (frames), `bringup` (to OP), `dc` (distributed clocks),
+//! `group` (ethercrab's group with or without them), `process_data` (the variables),
+//! `recovery` (back to OP after a fault), `status` (what an exchange counts).
 
-use super::bringup::bring_up;
+use super::bringup::{Up, bring_up};
 use super::config::{BusConfig, PdoDirection};
+use super::dc::{DcDevice, largest_difference};
 use super::error::EtherCatError;
+use super::group::Group;
 use super::layout::BusLayout;
 use super::options::{DriverGuard, InputsOnFault, Options, Transport};
-use super::process_data::{Group, copy_inputs, cycle, zero_inputs, zero_outputs};
+use super::process_data::{copy_inputs, cycle, zero_inputs, zero_outputs};
 use super::recovery::{Configured, RecoveryTimer, recover};
 use super::resolve::{Binding, resolve};
-use super::status::{BusStatus, state_of};
+use super::status::{BusStatus, DcStatus};
 use async_io::block_on;
 use ethercrab::MainDevice;
 use ethercrab::subdevice_group::{HasPdi, Op, SafeOp};
@@ -34,6 +37,10 @@ struct Running {
     /// What ethercrab configured on each SubDevice, in ring order, to restore after a fault.
     configured: Vec<Configured>,
     recovery: RecoveryTimer,
+    /// The SubDevices configured for SYNC0 (empty without distributed clocks).
+    dc_devices: Vec<DcDevice>,
+    /// When their system time differences are read next.
+    dc_check: RecoveryTimer,
 }
 
 impl Running {
@@ -75,6 +82,17 @@ impl Running {
 /// Inputs stay invalid until the whole bus is in OP with the right working counter. What is
 /// still wrong is kept in [`problems`](Self::problems), one line per SubDevice, and logged
 /// (the `log` crate, target `plc_ethercat`) when it changes. After `fault` the backend stays in SAFE-OP: no recovery.
+///
+/// Distributed clocks: where the description gives devices `dc` (`DcConfig`), `start`
+/// refuses any of them without a DC unit ([`EtherCatError::DistributedClocks`], naming it),
+/// sets SYNC0 on them in PRE-OP with the description's period and shift (SYNC0 starts
+/// 100 ms after configuration, on a whole period), exchanges on the
+/// DC time until every SubDevice is in OP, and each `exchange` is then one `tx_rx_dc`, which
+/// also distributes the reference clock's time. [`BusStatus::dc`] tells the largest system
+/// time difference and the cycle's offset to SYNC0; [`check_period`](Self::check_period)
+/// the cycle periods SYNC0 allows. Recovery does not configure SYNC0 again: a DC SubDevice
+/// restarted after a power loss that needs SYNC0 for OP stays out of OP and is named in
+/// [`problems`](Self::problems); restart the program to configure it again.
 ///
 /// Implements `plc_runtime::IoBackend` (`start`, `exchange`, `fault`, `stop`) for
 /// `plc_runtime::Runtime` (`plc_io::Runtime` in a control program).
@@ -154,6 +172,18 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         self.status
     }
 
+    /// Checks that a cycle of `period` fits the description's distributed clocks: SYNC0 a
+    /// whole multiple of the period, so every pulse meets the same point of a cycle. Any
+    /// period fits a bus without `dc`. `plc_runtime::RuntimeBuilder::build` asks it (through
+    /// `IoBackend::check_period`) before anything starts.
+    pub fn check_period(&self, period: std::time::Duration) -> Result<(), EtherCatError> {
+        let dc = self.config.dc();
+        match dc.and_then(|dc| super::dc::period_problem(dc, period)) {
+            Some(problem) => Err(EtherCatError::Period(problem)),
+            None => Ok(()),
+        }
+    }
+
     /// Brings the bus to OP. On error the transport is closed again; a backend whose start
     /// failed cannot be started again (build a new one).
     pub fn start(&mut self) -> Result<(), EtherCatError> {
@@ -171,15 +201,36 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             frame_thread,
             configured: Vec::new(),
             recovery: RecoveryTimer::new(self.options.recovery_interval),
+            dc_devices: Vec::new(),
+            dc_check: RecoveryTimer::new(self.options.dc_check_interval),
         };
-        match bring_up(&running.maindevice, &self.config.devices, &self.layout) {
-            Ok((group, configured)) => {
+        let dc = self.config.dc();
+        let up = bring_up(
+            &running.maindevice,
+            &self.config.devices,
+            &self.layout,
+            dc,
+            self.options.timeouts.state_transition,
+        );
+        match up {
+            Ok(Up {
+                group,
+                configured,
+                dc_devices,
+            }) => {
+                let dc_status = dc.filter(|_| !dc_devices.is_empty()).map(|dc| DcStatus {
+                    // Validation keeps sync0 within u32 nanoseconds.
+                    sync0_period_ns: u32::try_from(dc.sync0.as_nanos()).unwrap_or(u32::MAX),
+                    ..DcStatus::default()
+                });
                 running.group = Some(Stage::Op(group));
                 running.configured = configured;
+                running.dc_devices = dc_devices;
                 self.running = Some(running);
                 self.status = BusStatus {
                     state: BusState::Op,
                     expected_working_counter: self.expected_wkc,
+                    dc: dc_status,
                     ..BusStatus::default()
                 };
                 Ok(())
@@ -213,8 +264,18 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             Some(Stage::SafeOp(g)) => cycle(g, md, gm, &self.outputs),
             None => Err(ethercrab::error::Error::Internal),
         }
-        .ok()
-        .map(|r| (r.working_counter, state_of(&r.subdevice_states)));
+        .ok();
+        if let (Some(dc), Some(cycle)) = (
+            self.status.dc.as_mut(),
+            answer.as_ref().and_then(|a| a.cycle),
+        ) {
+            dc.sync0_offset_ns =
+                u64::try_from(cycle.cycle_start_offset.as_nanos()).unwrap_or(u64::MAX);
+            if running.dc_check.due(Instant::now()) {
+                dc.max_time_difference_ns = largest_difference(md, &running.dc_devices);
+            }
+        }
+        let answer = answer.map(|a| (a.working_counter, a.state));
         if self.status.record(answer) {
             if let Some(Stage::Op(g)) = &running.group {
                 copy_inputs(g, md, gm, &self.inputs);
@@ -344,7 +405,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
 /// Zero outputs on the bus, in one exchange.
 fn send_zero_outputs<S: HasPdi>(g: &Group<S>, md: &MainDevice<'static>, stage: &str) {
     zero_outputs(g, md);
-    if let Err(e) = block_on(g.tx_rx(md)) {
+    if let Err(e) = block_on(g.exchange(md)) {
         // The state change that follows still turns the outputs off.
         log::warn!(target: "plc_io::ethercat", "plc-io EtherCAT: the zero outputs were not sent in {stage}: {e}");
     }

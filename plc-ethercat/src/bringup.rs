@@ -1,24 +1,41 @@
-//! Bringing the bus up: scan, identity check against the description, start-up SDOs in
-//! PRE-OP, PRE-OP -> SAFE-OP,
-//! process data sizes checked, one exchange, OP, and the SyncManager and FMMU settings read
-//! back for recovery.
+//! Bringing the bus up: scan, identity check against the description, the DC SubDevices
+//! checked (`dc`), start-up SDOs in PRE-OP, SYNC0 configured where the description asks for
+//! it, PRE-OP -> SAFE-OP, process data sizes checked, one exchange, OP, and the SyncManager
+//! and FMMU settings read back for recovery.
 
-use super::config::DeviceConfig;
+use super::config::{DcConfig, DeviceConfig};
+use super::dc::DcDevice;
 use super::error::{EtherCatError, bus};
+use super::group::Group;
 use super::layout::BusLayout;
-use super::process_data::Group;
 use super::recovery::Configured;
 use super::{MAX_PDI, MAX_SUBDEVICES};
 use async_io::block_on;
-use ethercrab::subdevice_group::Op;
+use ethercrab::subdevice_group::{Op, SafeOp};
 use ethercrab::{MainDevice, SubDeviceIdentity};
+use plc_shm::BusState;
+use std::time::{Duration, Instant};
+
+/// The bus in OP.
+pub(super) struct Up {
+    /// The group, with SYNC0 if the description asks for it.
+    pub(super) group: Group<Op>,
+    /// What ethercrab configured on each SubDevice (ring order).
+    pub(super) configured: Vec<Configured>,
+    /// The SubDevices configured for SYNC0 (empty without `dc`).
+    pub(super) dc_devices: Vec<DcDevice>,
+}
 
 /// The bus in OP, and what ethercrab configured on each SubDevice (ring order).
+/// `state_transition` bounds the wait for OP of a bus with SYNC0, which is exchanged with
+/// while it gets there.
 pub(super) fn bring_up(
     md: &MainDevice<'static>,
     devices: &[DeviceConfig],
     layout: &BusLayout,
-) -> Result<(Group<Op>, Vec<Configured>), EtherCatError> {
+    dc: Option<DcConfig>,
+    state_transition: Duration,
+) -> Result<Up, EtherCatError> {
     let group = block_on(md.init_single_group::<MAX_SUBDEVICES, MAX_PDI>(now))
         .map_err(bus("scanning the bus (init to PRE-OP)"))?;
     let found: Vec<_> = group
@@ -29,13 +46,20 @@ pub(super) fn bring_up(
     if !problems.is_empty() {
         return Err(EtherCatError::Identity(problems));
     }
+    let dc_devices = super::dc::check_units(&group, md, devices)?;
     // In PRE-OP, where the mailbox is up and the process data not yet configured.
     for (pos, (sd, device)) in group.iter(md).zip(devices).enumerate() {
         block_on(super::startup::write(&sd, pos, device))?;
     }
-    let group = block_on(group.into_safe_op(md)).map_err(bus("going to SAFE-OP"))?;
+    let group: Group<SafeOp> = match dc {
+        Some(dc) if !dc_devices.is_empty() => {
+            let g = super::dc::configure(group, md, &dc_devices, dc)?;
+            Group::Dc(block_on(g.into_safe_op(md)).map_err(bus("going to SAFE-OP"))?)
+        }
+        _ => Group::Free(block_on(group.into_safe_op(md)).map_err(bus("going to SAFE-OP"))?),
+    };
     let reported: Vec<(usize, usize)> = group
-        .iter(md)
+        .subdevices(md)
         .map(|sd| (sd.inputs_raw().len(), sd.outputs_raw().len()))
         .collect();
     layout
@@ -43,10 +67,13 @@ pub(super) fn bring_up(
         .map_err(EtherCatError::Layout)?;
     // Outputs are zero in ethercrab's fresh PDI; one exchange before OP makes the
     // SubDevices' outputs valid, as the SyncManager watchdogs expect.
-    block_on(group.tx_rx(md)).map_err(bus("the first SAFE-OP exchange"))?;
-    let group = block_on(group.into_op(md)).map_err(bus("going to OP"))?;
+    block_on(group.exchange(md)).map_err(bus("the first SAFE-OP exchange"))?;
+    let group = match group {
+        Group::Free(_) => block_on(group.into_op(md)).map_err(bus("going to OP"))?,
+        Group::Dc(_) => into_op_exchanging(group, md, state_transition)?,
+    };
     let mut configured = Vec::new();
-    for (pos, sd) in group.iter(md).enumerate() {
+    for (pos, sd) in group.subdevices(md).enumerate() {
         let id = sd.identity();
         let c = block_on(Configured::read(
             md,
@@ -58,7 +85,42 @@ pub(super) fn bring_up(
         .map_err(bus("reading back the SyncManager and FMMU settings"))?;
         configured.push(c);
     }
-    Ok((group, configured))
+    Ok(Up {
+        group,
+        configured,
+        dc_devices,
+    })
+}
+
+/// SAFE-OP -> OP for a bus with SYNC0, as ethercrab's DC example does it: OP requested, then
+/// the process data exchanged on the DC time until every SubDevice is in OP (a DC SubDevice
+/// checks SYNC0 and fresh process data before it enters OP), for at most `timeout`.
+fn into_op_exchanging(
+    group: Group<SafeOp>,
+    md: &MainDevice<'static>,
+    timeout: Duration,
+) -> Result<Group<Op>, EtherCatError> {
+    let group = block_on(group.request_into_op(md)).map_err(bus("going to OP"))?;
+    let deadline = Instant::now() + timeout;
+    loop {
+        let answer = block_on(group.exchange(md)).map_err(bus("going to OP"))?;
+        if answer.state == BusState::Op {
+            return Ok(group);
+        }
+        if Instant::now() >= deadline {
+            return Err(EtherCatError::DistributedClocks(vec![format!(
+                "the bus did not reach OP within {timeout:?} of SYNC0 being configured (it is \
+                 {}): a SubDevice refuses OP when SYNC0 does not suit it; check each device \
+                 with `dc` supports SYNC0 at the description's `sync0` (its documentation \
+                 gives the range), or remove `dc` from it",
+                answer.state
+            )]));
+        }
+        let wait = answer
+            .cycle
+            .map_or(Duration::from_millis(1), |c| c.next_cycle_wait);
+        std::thread::sleep(wait.min(Duration::from_millis(10)));
+    }
 }
 
 fn now() -> u64 {

@@ -2,5 +2,5 @@
 //! derive can check links against it while compiling.
 
 pub use plc_rules::bus::{
-    BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
+    BusConfig, ConfigError, DcConfig, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
 };

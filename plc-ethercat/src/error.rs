@@ -16,6 +16,11 @@ pub enum EtherCatError {
     Links(ResolveError),
     /// The SubDevices found differ from the description (count or identity), by position.
     Identity(Vec<String>),
+    /// The distributed clocks could not be set up: devices given `dc` in the description
+    /// have no distributed clock, or the bus did not reach OP with SYNC0; one line each.
+    DistributedClocks(Vec<String>),
+    /// The runtime's period does not fit the description's SYNC0 period.
+    Period(String),
     /// The process data ethercrab configured differs from the description.
     Layout(LayoutError),
     /// The transport could not be opened.
@@ -57,6 +62,17 @@ impl fmt::Display for EtherCatError {
                 }
                 Ok(())
             }
+            EtherCatError::DistributedClocks(problems) => {
+                f.write_str(
+                    "the distributed clocks of the bus description could not be set up \
+                     (nothing was switched to OP):",
+                )?;
+                for p in problems {
+                    write!(f, "\n  - {p}")?;
+                }
+                Ok(())
+            }
+            EtherCatError::Period(problem) => f.write_str(problem),
             EtherCatError::Layout(e) => e.fmt(f),
             EtherCatError::Transport(e) => f.write_str(e),
             EtherCatError::Startup {

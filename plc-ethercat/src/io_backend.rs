@@ -32,6 +32,10 @@ impl<T: GlobalMemory> IoBackend<T> for EtherCatBackend<T> {
     fn stop(&mut self) {
         EtherCatBackend::stop(self);
     }
+
+    fn check_period(&self, period: std::time::Duration) -> Result<(), IoError> {
+        EtherCatBackend::check_period(self, period).map_err(IoError::from)
+    }
 }
 
 #[cfg(test)]

@@ -11,7 +11,9 @@
 //!    reported together, before anything is sent to the bus.
 //! 3. [`EtherCatBackend`] (`backend`): an ethercrab MainDevice with one group brought to OP
 //!    after the identities and process data sizes are checked (`bringup`); each `exchange` is
-//!    one `tx_rx` with a working-counter check (`status`), moving the linked variables
+//!    one `tx_rx` with a working-counter check (`status`), or on a bus with distributed clocks
+//!    (devices with `dc` in the description) SYNC0 configured in PRE-OP and one `tx_rx_dc`
+//!    per exchange (`dc`, `group`), moving the linked variables
 //!    (`process_data`) and bringing SubDevices back to OP after a fault (`recovery`). The
 //!    transport (`transport`) is a raw socket on a NIC ([`Transport::Interface`]) or anything
 //!    that drives ethercrab's `PduTx`/`PduRx`, such as the in-process simulated bus of
@@ -51,8 +53,12 @@ mod backend;
 #[cfg(feature = "backend")]
 mod bringup;
 pub mod config;
+#[cfg(feature = "backend")]
+mod dc;
 pub use plc_rules::bus::devices;
 mod error;
+#[cfg(feature = "backend")]
+mod group;
 #[cfg(feature = "backend")]
 mod io_backend;
 pub mod layout;
@@ -72,7 +78,7 @@ mod transport;
 #[cfg(feature = "backend")]
 pub use backend::EtherCatBackend;
 pub use config::{
-    BusConfig, ConfigError, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
+    BusConfig, ConfigError, DcConfig, DeviceConfig, Identity, PdoDirection, PdoEntry, StartupSdo,
 };
 pub use error::EtherCatError;
 pub use layout::{BusLayout, LayoutError};
@@ -80,7 +86,7 @@ pub use options::{DriverFn, DriverGuard, InputsOnFault, Options, Transport};
 pub use plc_shm::BusState;
 pub use resolve::{Binding, ResolveError};
 #[cfg(feature = "backend")]
-pub use status::BusStatus;
+pub use status::{BusStatus, DcStatus};
 
 pub use plc_rules::bus::{MAX_PDI, MAX_SUBDEVICES};
 

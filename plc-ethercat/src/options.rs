@@ -66,7 +66,8 @@ pub struct Options {
     /// is lost; the default 30 ms is ethercrab's.
     pub timeouts: Timeouts,
     /// ethercrab's distributed-clock static drift compensation frames at start-up (its default
-    /// 10 000; 100 is plenty on the simulated bus).
+    /// 10 000; 100 is plenty on the simulated bus). They bring the SubDevices' clocks to the
+    /// reference clock's time before SYNC0 is configured.
     pub dc_static_sync_iterations: u32,
     /// See [`InputsOnFault`].
     pub inputs_on_fault: InputsOnFault,
@@ -74,10 +75,15 @@ pub struct Options {
     /// but are not in OP back to OP (a few datagrams per SubDevice; see
     /// [`EtherCatBackend::problems`](super::EtherCatBackend::problems)).
     pub recovery_interval: std::time::Duration,
+    /// On a bus with distributed clocks, how often `exchange` reads each DC SubDevice's system
+    /// time difference for `DcStatus` (one datagram per device;
+    /// default 1 s, the first at the first exchange).
+    pub dc_check_interval: std::time::Duration,
 }
 
 impl Options {
-    /// Settings for the simulated bus: few DC sync frames, and timeouts with room for a busy
+    /// Settings for the simulated bus: few DC sync frames, the DC status read every 100 ms,
+    /// and timeouts with room for a busy
     /// machine (the simulated SubDevices answer from a thread that may wait for a core, where
     /// ethercrab's 10 ms EEPROM timeout assumes hardware answering within microseconds).
     pub fn simulated() -> Self {
@@ -88,6 +94,7 @@ impl Options {
                 ..Timeouts::default()
             },
             dc_static_sync_iterations: 100,
+            dc_check_interval: std::time::Duration::from_millis(100),
             ..Options::default()
         }
     }
@@ -100,6 +107,7 @@ impl Default for Options {
             dc_static_sync_iterations: MainDeviceConfig::default().dc_static_sync_iterations,
             inputs_on_fault: InputsOnFault::Zero,
             recovery_interval: std::time::Duration::from_millis(100),
+            dc_check_interval: std::time::Duration::from_secs(1),
         }
     }
 }

@@ -1,16 +1,13 @@
 //! Process data: the linked variables of the struct to and from each SubDevice's bytes.
 
-use super::MAX_SUBDEVICES;
+use super::group::{Exchanged, Group};
 use super::layout::{read_bits, write_bits};
 use super::resolve::Binding;
 use async_io::block_on;
+use ethercrab::MainDevice;
 use ethercrab::error::Error as CrabError;
-use ethercrab::subdevice_group::{HasPdi, NoDc};
-use ethercrab::{DefaultLock, MainDevice, SubDeviceGroup, TxRxResponse};
+use ethercrab::subdevice_group::HasPdi;
 use plc_core::{GlobalMemory, Value};
-
-/// ethercrab's group of every SubDevice, in state `S`.
-pub(super) type Group<S> = SubDeviceGroup<MAX_SUBDEVICES, { super::MAX_PDI }, DefaultLock, S, NoDc>;
 
 /// The linked outputs of `gm` into the process data, then one exchange of the frame.
 pub(super) fn cycle<S: HasPdi, T: GlobalMemory>(
@@ -18,12 +15,12 @@ pub(super) fn cycle<S: HasPdi, T: GlobalMemory>(
     md: &MainDevice<'static>,
     gm: &T,
     outputs: &[Binding],
-) -> Result<TxRxResponse<MAX_SUBDEVICES>, CrabError> {
+) -> Result<Exchanged, CrabError> {
     write_outputs(g, md, gm, outputs);
     #[cfg(feature = "cycle-probe")]
-    return plc_runtime::probe::bus_exchange(|| block_on(g.tx_rx(md)));
+    return plc_runtime::probe::bus_exchange(|| block_on(g.exchange(md)));
     #[cfg(not(feature = "cycle-probe"))]
-    block_on(g.tx_rx(md))
+    block_on(g.exchange(md))
 }
 
 /// Runs of bindings on one SubDevice: resolution groups them by device, so each device's
@@ -87,7 +84,7 @@ pub(super) fn zero_inputs<T: GlobalMemory>(gm: &mut T, inputs: &[Binding]) {
 
 /// Every output byte of the group to zero.
 pub(super) fn zero_outputs<S: HasPdi>(g: &Group<S>, md: &MainDevice<'static>) {
-    for sd in g.iter(md) {
+    for sd in g.subdevices(md) {
         sd.outputs_raw_mut().fill(0);
     }
 }

@@ -21,6 +21,27 @@ pub struct BusStatus {
     pub expected_working_counter: u16,
     /// Faulty exchanges since start.
     pub fault_count: u64,
+    /// The distributed clocks, on a bus whose description gives devices `dc` (`None`
+    /// otherwise).
+    pub dc: Option<DcStatus>,
+}
+
+/// The distributed clocks of a running bus with SYNC0: how well the clocks agree and where
+/// the cycle falls against SYNC0.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DcStatus {
+    /// The SYNC0 period configured (ns).
+    pub sync0_period_ns: u32,
+    /// The largest system time difference (register 0x092C, magnitude, ns) among the devices
+    /// with `dc`: how far the worst clock was from the reference's time when it last received
+    /// it. Below 100 ns on a settled bus. Read at start and then every
+    /// [`Options::dc_check_interval`](super::Options::dc_check_interval); `None` before the
+    /// first reading or when the last one got no answer.
+    pub max_time_difference_ns: Option<u32>,
+    /// When the last exchange's frame passed the reference clock, after the last SYNC0 pulse
+    /// (ethercrab's `CycleInfo::cycle_start_offset`, ns): the cycle's phase against SYNC0. A
+    /// value that wanders means the cycle's clock and the DC time drift apart.
+    pub sync0_offset_ns: u64,
 }
 
 impl BusStatus {

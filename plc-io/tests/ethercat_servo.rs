@@ -7,9 +7,7 @@ mod sim_bench;
 
 use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
-use plc_core::motion::{
-    Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error,
-};
+use plc_core::motion::{Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error};
 use plc_io::ethercat::{BusConfig, EtherCatBackend, StartupSdo};
 use std::time::{Duration, Instant};
 
@@ -28,13 +26,19 @@ struct Machine {
     target_velocity: i32,
     #[plc(link = "ethercat.servo.statusword", direction = "input")]
     statusword: u16,
-    #[plc(link = "ethercat.servo.modes_of_operation_display", direction = "input")]
+    #[plc(
+        link = "ethercat.servo.modes_of_operation_display",
+        direction = "input"
+    )]
     mode_display: i8,
     #[plc(link = "ethercat.servo.position_actual_value", direction = "input")]
     position: i32,
     #[plc(link = "ethercat.servo.velocity_actual_value", direction = "input")]
     velocity: i32,
-    #[plc(link = "ethercat.servo.following_error_actual_value", direction = "input")]
+    #[plc(
+        link = "ethercat.servo.following_error_actual_value",
+        direction = "input"
+    )]
     following_error: i32,
     #[plc(link = "ethercat.servo.error_code", direction = "input")]
     error_code: u16,
@@ -168,7 +172,8 @@ fn an_axis_powers_homes_and_moves_the_simulated_drive_to_its_target() {
         5_000,
         |gm| {
             gm.power.call(&mut gm.axis, true);
-            gm.move_to.call(&mut gm.axis, true, 20.0, 20.0, 200.0, 200.0);
+            gm.move_to
+                .call(&mut gm.axis, true, 20.0, 20.0, 200.0, 200.0);
         },
         |gm| {
             most_lag = most_lag.max((gm.axis.set_position - gm.axis.actual_position).abs());
@@ -184,7 +189,10 @@ fn an_axis_powers_homes_and_moves_the_simulated_drive_to_its_target() {
         |gm| (gm.axis.actual_position - 20.0).abs() < 0.001,
     );
     assert_eq!(m.gm.axis.state(), AxisState::Standstill);
-    assert!(most_lag < 1.0, "the drive lagged the set point by {most_lag} mm");
+    assert!(
+        most_lag < 1.0,
+        "the drive lagged the set point by {most_lag} mm"
+    );
     // Off again: the drive goes to switch on disabled.
     m.until(
         100,
@@ -203,14 +211,16 @@ fn a_stop_aborts_a_move_and_the_axis_rests_where_it_stopped() {
     for _ in 0..200 {
         m.cycle(|gm| {
             gm.power.call(&mut gm.axis, true);
-            gm.move_to.call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
+            gm.move_to
+                .call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
         });
     }
     m.until(
         2_000,
         |gm| {
             gm.power.call(&mut gm.axis, true);
-            gm.move_to.call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
+            gm.move_to
+                .call(&mut gm.axis, true, 50.0, 30.0, 300.0, 300.0);
             gm.stop.call(&mut gm.axis, true, 600.0);
         },
         |gm| gm.stop.Done,
@@ -245,13 +255,15 @@ fn a_following_error_faults_the_drive_and_mc_reset_recovers_the_axis() {
         2_000,
         |gm| {
             gm.power.call(&mut gm.axis, true);
-            gm.move_to.call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
+            gm.move_to
+                .call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
         },
         |gm| gm.axis.state() == AxisState::ErrorStop,
     );
     m.cycle(|gm| {
         gm.power.call(&mut gm.axis, true);
-        gm.move_to.call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
+        gm.move_to
+            .call(&mut gm.axis, true, 100.0, 200.0, 20_000.0, 20_000.0);
     });
     assert_eq!(m.gm.axis.error_id, error::DRIVE_FAULT);
     assert!(m.gm.move_to.Error && m.gm.move_to.ErrorID == error::DRIVE_FAULT);

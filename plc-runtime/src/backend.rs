@@ -53,6 +53,13 @@ pub trait IoBackend<T> {
     }
     /// Shuts the I/O down (EtherCAT: back to INIT). Called once at the end.
     fn stop(&mut self);
+    /// Whether the I/O can run at the cycle's `period` (EtherCAT with distributed clocks:
+    /// SYNC0 must be a whole multiple of it). [`RuntimeBuilder::build`](crate::RuntimeBuilder::build)
+    /// asks before anything starts. Default: any period.
+    fn check_period(&self, period: std::time::Duration) -> Result<(), IoError> {
+        let _ = period;
+        Ok(())
+    }
 }
 
 /// No I/O: for programs that only talk through shared memory, and for tests.

@@ -297,7 +297,8 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// The runtime, after checking what can be checked before it runs: the [`cpu`](Self::cpu)
     /// is one this process may use, the [`realtime_priority`](Self::realtime_priority) is in
     /// SCHED_FIFO's range and permitted (tried on a short-lived thread), the read and write
-    /// groups exist. Each refusal names the value and the fix; [`run`](Runtime::run) checks
+    /// groups exist, the [`backend`](Self::backend) can run at the [`period`](Self::period)
+    /// ([`IoBackend::check_period`]; [`RuntimeError::Io`] if not). Each refusal names the value and the fix; [`run`](Runtime::run) checks
     /// again when it starts, as a CPU or a permission may change in between.
     ///
     /// ```
@@ -316,6 +317,9 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
         }
         let segment = self.segment.as_deref().unwrap_or("(no segment)");
         self.sharing.check(segment).map_err(RuntimeError::Shm)?;
+        self.backend
+            .check_period(self.period)
+            .map_err(RuntimeError::Io)?;
         Ok(Runtime { settings: self })
     }
 }

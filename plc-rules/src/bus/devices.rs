@@ -51,6 +51,7 @@ fn beckhoff(name: &str, product: u32, description: &str, entries: Vec<PdoEntry>)
         description: description.to_owned(),
         entries,
         startup: Vec::new(),
+        dc: None,
     }
 }
 

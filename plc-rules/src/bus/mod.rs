@@ -15,6 +15,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::path::Path;
 
+mod dc;
 pub mod devices;
 mod hex;
 pub mod layout;
@@ -25,6 +26,7 @@ pub mod scan_file;
 pub mod sii;
 mod validate;
 
+pub use dc::{DcConfig, MAX_DC_NS};
 pub use layout::{BusLayout, EntryLayout, LayoutError};
 pub use links::{LinkIssue, LinkedVar, resolve_links};
 
@@ -76,7 +78,8 @@ pub const MAX_PDI: usize = 1024;
 ///
 /// Every problem of a description is reported at once ([`ConfigError`]): names that are not
 /// identifiers or repeat, an entry wider than its type, a bus beyond the caps
-/// ([`MAX_SUBDEVICES`], [`MAX_PDI`]).
+/// ([`MAX_SUBDEVICES`], [`MAX_PDI`]), distributed clock settings out of range or differing
+/// between devices ([`DcConfig`]).
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BusConfig {
@@ -109,6 +112,11 @@ pub struct DeviceConfig {
     /// value = 1, bits = 8 }]`.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub startup: Vec<StartupSdo>,
+    /// Distributed clock: SYNC0 on this device, `dc = { sync0 = "1ms", shift = "250us" }`
+    /// (see [`DcConfig`]). The device must have a DC unit; every device with `dc` on the bus
+    /// gives the same settings. Absent (the default): the device's clock is not used.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub dc: Option<DcConfig>,
 }
 
 /// One start-up SDO: a CoE object entry and the value written to it.

@@ -246,6 +246,7 @@ pub fn describe(devices: &[ScannedDevice]) -> Result<BusConfig, ConfigError> {
             description: d.description.clone(),
             entries,
             startup: Vec::new(),
+            dc: None,
         });
     }
     let bus = BusConfig { devices: out };

@@ -78,6 +78,7 @@ impl BusConfig {
                     + d.process_data_bytes(PdoDirection::Output)
             })
             .sum();
+        super::dc::problems(self, &mut problems);
         if pdi > MAX_PDI {
             problems.push(format!(
                 "the process data of this bus takes {pdi} bytes, more than the {MAX_PDI} plc-io \

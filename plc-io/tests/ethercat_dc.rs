@@ -1,0 +1,172 @@
+//! Distributed clocks through `plc_io::ethercat` on the simulated bus: a description's
+//! `dc = { sync0, shift }` brings SYNC0 up on those devices through real ethercrab, the
+//! backend cycles on the DC time and reports how well the clocks agree; a device without a
+//! DC unit, or a cycle period that does not fit SYNC0, is refused before the bus runs.
+
+#[path = "common/sim_bench.rs"]
+mod sim_bench;
+
+use plc_core::GlobalMemory;
+use plc_core::Time;
+use plc_io::ethercat::{BusConfig, DcConfig, EtherCatError};
+use plc_io::{Runtime, RuntimeError};
+use sim_bench::{backend, description, sim};
+use std::time::{Duration, Instant};
+
+/// Ring positions of the simulated bus.
+const DI: usize = 1;
+const DQ4: usize = 2;
+const DQ16: usize = 3;
+
+/// The difference every clock must stay below (Beckhoff specifies < 100 ns).
+const LIMIT_NS: u32 = 100;
+
+#[derive(GlobalMemory, Debug, Clone)]
+struct Io {
+    #[plc(link = "ethercat.di.input1", direction = "input")]
+    in1: bool,
+    #[plc(link = "ethercat.dq16.output1", direction = "output")]
+    q16_1: bool,
+}
+
+const SYNC0: Duration = Duration::from_millis(1);
+
+fn dc() -> DcConfig {
+    DcConfig {
+        sync0: Time::from_millis(1),
+        shift: Time::from_micros(250),
+    }
+}
+
+/// The test bench's description with `dc` on the devices at `positions`.
+fn with_dc(positions: &[usize]) -> BusConfig {
+    let mut bus = description();
+    for &p in positions {
+        bus.devices[p].dc = Some(dc());
+    }
+    bus
+}
+
+#[test]
+fn a_description_with_dc_comes_up_cycles_on_sync0_and_keeps_the_clocks_within_100_ns() {
+    let bus = sim();
+    let mut backend = backend::<Io>(&bus, with_dc(&[DQ4, DQ16]));
+    backend.start().unwrap();
+    let mut gm = Io {
+        q16_1: true,
+        ..Io::default()
+    };
+    let mut status = backend.status();
+    let mut offsets = Vec::new();
+    // Half a second of 1 ms cycles: SYNC0 starts 100 ms after configuration.
+    let began = Instant::now();
+    for i in 0..500u32 {
+        status = backend.exchange(&mut gm);
+        assert!(status.inputs_valid, "cycle {i}: {status:?}");
+        offsets.push(status.dc.map(|d| d.sync0_offset_ns));
+        std::thread::sleep((began + SYNC0 * (i + 1)).saturating_duration_since(Instant::now()));
+    }
+    let dc = status.dc.expect("a DC bus reports its clocks");
+    println!(
+        "{dc:?}; SYNC0 {:?} {:?}; system times {:?}",
+        bus.sync0(DQ4),
+        bus.sync0(DQ16),
+        bus.system_times()
+    );
+    assert_eq!(dc.sync0_period_ns, 1_000_000);
+    let difference = dc.max_time_difference_ns.expect("0x092C was read");
+    assert!(difference < LIMIT_NS, "largest difference {difference} ns");
+    assert!(
+        offsets.iter().all(|o| o.is_some_and(|ns| ns < 1_000_000)),
+        "the offset to SYNC0 lies within one period: {offsets:?}"
+    );
+    for pos in [DQ4, DQ16] {
+        let s = bus.sync0(pos);
+        assert!(s.active, "device {pos}: {s:?}");
+        assert!(s.pulses > 200, "device {pos}: only {} pulses", s.pulses);
+        assert_eq!(s.last_pulse.map(|t| t % 1_000_000), Some(0), "{s:?}");
+    }
+    assert_eq!(
+        bus.sync0(DI).pulses,
+        0,
+        "a device without `dc` takes no SYNC0"
+    );
+    assert_eq!(bus.outputs(DQ16)[0] & 1, 1, "the process data flows");
+    backend.stop();
+}
+
+#[test]
+fn a_description_without_dc_reports_no_clocks() {
+    let bus = sim();
+    let mut backend = backend::<Io>(&bus, description());
+    backend.start().unwrap();
+    let status = backend.exchange(&mut Io::default());
+    assert!(status.inputs_valid && status.dc.is_none(), "{status:?}");
+    assert_eq!(bus.sync0(DQ4).pulses, 0);
+    backend.stop();
+}
+
+#[test]
+fn dc_on_a_device_without_a_dc_unit_is_refused_at_start_naming_it() {
+    let bus = sim();
+    // The EL1004 announces DC in its features but has no system-time unit.
+    let mut backend = backend::<Io>(&bus, with_dc(&[DI, DQ4]));
+    let err = backend.start().unwrap_err();
+    let text = err.to_string();
+    assert!(
+        matches!(err, EtherCatError::DistributedClocks(ref p) if p.len() == 1),
+        "{text}"
+    );
+    assert!(text.contains("position 1 (`di`, EL1004)"), "{text}");
+    assert!(text.contains("remove `dc` from it"), "{text}");
+    std::thread::sleep(Duration::from_millis(150));
+    assert_eq!(bus.sync0(DQ4).pulses, 0, "nothing was configured");
+}
+
+#[test]
+fn a_cycle_period_that_does_not_divide_sync0_is_refused_when_the_runtime_is_built() {
+    let bus = sim();
+    let refused = Runtime::<Io>::builder()
+        .period(Duration::from_micros(300))
+        .backend(backend::<Io>(&bus, with_dc(&[DQ4])))
+        .handle_signals(false)
+        .build();
+    let Err(RuntimeError::Io(e)) = refused else {
+        panic!("a 300 us period with a 1 ms SYNC0 was accepted");
+    };
+    assert!(
+        e.to_string()
+            .contains("not a whole multiple of the cycle's period"),
+        "{e}"
+    );
+    for fits in [Duration::from_millis(1), Duration::from_micros(500)] {
+        let built = Runtime::<Io>::builder()
+            .period(fits)
+            .backend(backend::<Io>(&bus, with_dc(&[DQ4])))
+            .handle_signals(false)
+            .build();
+        assert!(built.is_ok(), "{fits:?}");
+    }
+}
+
+#[test]
+fn a_clock_that_runs_away_shows_in_the_largest_difference() {
+    let bus = sim();
+    let mut backend = backend::<Io>(&bus, with_dc(&[DQ4, DQ16]));
+    backend.start().unwrap();
+    let mut gm = Io::default();
+    // A crystal 1 % off: more than any time control loop follows.
+    bus.set_clock_drift(DQ16, 10_000_000);
+    let began = Instant::now();
+    let mut largest = None;
+    for i in 0..300u32 {
+        largest = backend
+            .exchange(&mut gm)
+            .dc
+            .and_then(|d| d.max_time_difference_ns);
+        std::thread::sleep((began + SYNC0 * (i + 1)).saturating_duration_since(Instant::now()));
+    }
+    let largest = largest.expect("0x092C was read");
+    assert!(largest > LIMIT_NS, "largest difference {largest} ns");
+    backend.stop();
+}
