@@ -7,6 +7,7 @@ pub mod commissioning;
 pub mod cycle;
 pub mod cycle_10k;
 pub mod derive_check;
+pub mod drives;
 pub mod hand_seqlock;
 pub mod located;
 pub mod opcua;
