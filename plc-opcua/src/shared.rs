@@ -225,7 +225,7 @@ mod tests {
         assert_eq!(m.intervals.keys().next(), Some(&10_000), "a's second item");
         m.count(&a, 10_000, false);
         assert_eq!(m.intervals.keys().next(), Some(&100_000));
-        assert_eq!(m.list().as_slice(), [a.clone()]);
+        assert_eq!(m.list().as_slice(), std::slice::from_ref(&a));
         m.count(&a, 100_000, false);
         assert!(m.intervals.is_empty() && m.list().is_empty());
     }
