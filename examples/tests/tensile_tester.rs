@@ -206,3 +206,162 @@ fn a_final_save_that_fails_makes_tensile_tester_exit_1_and_say_so() {
     assert!(!stdout.contains("retained values saved"), "{stdout}");
     let _ = std::fs::remove_dir_all(&retain);
 }
+
+#[test]
+fn the_crosshead_pulls_during_a_test_and_stops_when_the_specimen_breaks() {
+    use plc_core::Value;
+    let id = std::process::id();
+    let segment = format!("tt_axis_{id}");
+    let retain = std::env::temp_dir().join(format!("tensile-axis-{id}"));
+    let program = start(&segment, &retain);
+    let seg = attach(&segment);
+    // One image per look, so the values read together belong to one cycle.
+    let seg = &seg;
+    let look = || {
+        let image = seg.snapshot_bytes().unwrap();
+        move |path: &str| {
+            seg.value_at_location(&image, &seg.locate(path).unwrap())
+                .unwrap_or_else(|| panic!("{path} has no value"))
+        }
+    };
+    let real = |v: Value| match v {
+        Value::Real(r) => r,
+        v => panic!("not a REAL: {v:?}"),
+    };
+    const TESTING: Value = Value::UInt(3);
+    const DONE: Value = Value::UInt(4);
+    const CONTINUOUS_MOTION: Value = Value::UInt(4);
+    const STOPPING: Value = Value::UInt(5);
+
+    // A test: the crosshead runs at the test speed (2 mm/s) and the elongation follows it.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(30);
+    let (mut first, mut last) = (None, 0.0);
+    loop {
+        let at = look();
+        if at("machine_state") == TESTING && at("crosshead.state") == CONTINUOUS_MOTION {
+            let position = real(at("crosshead.actual_position"));
+            let elongation = real(at("elongation_mm"));
+            let start = real(at("test_start_mm"));
+            assert!(
+                (position - start - elongation).abs() < 0.05,
+                "elongation {elongation} mm at {position} mm from {start} mm"
+            );
+            assert!(
+                position >= last,
+                "the crosshead went back: {position} < {last}"
+            );
+            first.get_or_insert(position);
+            last = position;
+        } else if first.is_some() {
+            break;
+        }
+        assert!(
+            std::time::Instant::now() < deadline,
+            "no test pulled (crosshead at {last} mm)"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    let pulled = last - first.unwrap();
+    assert!(pulled > 2.0, "the crosshead pulled {pulled} mm");
+
+    // The break ends the test with MC_Stop: the crosshead comes to rest and is held there.
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(2);
+    loop {
+        let at = look();
+        if at("machine_state") == DONE && at("stop.Done") == Value::Bool(true) {
+            assert_eq!(at("crosshead.state"), STOPPING);
+            assert_eq!(at("cr_test_drive"), Value::Bool(false));
+            assert_eq!(real(at("crosshead.set_velocity")), 0.0);
+            break;
+        }
+        assert!(
+            std::time::Instant::now() < deadline,
+            "the crosshead did not stop"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    // The drive follows its set point to rest within a few cycles.
+    std::thread::sleep(std::time::Duration::from_millis(150));
+    let at = look();
+    let rest = real(at("crosshead.actual_position"));
+    assert!(
+        rest >= last && rest < last + 0.5,
+        "stopped at {rest} mm after {last} mm"
+    );
+    assert!(real(at("crosshead.actual_velocity")).abs() < 0.01);
+    std::thread::sleep(std::time::Duration::from_millis(150));
+    let at = look();
+    assert_eq!(at("machine_state"), DONE);
+    let now = real(at("crosshead.actual_position"));
+    assert!(
+        (now - rest).abs() < 1e-3,
+        "held where it stopped: {now} mm, {rest} mm"
+    );
+
+    let (status, stdout) = terminate(program);
+    assert!(status.success(), "exit {status:?}\n{stdout}");
+    assert!(
+        stdout.contains(" testing | crosshead ") && stdout.contains(" mm continuous motion |"),
+        "the status line shows the crosshead pulling:\n{stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&retain);
+}
+
+#[test]
+fn a_drive_fault_faults_the_machine_and_cmd_reset_resets_the_drive() {
+    use plc_core::Value;
+    let id = std::process::id();
+    let segment = format!("tt_fault_{id}");
+    let retain = std::env::temp_dir().join(format!("tensile-fault-{id}"));
+    let program = start(&segment, &retain);
+    let seg = attach(&segment);
+    let wait = |what: &str, f: &dyn Fn() -> bool| {
+        let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
+        while !f() {
+            assert!(std::time::Instant::now() < deadline, "{what}");
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+    };
+    wait("the crosshead powered", &|| {
+        let image = seg.snapshot_bytes().unwrap();
+        seg.value_at_location(&image, &seg.locate("power.Status").unwrap())
+            == Some(Value::Bool(true))
+    });
+    // The drive's target forced 190 mm away: the drive lags it by more than its following
+    // error window and faults (16#8611), the program stops the machine.
+    let target = seg.index_of("crosshead_target_position").unwrap();
+    let far = seg
+        .check_force(plc_core::write::Write {
+            index: target,
+            leaf: 0,
+            value: Value::Int(20_000_000),
+        })
+        .unwrap();
+    seg.force(&[far]).unwrap();
+    wait("a fault", &|| {
+        seg.read("machine_state").unwrap() == Value::UInt(5)
+    });
+    seg.release(&[(target, 0)], false).unwrap();
+    assert_eq!(
+        seg.read("fault_text").unwrap().to_string(),
+        "crosshead drive fault 16#8611: reset to go on"
+    );
+    assert_eq!(seg.read("lamp_red").unwrap(), Value::Bool(true));
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    assert_eq!(
+        seg.read("machine_state").unwrap(),
+        Value::UInt(5),
+        "a fault waits for the operator"
+    );
+    // The operator's reset runs MC_Reset: the drive leaves its fault, the machine is idle.
+    seg.write("cmd_reset", Value::Bool(true)).unwrap();
+    wait("idle after the reset", &|| {
+        seg.read("machine_state").unwrap() == Value::UInt(0)
+    });
+    assert_eq!(seg.read("fault_text").unwrap().to_string(), "");
+    assert_eq!(seg.read("crosshead_error_code").unwrap(), Value::UInt(0));
+    drop(seg);
+    let (status, stdout) = terminate(program);
+    assert!(status.success(), "exit {status:?}\n{stdout}");
+    let _ = std::fs::remove_dir_all(&retain);
+}

@@ -34,7 +34,32 @@ fn tensile_tester_sim() -> Vec<Device> {
         Device::el1004(),
         Device::el2889(),
         Device::el2004(),
+        Device::akd(),
     ]
+}
+
+/// The crosshead drive's entries as the tensile tester's file names and types them (the
+/// CiA 402 object names and data types), in its PDO order.
+const CROSSHEAD: [(&str, &str); 10] = [
+    ("controlword", "UINT"),
+    ("modes_of_operation", "SINT"),
+    ("target_position", "DINT"),
+    ("target_velocity", "DINT"),
+    ("statusword", "UINT"),
+    ("modes_of_operation_display", "SINT"),
+    ("position_actual_value", "DINT"),
+    ("velocity_actual_value", "DINT"),
+    ("following_error_actual_value", "DINT"),
+    ("error_code", "UINT"),
+];
+
+/// The scanned drive's entries named and typed as [`CROSSHEAD`], as a user edits the scan.
+fn crosshead(mut d: DeviceConfig) -> DeviceConfig {
+    for (e, (name, ty)) in d.entries.iter_mut().zip(CROSSHEAD) {
+        e.name = name.into();
+        e.iec_type = ty.into();
+    }
+    d
 }
 
 /// An entry without its name, to compare entries names aside.
@@ -69,6 +94,9 @@ fn a_scan_of_the_tensile_tester_bus_reproduces_its_devices_identities_and_entrie
     // The file groups the EL1004's inputs and the EL2889's outputs into one word each; grouped
     // the same way, the scanned entries are the file's, names aside.
     let mut grouped = scan.bus.clone();
+    // The drive's EEPROM types its mode BYTE and its error code WORD; the file gives the
+    // CiA 402 types (SINT, UINT), as a user edits the scan.
+    grouped.devices[4] = crosshead(grouped.devices[4].clone());
     for (got, want) in grouped.devices.iter_mut().zip(&file.devices) {
         if let [only] = want.entries.as_slice()
             && got.entries.len() > 1
@@ -98,14 +126,14 @@ fn a_scan_of_the_tensile_tester_bus_reproduces_its_devices_identities_and_entrie
 fn the_scan_leaves_every_subdevice_in_init() {
     let bus = SimBus::new(tensile_tester_sim());
     scan(transport(&bus), &Options::simulated()).unwrap();
-    assert!((0..4).all(|pos| bus.al_state(pos) == ethercat_sim::al::INIT));
+    assert!((0..5).all(|pos| bus.al_state(pos) == ethercat_sim::al::INIT));
 }
 
 #[test]
 fn devices_are_named_by_order_number_and_a_coupler_has_no_entries() {
     let scan = scanned(tensile_tester_sim());
     let names: Vec<_> = scan.bus.devices.iter().map(|d| d.name.as_str()).collect();
-    assert_eq!(names, ["ek1100", "el1004", "el2889", "el2004"]);
+    assert_eq!(names, ["ek1100", "el1004", "el2889", "el2004", "akd"]);
     assert!(scan.bus.devices[0].entries.is_empty());
     assert_eq!(
         scan.bus.devices[0].description,
@@ -280,7 +308,7 @@ struct TensileTesterLinks {
 /// What the engineer does to the scanned file for the tensile tester: the names its program's
 /// links use, and the EL1004's and EL2889's channels as one word each.
 fn renamed_for_the_tensile_tester(mut bus: BusConfig) -> BusConfig {
-    let names = ["coupler", "impact67_0", "impact67_0", "lamps"];
+    let names = ["coupler", "impact67_0", "impact67_0", "lamps", "crosshead"];
     for (d, name) in bus.devices.iter_mut().zip(names) {
         d.name = name.into();
     }
@@ -298,6 +326,7 @@ fn renamed_for_the_tensile_tester(mut bus: BusConfig) -> BusConfig {
     {
         e.name = name.into();
     }
+    bus.devices[4] = crosshead(bus.devices[4].clone());
     bus
 }
 

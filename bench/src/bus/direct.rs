@@ -29,8 +29,8 @@ const MAX_PDU_DATA: usize = PduStorage::element_size(1100);
 pub const GIVE_UP: usize = 20;
 
 /// The working counter of a good exchange: the EL1004's inputs read (1), the EL2889's and
-/// the EL2004's outputs written (2 each).
-const EXPECTED_WKC: u16 = 5;
+/// the EL2004's outputs written (2 each), the AKD's inputs read and outputs written (3).
+const EXPECTED_WKC: u16 = 8;
 
 /// How the frames reach the simulated bus.
 pub enum Wire {
@@ -129,6 +129,9 @@ fn cycle_in_op(
     let lamps = group
         .subdevice(md, position::LAMPS)
         .map_err(crab("EL2004"))?;
+    let crosshead = group
+        .subdevice(md, position::CROSSHEAD)
+        .map_err(crab("AKD"))?;
 
     let mut gm = Gm::default();
     let mut times = Vec::with_capacity(cycles);
@@ -147,6 +150,13 @@ fn cycle_in_op(
             | u8::from(gm.lamp_yellow) << 1
             | u8::from(gm.lamp_red) << 2
             | u8::from(gm.horn) << 3;
+        // The AKD's outputs (0x1600): controlword, mode, target position and velocity.
+        let mut akd = crosshead.outputs_raw_mut();
+        akd[0..2].copy_from_slice(&gm.crosshead_controlword.to_le_bytes());
+        akd[2] = gm.crosshead_mode as u8;
+        akd[3..7].copy_from_slice(&gm.crosshead_target_position.to_le_bytes());
+        akd[7..11].copy_from_slice(&gm.crosshead_target_velocity.to_le_bytes());
+        drop(akd);
         let bus_start = Instant::now();
         let answer = block_on(group.tx_rx(md));
         let bus_end = Instant::now();
@@ -158,6 +168,20 @@ fn cycle_in_op(
         gm.ls_centering_pos = byte & 2 != 0;
         gm.ls_lift_neg = byte & 4 != 0;
         gm.specimen_broken = byte & 8 != 0;
+        // The AKD's inputs (0x1A00): statusword, mode, position, velocity, following error,
+        // error code.
+        let mut akd = [0u8; 17];
+        if valid {
+            akd.copy_from_slice(&crosshead.inputs_raw()[..17]);
+        }
+        let i32_at =
+            |at: usize| i32::from_le_bytes([akd[at], akd[at + 1], akd[at + 2], akd[at + 3]]);
+        gm.crosshead_statusword = u16::from_le_bytes([akd[0], akd[1]]);
+        gm.crosshead_mode_display = akd[2] as i8;
+        gm.crosshead_position = i32_at(3);
+        gm.crosshead_velocity = i32_at(7);
+        gm.crosshead_following_error = i32_at(11);
+        gm.crosshead_error_code = u16::from_le_bytes([akd[15], akd[16]]);
         let tick_start = Instant::now();
         tick(
             &mut gm,

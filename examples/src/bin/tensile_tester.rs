@@ -15,9 +15,11 @@
 //! `--cpu N` (run the cycle and the bus on CPU N, the runtime's other threads elsewhere),
 //! `--realtime-priority P` (SCHED_FIFO at P, 1 to 99: root or CAP_SYS_NICE).
 //!
-//! On the simulated bus (EK1100, EL1004, EL2889, EL2004) a model of the machine runs on a
-//! thread: it reads the drive outputs and sets the limit switches, so the program runs one
-//! test after another. A status line is printed each second.
+//! On the simulated bus (EK1100, EL1004, EL2889, EL2004 and an AKD servo drive moving the
+//! test crosshead) a model of the machine runs on a thread: it reads the drive outputs and the
+//! crosshead's position and sets the limit switches and the break detector, so the program
+//! runs one test after another. A status line is printed each second: the machine's state,
+//! the crosshead's position and PLCopen state, the force, and the signal tower's lamps.
 
 use examples::tensile;
 
@@ -241,6 +243,25 @@ fn status_line(
                     None => "?".into(),
                 }
             };
+            let member = |path: &str| {
+                s.locate(path)
+                    .ok()
+                    .and_then(|at| s.value_at_location(&image, &at))
+            };
+            let position = match member("crosshead.actual_position") {
+                Some(plc_core::Value::Real(mm)) => format!("{mm:.2} mm"),
+                _ => "?".into(),
+            };
+            let axis_state = match member("crosshead.state") {
+                Some(plc_core::Value::UInt(n)) => {
+                    u8::try_from(n).map_or("?", tensile::crosshead::state_name)
+                }
+                _ => "?",
+            };
+            let fault = match read("fault_text") {
+                t if t.is_empty() || t == "?" => String::new(),
+                t => format!(" ({t})"),
+            };
             let lamps = tower
                 .as_ref()
                 .map(|t| format!(" | tower {}", tower_text(t)))
@@ -250,8 +271,8 @@ fn status_line(
                 n => format!(" | {n} forced"),
             };
             println!(
-                "cycle {:>7} | work last/mean/max {}/{}/{} us | overruns {} | bus {}{} | {} {} \
-                 | force {} kN | tests {}{lamps}{forced}",
+                "cycle {:>7} | work last/mean/max {}/{}/{} us | overruns {} | bus {}{} | {} {}{fault} \
+                 | crosshead {position} {axis_state} | force {} kN | tests {}{lamps}{forced}",
                 st.cycle_count,
                 st.stats.last.as_micros(),
                 st.stats.mean.as_micros(),
