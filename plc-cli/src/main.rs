@@ -38,11 +38,14 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Running programs, or the variables of one program.
+    /// Running programs, or the variables of one program; a program on a bus with distributed
+    /// clocks also shows them (SYNC0 period, largest clock difference, the cycle's offset to
+    /// SYNC0).
     List {
         /// Segment name (as the program gave it, or the path of its socket).
         segment: Option<String>,
-        /// Machine-readable output: the layout descriptor as JSON.
+        /// Machine-readable output: the running programs (with `dc`), or the layout
+        /// descriptor as JSON.
         #[arg(long)]
         json: bool,
     },

@@ -5,7 +5,8 @@ use plc_core::{FixedString, GlobalMemory, Time};
 mod common;
 
 use common::{plc, stderr, stdout, terminate, wait_until};
-use plc_io::Runtime;
+use plc_io::shm::BusClocks;
+use plc_io::{BusState, IoBackend, IoError, IoStatus, Runtime};
 use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
@@ -56,10 +57,15 @@ struct Owner {
 
 impl Owner {
     fn start(test: &str) -> Owner {
+        Owner::start_as(test, "owner")
+    }
+
+    /// Starts the program of `<role>_role`.
+    fn start_as(test: &str, role: &str) -> Owner {
         let segment = format!("cli_{test}_{}", std::process::id());
         let child = Command::new(std::env::current_exe().unwrap())
-            .args(["owner_role", "--exact", "--nocapture"])
-            .env("PLC_TEST_ROLE", "owner")
+            .args([&format!("{role}_role"), "--exact", "--nocapture"])
+            .env("PLC_TEST_ROLE", role)
             .env("SEGMENT", &segment)
             .stdout(Stdio::null())
             .spawn()
@@ -110,6 +116,83 @@ fn list_shows_programs_and_their_variables() {
             .success(),
         "the socket's path works too"
     );
+}
+
+/// A bus whose distributed clocks agree within 3 ns, its cycle 120 us after SYNC0.
+struct DcBus;
+
+impl IoBackend<Gm> for DcBus {
+    fn start(&mut self) -> Result<(), IoError> {
+        Ok(())
+    }
+    fn stop(&mut self) {}
+    fn exchange(&mut self, _: &mut Gm) -> IoStatus {
+        IoStatus {
+            inputs_valid: true,
+            bus_fault: false,
+            bus_state: BusState::Op,
+            clocks: Some(BusClocks {
+                sync0_period_ns: 1_000_000,
+                max_time_difference_ns: Some(3),
+                sync0_offset_ns: 120_000,
+            }),
+        }
+    }
+}
+
+/// Runs as a control program on [`DcBus`] when `PLC_TEST_ROLE=dc_owner`.
+#[test]
+fn dc_owner_role() {
+    if std::env::var("PLC_TEST_ROLE").as_deref() != Ok("dc_owner") {
+        return;
+    }
+    Runtime::<Gm>::builder()
+        .period(Duration::from_millis(5))
+        .backend(DcBus)
+        .segment(std::env::var("SEGMENT").unwrap())
+        .build()
+        .expect("the runtime's settings are valid")
+        .run(|ctx| ctx.gm.counter += 1)
+        .unwrap();
+}
+
+#[test]
+fn list_shows_the_distributed_clocks_of_a_program_that_has_them() {
+    let dc = Owner::start_as("dc", "dc_owner");
+    let plain = Owner::start("nodc");
+    let line = "dc: sync0 1 ms, clocks within 3 ns, cycle 120 us after SYNC0";
+    let all = stdout(&plc(&["list"]));
+    let after = |segment: &str| {
+        let mut lines = all.lines().skip_while(|l| !l.starts_with(segment));
+        lines.next();
+        lines.next().unwrap_or("").trim().to_string()
+    };
+    assert_eq!(after(&dc.segment), line, "{all}");
+    assert!(!after(&plain.segment).starts_with("dc:"), "{all}");
+    let vars = stdout(&plc(&["list", &dc.segment]));
+    assert!(vars.contains(&format!("\n{line}\n")), "{vars}");
+    assert!(
+        !stdout(&plc(&["list", &plain.segment])).contains("dc:"),
+        "no clocks, no line"
+    );
+    let rows: serde_json::Value = serde_json::from_str(&stdout(&plc(&["list", "--json"]))).unwrap();
+    let row = |segment: &str| {
+        rows.as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["name"] == segment)
+            .unwrap_or_else(|| panic!("{segment} not listed: {rows}"))
+            .clone()
+    };
+    assert_eq!(
+        row(&dc.segment)["dc"],
+        serde_json::json!({
+            "sync0_period_ns": 1_000_000,
+            "max_time_difference_ns": 3,
+            "sync0_offset_ns": 120_000,
+        })
+    );
+    assert_eq!(row(&plain.segment)["dc"], serde_json::Value::Null);
 }
 
 #[test]

@@ -4,6 +4,7 @@ use super::backend::EtherCatBackend;
 use super::error::EtherCatError;
 use plc_core::GlobalMemory;
 use plc_runtime::{IoBackend, IoError, IoStatus};
+use plc_shm::BusClocks;
 
 impl From<EtherCatError> for IoError {
     fn from(e: EtherCatError) -> Self {
@@ -22,6 +23,7 @@ impl<T: GlobalMemory> IoBackend<T> for EtherCatBackend<T> {
             inputs_valid: s.inputs_valid,
             bus_fault: s.bus_fault,
             bus_state: s.state,
+            clocks: s.dc.map(BusClocks::from),
         }
     }
 

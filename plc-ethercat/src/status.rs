@@ -1,7 +1,7 @@
 //! The outcome of one exchange, and how it counts: what makes inputs valid, what is a fault.
 
 use ethercrab::SubDeviceState;
-use plc_shm::BusState;
+use plc_shm::{BusClocks, BusState};
 
 /// The outcome of one exchange.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -42,6 +42,17 @@ pub struct DcStatus {
     /// (ethercrab's `CycleInfo::cycle_start_offset`, ns): the cycle's phase against SYNC0. A
     /// value that wanders means the cycle's clock and the DC time drift apart.
     pub sync0_offset_ns: u64,
+}
+
+/// The clocks as the status block holds them and the tools show them.
+impl From<DcStatus> for BusClocks {
+    fn from(dc: DcStatus) -> Self {
+        BusClocks {
+            sync0_period_ns: dc.sync0_period_ns,
+            max_time_difference_ns: dc.max_time_difference_ns,
+            sync0_offset_ns: dc.sync0_offset_ns,
+        }
+    }
 }
 
 impl BusStatus {

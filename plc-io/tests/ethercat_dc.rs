@@ -1,7 +1,8 @@
 //! Distributed clocks through `plc_io::ethercat` on the simulated bus: a description's
 //! `dc = { sync0, shift }` brings SYNC0 up on those devices through real ethercrab, the
 //! backend cycles on the DC time and reports how well the clocks agree; a device without a
-//! DC unit, or a cycle period that does not fit SYNC0, is refused before the bus runs.
+//! DC unit, or a cycle period that does not fit SYNC0, is refused before the bus runs. A
+//! program's status block carries the clocks to the tools.
 
 #[path = "common/sim_bench.rs"]
 mod sim_bench;
@@ -9,6 +10,7 @@ mod sim_bench;
 use plc_core::GlobalMemory;
 use plc_core::Time;
 use plc_io::ethercat::{BusConfig, DcConfig, EtherCatError};
+use plc_io::shm::{BusState, DynSegment, Status};
 use plc_io::{Runtime, RuntimeError};
 use sim_bench::{backend, description, sim};
 use std::time::{Duration, Instant};
@@ -169,4 +171,72 @@ fn a_clock_that_runs_away_shows_in_the_largest_difference() {
     let largest = largest.expect("0x092C was read");
     assert!(largest > LIMIT_NS, "largest difference {largest} ns");
     backend.stop();
+}
+
+/// Runs a program on `config` with segment `name` until `done` holds for its status (read
+/// through the segment, as a tool does, at most 10 s), and returns that status.
+fn status_of_a_running_program(
+    name: &str,
+    config: BusConfig,
+    done: impl Fn(&Status) -> bool,
+) -> Status {
+    let bus = sim();
+    let builder = Runtime::<Io>::builder()
+        .period(SYNC0)
+        .backend(backend::<Io>(&bus, config))
+        .segment(name)
+        .handle_signals(false);
+    let stop = builder.stop_handle();
+    let program = std::thread::spawn(move || {
+        builder
+            .build()
+            .expect("the runtime's settings are valid")
+            .run(|_| {})
+    });
+    let began = Instant::now();
+    let status = loop {
+        if let Ok(seg) = DynSegment::attach(name) {
+            let status = seg.status();
+            if done(&status) {
+                break status;
+            }
+        }
+        if began.elapsed() > Duration::from_secs(10) || program.is_finished() {
+            stop.stop();
+            panic!("the program's status never came: {:?}", program.join());
+        }
+        std::thread::sleep(Duration::from_millis(10));
+    };
+    stop.stop();
+    program.join().unwrap().unwrap();
+    status
+}
+
+#[test]
+fn a_running_program_on_dc_shows_its_clocks_to_the_tools() {
+    let name = format!("dc_status_{}", std::process::id());
+    // Half a second of cycles: SYNC0 starts 100 ms after configuration, the difference is
+    // read every 100 ms.
+    let status = status_of_a_running_program(&name, with_dc(&[DQ4, DQ16]), |s| {
+        s.cycle_count >= 500 && s.clocks.is_some_and(|c| c.max_time_difference_ns.is_some())
+    });
+    assert_eq!(status.bus_state, BusState::Op, "{status:?}");
+    let clocks = status.clocks.expect("checked above");
+    println!("{clocks:?}: {clocks}");
+    assert_eq!(clocks.sync0_period_ns, 1_000_000);
+    let difference = clocks.max_time_difference_ns.expect("checked above");
+    assert!(difference < LIMIT_NS, "largest difference {difference} ns");
+    assert!(
+        clocks.sync0_offset_ns < 1_000_000,
+        "the offset to SYNC0 lies within one period: {clocks:?}"
+    );
+}
+
+#[test]
+fn a_running_program_without_dc_shows_no_clocks() {
+    let name = format!("no_dc_status_{}", std::process::id());
+    let status = status_of_a_running_program(&name, description(), |s| {
+        s.cycle_count >= 20 && s.bus_state == BusState::Op
+    });
+    assert_eq!(status.clocks, None, "{status:?}");
 }

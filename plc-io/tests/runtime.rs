@@ -49,6 +49,7 @@ impl IoBackend<Gm> for Recorder {
             inputs_valid: true,
             bus_fault: false,
             bus_state: BusState::Op,
+            clocks: None,
         }
     }
     fn fault(&mut self, gm: &mut Gm) {

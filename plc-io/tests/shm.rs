@@ -656,6 +656,42 @@ fn a_damaged_header_or_descriptor_is_an_error_naming_the_damage_never_a_panic() 
 }
 
 #[test]
+fn the_bus_clocks_reach_the_tools_and_damaged_clock_words_read_as_none() {
+    use plc_io::shm::{BusClocks, BusState, CycleStats, IoStatus};
+    let name = unique("clocks");
+    let owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
+    let seg = DynSegment::attach(&name).unwrap();
+    assert_eq!(seg.status().clocks, None, "a new segment has none");
+    let clocks = BusClocks {
+        sync0_period_ns: 500_000,
+        max_time_difference_ns: Some(42),
+        sync0_offset_ns: 77_000,
+    };
+    let io = IoStatus {
+        inputs_valid: true,
+        bus_fault: false,
+        bus_state: BusState::Op,
+        clocks: Some(clocks),
+    };
+    owner.report(1, &CycleStats::default(), &io);
+    assert_eq!(seg.status().clocks, Some(clocks));
+    // The three clock words sit right before the descriptor (header word 48).
+    let at = owner.word(48) as usize - 24;
+    owner.scribble(at, &u64::MAX.to_le_bytes());
+    assert_eq!(
+        seg.status().clocks,
+        None,
+        "a period that does not fit: none"
+    );
+    owner.report(2, &CycleStats::default(), &IoStatus::NONE);
+    assert_eq!(
+        seg.status().clocks,
+        None,
+        "a bus without clocks clears them"
+    );
+}
+
+#[test]
 fn the_heartbeat_is_on_the_monotonic_clock_every_process_shares() {
     let name = unique("heartbeat");
     let owner = SharedGlobalMemory::<Pattern>::create(&name).unwrap();

@@ -113,6 +113,7 @@ impl IoBackend<Gm> for ThreadedIo {
             inputs_valid: true,
             bus_fault: false,
             bus_state: BusState::Op,
+            clocks: None,
         }
     }
     fn stop(&mut self) {}

@@ -16,7 +16,10 @@
 ///
 /// 2: mailbox slots carry a checksum over ticket and payload, and the owner's outcome (a tool
 /// of format 1 would have its writes discarded by a format 2 owner, so it is refused at attach).
-pub const FORMAT_VERSION: u32 = 2;
+///
+/// 3: the bus's distributed clocks in three words between the table of forces and the
+/// descriptor (a tool of format 2 would look for the descriptor where the clocks are).
+pub const FORMAT_VERSION: u32 = 3;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

@@ -1,7 +1,7 @@
 //! What one exchange of the I/O achieved: handed by the backend to the cycle, published in the
 //! status block.
 
-use crate::BusState;
+use crate::{BusClocks, BusState};
 
 /// What one exchange achieved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -12,6 +12,8 @@ pub struct IoStatus {
     pub bus_fault: bool,
     /// The bus state ([`BusState::NoBus`] without a bus).
     pub bus_state: BusState,
+    /// The bus's distributed clocks, on a bus that runs them (`None` otherwise).
+    pub clocks: Option<BusClocks>,
 }
 
 impl IoStatus {
@@ -20,5 +22,6 @@ impl IoStatus {
         inputs_valid: true,
         bus_fault: false,
         bus_state: BusState::NoBus,
+        clocks: None,
     };
 }

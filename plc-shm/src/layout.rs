@@ -11,6 +11,9 @@
 //!                not taken (too many waiting), waiting now         (4 x u64)
 //! ...   forces   sequence (odd while the owner changes them), count, then per force:
 //!                variable index, leaf, uid, since (UTC ns)         (2 + 256 x 4 x u64)
+//! ...   clocks   the bus's distributed clocks: SYNC0 period (0: none), largest system
+//!                time difference (u64::MAX: not read), cycle's offset after SYNC0, in ns
+//!                                                                  (3 x u64)
 //! ...   descriptor, JSON
 //! ```
 //! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
@@ -62,6 +65,8 @@ pub const MAX_FORCES: usize = 256;
 pub const FORCE_WORDS: usize = 4;
 /// Bytes of the table of forces after the write counters.
 const FORCES: usize = 8 * (2 + MAX_FORCES * FORCE_WORDS);
+/// Bytes of the distributed clocks' words after the table of forces.
+const CLOCKS: usize = 8 * 3;
 
 pub const fn pad8(n: usize) -> usize {
     n.div_ceil(8) * 8
@@ -73,6 +78,7 @@ pub struct Offsets {
     pub image_size: usize,
     pub writes: usize,
     pub forces: usize,
+    pub clocks: usize,
     pub descriptor: usize,
 }
 
@@ -82,7 +88,7 @@ impl Offsets {
     pub const fn checked(image_size: usize) -> Option<Self> {
         // `new` adds a fixed amount to the padded image size: check that sum first.
         match image_size.checked_next_multiple_of(8) {
-            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES) => {
+            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES + CLOCKS) => {
                 Some(Self::new(image_size))
             }
             _ => None,
@@ -92,11 +98,14 @@ impl Offsets {
     /// The offsets for an image of `image_size` bytes (a compiled type's own image).
     pub const fn new(image_size: usize) -> Self {
         let writes = IMAGE + pad8(image_size);
+        let forces = writes + WRITES;
+        let clocks = forces + FORCES;
         Offsets {
             image_size,
             writes,
-            forces: writes + WRITES,
-            descriptor: writes + WRITES + FORCES,
+            forces,
+            clocks,
+            descriptor: clocks + CLOCKS,
         }
     }
 
@@ -123,6 +132,10 @@ impl Offsets {
     /// Word `word` of force `n`.
     pub const fn f_entry(&self, n: usize, word: usize) -> usize {
         self.forces + 16 + 8 * (n * FORCE_WORDS + word)
+    }
+    /// Word `word` of the distributed clocks (period, difference, offset).
+    pub const fn c_word(&self, word: usize) -> usize {
+        self.clocks + 8 * word
     }
 }
 

@@ -4,13 +4,14 @@
 //! - [`SharedGlobalMemory`]: the owner publishes each cycle; typed readers snapshot.
 //! - [`DynSegment`]: tools without the Rust type, through the descriptor stored in the segment.
 //! - [`list_segments`]: what runs on this machine.
-//! - [`Status`], [`BusState`], [`CycleStats`], [`IoStatus`]: the owner's status block, as the
-//!   runtime writes it and the tools read it.
+//! - [`Status`], [`BusState`], [`BusClocks`], [`CycleStats`], [`IoStatus`]: the owner's status
+//!   block, as the runtime writes it and the tools read it.
 //!
 //! A segment is an anonymous memory file (`memfd_create`) holding a header (magic, format
 //! version, layout hash, image size, generation, seqlock sequence), a status block (owner pid,
 //! state, period, cycle count and times, overruns, bus state and flags, heartbeat, write
-//! counters, failed retain saves), the image, and the layout descriptor as JSON. It is sealed:
+//! counters, failed retain saves), the image, the table of forces, the bus's distributed
+//! clocks, and the layout descriptor as JSON. It is sealed:
 //! nobody can shrink or grow it, and once the owner mapped it nobody can map it writable or
 //! write it. The owner serves it on a Unix socket, `<name>.sock` in its runtime directory
 //! (`$XDG_RUNTIME_DIR/plc-vars`, `/run/plc-vars` for root, or `$PLC_VARS_RUNTIME_DIR`): a tool
@@ -36,6 +37,7 @@
 
 #![deny(missing_docs)]
 
+mod bus_clocks;
 mod bus_state;
 mod bytes;
 mod client;
@@ -66,6 +68,7 @@ pub mod trace;
 mod unix;
 mod view;
 
+pub use bus_clocks::BusClocks;
 pub use bus_state::BusState;
 pub use cycle_stats::CycleStats;
 pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
@@ -102,6 +105,8 @@ pub struct SegmentInfo {
     pub retain_failures: u64,
     /// Values forced now.
     pub forces: u64,
+    /// The bus's distributed clocks, on a bus that runs them.
+    pub clocks: Option<BusClocks>,
     /// Why the segment cannot be read (damaged, refused, permission denied), if it cannot:
     /// such a segment is listed, not hidden, so its owner can be found and restarted.
     pub problem: Option<ShmError>,
@@ -124,6 +129,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                     variables: seg.descriptor().variables.len(),
                     retain_failures: status.retain_failures,
                     forces: status.forces,
+                    clocks: status.clocks,
                     problem: None,
                     name,
                 })
@@ -140,6 +146,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                 variables: 0,
                 retain_failures: 0,
                 forces: 0,
+                clocks: None,
                 problem: Some(problem),
                 name,
             }),

@@ -314,7 +314,14 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// now.
     pub fn report(&self, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
         self.view.base.store(S_HEARTBEAT_NS, now_ns());
-        write_report(&self.view.base, cycle_count, stats, io, utc_ns());
+        write_report(
+            &self.view.base,
+            &self.view.off,
+            cycle_count,
+            stats,
+            io,
+            utc_ns(),
+        );
     }
 
     /// The runtime's [`report`](Self::report), right after its publish (which stamped the
@@ -326,7 +333,14 @@ impl<T: GlobalMemory> ShmOwner<T> {
         io: &IoStatus,
         utc_ns: u64,
     ) {
-        write_report(&self.view.base, cycle_count, stats, io, utc_ns);
+        write_report(
+            &self.view.base,
+            &self.view.off,
+            cycle_count,
+            stats,
+            io,
+            utc_ns,
+        );
     }
 
     /// Test hook: stores `data` at byte `offset` of the segment (8-aligned) through the

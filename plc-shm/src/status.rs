@@ -1,7 +1,7 @@
 //! The status block: what the owner reports about its cycle, and the one owner state tools show.
 
 use super::layout::*;
-use crate::{BusState, CycleStats, IoStatus};
+use crate::{BusClocks, BusState, CycleStats, IoStatus};
 use std::fmt;
 use std::time::Duration;
 
@@ -85,6 +85,10 @@ pub struct Status {
     pub bus_fault: bool,
     /// This cycle's inputs are valid.
     pub inputs_valid: bool,
+    /// The bus's distributed clocks, on a bus that runs them (`None` otherwise). The three
+    /// words are read one by one, not under the image's seqlock: the period is the one set up
+    /// at start, the other two may come from consecutive cycles.
+    pub clocks: Option<BusClocks>,
     /// Time since the last heartbeat.
     pub heartbeat_age: Duration,
     /// Writes from outside applied (each variable element of a request counts).
@@ -170,6 +174,7 @@ impl Status {
             bus_state: BusState::from_code(base.load(S_BUS_STATE)),
             bus_fault: flags & BUS_FAULT != 0,
             inputs_valid: flags & INPUTS_VALID != 0,
+            clocks: BusClocks::from_words([0, 1, 2].map(|w| base.load(off.c_word(w)))),
             heartbeat_age: Duration::from_nanos(now_ns().saturating_sub(base.load(S_HEARTBEAT_NS))),
             writes_applied: base.load(S_MB_APPLIED),
             writes_rejected: base.load(S_MB_REJECTED),
@@ -210,6 +215,7 @@ impl Status {
 /// is the publish's).
 pub(crate) fn write_report(
     base: &Base,
+    off: &Offsets,
     cycle_count: u64,
     stats: &CycleStats,
     io: &IoStatus,
@@ -231,5 +237,93 @@ pub(crate) fn write_report(
     base.store(S_BUS_STATE, u64::from(io.bus_state.code()));
     let flags = (io.bus_fault as u64 * BUS_FAULT) | (io.inputs_valid as u64 * INPUTS_VALID);
     base.store(S_BUS_FLAGS, flags);
+    for (w, v) in BusClocks::to_words(io.clocks.as_ref())
+        .into_iter()
+        .enumerate()
+    {
+        base.store(off.c_word(w), v);
+    }
     base.store(S_CYCLE_UTC_NS, utc_ns);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A status block and the words after an image of 4 bytes, in memory of this test's own.
+    struct Block {
+        words: Vec<u64>,
+        off: Offsets,
+    }
+
+    impl Block {
+        fn new() -> Block {
+            let off = Offsets::new(4);
+            Block {
+                words: vec![0; off.descriptor / 8],
+                off,
+            }
+        }
+
+        fn base(&mut self) -> Base {
+            // SAFETY: the vector's u64s are 8-byte aligned, `len` bytes long, and outlive the
+            // `Base`, used only within each test while `self` lives.
+            unsafe { Base::new(self.words.as_mut_ptr().cast(), self.words.len() * 8) }
+        }
+
+        fn report(&mut self, io: &IoStatus) -> Status {
+            let (base, off) = (self.base(), self.off);
+            write_report(&base, &off, 9, &CycleStats::default(), io, 0);
+            Status::read(&base, &off)
+        }
+    }
+
+    #[test]
+    fn the_bus_clocks_reach_the_status_and_leave_it_with_the_bus() {
+        let mut block = Block::new();
+        let clocks = BusClocks {
+            sync0_period_ns: 1_000_000,
+            max_time_difference_ns: Some(3),
+            sync0_offset_ns: 120_000,
+        };
+        let io = IoStatus {
+            inputs_valid: true,
+            bus_fault: false,
+            bus_state: BusState::Op,
+            clocks: Some(clocks),
+        };
+        let status = block.report(&io);
+        assert_eq!(status.clocks, Some(clocks));
+        assert_eq!((status.bus_state, status.cycle_count), (BusState::Op, 9));
+        let unread = IoStatus {
+            clocks: Some(BusClocks {
+                max_time_difference_ns: None,
+                ..clocks
+            }),
+            ..io
+        };
+        assert_eq!(block.report(&unread).clocks, unread.clocks);
+        assert_eq!(block.report(&IoStatus::NONE).clocks, None);
+    }
+
+    #[test]
+    fn damaged_clock_words_read_as_no_clocks_never_a_panic() {
+        let mut block = Block::new();
+        let (base, off) = (block.base(), block.off);
+        for words in [[u64::MAX; 3], [1 << 32, 0, 0], [0, u64::MAX, u64::MAX]] {
+            for (w, v) in words.into_iter().enumerate() {
+                base.store(off.c_word(w), v);
+            }
+            let status = Status::read(&base, &off);
+            assert_eq!(status.clocks, None, "{words:?}");
+        }
+        base.store(off.c_word(0), 500);
+        let clocks = Status::read(&base, &off).clocks.expect("a period fits");
+        assert_eq!(
+            clocks.max_time_difference_ns, None,
+            "u64::MAX does not fit a u32"
+        );
+        assert_eq!(clocks.sync0_offset_ns, u64::MAX);
+        assert!(!clocks.to_string().is_empty());
+    }
 }

@@ -1,7 +1,7 @@
 //! `plc list [segment] [--json]`.
 
 use super::{Error, type_text};
-use plc_shm::{DynSegment, OwnerState, SegmentInfo, ShmError, list_segments};
+use plc_shm::{BusClocks, DynSegment, OwnerState, SegmentInfo, ShmError, list_segments};
 
 /// The state column: the owner's, `gone` for a killed owner's leftover, or `damaged` for a
 /// segment that cannot be read.
@@ -24,6 +24,7 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
                         "name": s.name, "pid": s.pid, "state": state(s),
                         "cycles": s.cycle_count, "variables": s.variables,
                         "retain_failures": s.retain_failures, "forces": s.forces,
+                        "dc": s.clocks.as_ref().map(clocks_json),
                         "problem": s.problem.as_ref().map(|p| p.to_string()),
                     })
                 })
@@ -49,6 +50,9 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
                 s.retain_failures,
                 s.forces
             );
+            if let Some(clocks) = &s.clocks {
+                println!("  dc: {clocks}");
+            }
             if let Some(problem) = &s.problem {
                 println!("  {problem}");
             }
@@ -65,7 +69,11 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
     );
     print_level(&seg.descriptor().variables, 0);
-    let forces = seg.status().forces;
+    let status = seg.status();
+    if let Some(clocks) = &status.clocks {
+        println!("\ndc: {clocks}");
+    }
+    let forces = status.forces;
     if forces > 0 {
         let what = if forces == 1 { "value" } else { "values" };
         println!(
@@ -74,6 +82,16 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         );
     }
     Ok(())
+}
+
+/// The distributed clocks in `plc list --json`: the status block's figures, in ns (the
+/// difference `null` when it was not read).
+fn clocks_json(c: &BusClocks) -> serde_json::Value {
+    serde_json::json!({
+        "sync0_period_ns": c.sync0_period_ns,
+        "max_time_difference_ns": c.max_time_difference_ns,
+        "sync0_offset_ns": c.sync0_offset_ns,
+    })
 }
 
 /// One line per variable of a level, a structure's members indented under it (bit-mapped
