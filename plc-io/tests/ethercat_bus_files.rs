@@ -30,7 +30,9 @@ fn the_tensile_tester_bus_file_maps_impact67_onto_el1004_and_el2889() {
         .iter()
         .map(|d| (d.input_bytes, d.output_bytes))
         .collect();
-    assert_eq!(sizes, [(0, 0), (1, 0), (0, 2), (0, 1)]);
+    // The crosshead drive: 17 input bytes (statusword, mode, position, velocity, following
+    // error, error code) and 11 output bytes (controlword, mode, target position, velocity).
+    assert_eq!(sizes, [(0, 0), (1, 0), (0, 2), (0, 1), (17, 11)]);
 }
 
 #[test]
