@@ -1,7 +1,7 @@
 //! The test crosshead: a servo axis on the AKD (CiA 402, cyclic synchronous position), driven
 //! with PLCopen blocks as docs/motion.md shows. The drive's entries are linked at the top
 //! level of [`Gm`]; each cycle [`read`] copies them into the axis, the machine's state picks
-//! the blocks' inputs ([`command`]), and [`write`] advances the set point and copies the
+//! the blocks' inputs ([`command`]), and [`write()`] advances the set point and copies the
 //! drive's targets out.
 
 use super::{Gm, State};
