@@ -16,7 +16,8 @@
 use ethercat_sim::{Device, SimBus};
 use plc_core::motion::{Axis, McMoveVelocity, McPower};
 use plc_core::{GlobalMemory, Time};
-use plc_io::ethercat::{BusConfig, DcConfig, EtherCatBackend, Options, Transport};
+use plc_io::ethercat::devices as descriptions;
+use plc_io::ethercat::{BusConfig, DcConfig, EtherCatBackend, Options, PdoDirection, Transport};
 use std::fmt::Write;
 use std::time::{Duration, Instant};
 
@@ -51,52 +52,20 @@ pub struct Drive {
     run: McMoveVelocity,
 }
 
-/// The AKD's part of a bus description (its process image as the simulated drive maps it).
-const AKD: &str = r#"
-[[devices]]
-name = "servo"
-description = "Kollmorgen AKD servo drive, CiA 402"
-identity = { vendor = 0x6a, product = 0x00414b44 }
-entries = [
-    { name = "controlword", direction = "output", bits = 16, type = "UINT" },
-    { name = "modes_of_operation", direction = "output", bits = 8, type = "SINT" },
-    { name = "target_position", direction = "output", bits = 32, type = "DINT" },
-    { name = "target_velocity", direction = "output", bits = 32, type = "DINT" },
-    { name = "statusword", direction = "input", bits = 16, type = "UINT" },
-    { name = "modes_of_operation_display", direction = "input", bits = 8, type = "SINT" },
-    { name = "position_actual_value", direction = "input", bits = 32, type = "DINT" },
-    { name = "velocity_actual_value", direction = "input", bits = 32, type = "DINT" },
-    { name = "following_error_actual_value", direction = "input", bits = 32, type = "DINT" },
-    { name = "error_code", direction = "input", bits = 16, type = "UINT" },
-]
-"#;
-
 /// The tensile tester's terminals as a description (`examples/bus/tensile_tester.toml`'s
-/// devices, named as there), with the AKD after them if `drive`.
-fn description(drive: bool) -> Result<BusConfig, String> {
-    let terminals = r#"
-[[devices]]
-name = "coupler"
-identity = { vendor = 0x2, product = 0x044c2c52 }
-[[devices]]
-name = "di"
-identity = { vendor = 0x2, product = 0x03ec3052 }
-entries = [{ name = "digital_inputs", direction = "input", bits = 4, type = "UINT" }]
-[[devices]]
-name = "dq"
-identity = { vendor = 0x2, product = 0x0b493052 }
-entries = [{ name = "digital_outputs", direction = "output", bits = 16, type = "UINT" }]
-[[devices]]
-name = "lamps"
-identity = { vendor = 0x2, product = 0x07d43052 }
-entries = [{ name = "green", direction = "output", bits = 1, type = "BOOL" }]
-"#;
-    let text = if drive {
-        format!("{terminals}{AKD}")
-    } else {
-        terminals.to_string()
-    };
-    BusConfig::from_toml_str(&text).map_err(|e| e.to_string())
+/// devices, named as there), with the AKD (`servo`) after them if `drive`.
+fn description(drive: bool) -> BusConfig {
+    let word = plc_core::IecType::Uint;
+    let mut devices = vec![
+        descriptions::ek1100("coupler"),
+        descriptions::el1004("di").grouped(PdoDirection::Input, "digital_inputs", word),
+        descriptions::el2889("dq").grouped(PdoDirection::Output, "digital_outputs", word),
+        descriptions::el2004("lamps"),
+    ];
+    if drive {
+        devices.push(descriptions::akd("servo"));
+    }
+    BusConfig { devices }
 }
 
 fn devices(drive: bool) -> Vec<Device> {
@@ -148,7 +117,7 @@ pub fn run(quick: bool) -> Result<String, String> {
 
 /// The largest 0x092C difference reported after SYNC0 started.
 fn dc_difference(seconds: u32) -> Result<u32, String> {
-    let mut config = description(true)?;
+    let mut config = description(true);
     let dc = DcConfig {
         sync0: Time::from_millis(1),
         shift: Time::from_micros(250),
@@ -178,7 +147,7 @@ fn dc_difference(seconds: u32) -> Result<u32, String> {
 /// The largest following error at the test speed, in mm.
 fn following_error(seconds: u32) -> Result<f64, String> {
     let bus = SimBus::new(devices(true));
-    let mut b = backend::<Drive>(&bus, description(true)?)?;
+    let mut b = backend::<Drive>(&bus, description(true))?;
     let mut gm = Drive::default();
     gm.axis.scale = SCALE;
     let mut most: f64 = 0.0;
@@ -217,7 +186,7 @@ fn following_error(seconds: u32) -> Result<f64, String> {
 /// The tensile tester's terminals alone: one linked output.
 #[derive(GlobalMemory, Debug, Clone)]
 pub struct Terminals {
-    #[plc(link = "ethercat.lamps.green", direction = "output")]
+    #[plc(link = "ethercat.lamps.output1", direction = "output")]
     green: bool,
 }
 
@@ -227,7 +196,7 @@ fn exchange_cost(blocks: usize) -> Result<(f64, f64), String> {
     let (mut with, mut without) = (Vec::new(), Vec::new());
     for _ in 0..blocks {
         let bus = SimBus::new(devices(true));
-        let mut b = backend::<Drive>(&bus, description(true)?)?;
+        let mut b = backend::<Drive>(&bus, description(true))?;
         let mut gm = Drive::default();
         with.push(block(|| {
             b.exchange(&mut gm);
@@ -239,7 +208,7 @@ fn exchange_cost(blocks: usize) -> Result<(f64, f64), String> {
         }));
         b.stop();
         let bus = SimBus::new(devices(false));
-        let mut b = backend::<Terminals>(&bus, description(false)?)?;
+        let mut b = backend::<Terminals>(&bus, description(false))?;
         let mut gm = Terminals { green: true };
         without.push(block(|| {
             b.exchange(&mut gm);

@@ -4,7 +4,8 @@
 //!
 //! 1. [`BusConfig`] (`config`): the bus description, a TOML or JSON file listing the SubDevices
 //!    in ring order with the names links use, their expected identity and their PDO entries.
-//!    [`devices`] has ready descriptions of the Beckhoff terminals the simulated bus models.
+//!    [`devices`] has ready descriptions of the devices the simulated bus models (Beckhoff
+//!    terminals, a Kollmorgen AKD servo drive).
 //! 2. [`layout`] and [`resolve`]: each entry's bit range in its SubDevice's process data, and
 //!    each `#[plc(link = "ethercat.<device>.<entry>")]` of the struct checked against it
 //!    (existence, direction widening, one writer per output). All problems are

@@ -33,6 +33,13 @@ fn the_tensile_tester_bus_file_maps_impact67_onto_el1004_and_el2889() {
     // The crosshead drive: 17 input bytes (statusword, mode, position, velocity, following
     // error, error code) and 11 output bytes (controlword, mode, target position, velocity).
     assert_eq!(sizes, [(0, 0), (1, 0), (0, 2), (0, 1), (17, 11)]);
+    // The crosshead is the ready AKD description under its own name and description.
+    let crosshead = bus.devices.iter().find(|d| d.name == "crosshead").unwrap();
+    let ready = devices::akd("crosshead");
+    assert_eq!(
+        (&crosshead.identity, &crosshead.entries),
+        (&ready.identity, &ready.entries)
+    );
 }
 
 #[test]

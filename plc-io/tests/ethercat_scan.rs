@@ -38,26 +38,12 @@ fn tensile_tester_sim() -> Vec<Device> {
     ]
 }
 
-/// The crosshead drive's entries as the tensile tester's file names and types them (the
-/// CiA 402 object names and data types), in its PDO order.
-const CROSSHEAD: [(&str, &str); 10] = [
-    ("controlword", "UINT"),
-    ("modes_of_operation", "SINT"),
-    ("target_position", "DINT"),
-    ("target_velocity", "DINT"),
-    ("statusword", "UINT"),
-    ("modes_of_operation_display", "SINT"),
-    ("position_actual_value", "DINT"),
-    ("velocity_actual_value", "DINT"),
-    ("following_error_actual_value", "DINT"),
-    ("error_code", "UINT"),
-];
-
-/// The scanned drive's entries named and typed as [`CROSSHEAD`], as a user edits the scan.
+/// The scanned drive's entries named and typed as the ready description's (the CiA 402
+/// object names and data types the tensile tester's file uses), as a user edits the scan.
 fn crosshead(mut d: DeviceConfig) -> DeviceConfig {
-    for (e, (name, ty)) in d.entries.iter_mut().zip(CROSSHEAD) {
-        e.name = name.into();
-        e.iec_type = ty.into();
+    for (e, ready) in d.entries.iter_mut().zip(devices::akd("").entries) {
+        e.name = ready.name;
+        e.iec_type = ready.iec_type;
     }
     d
 }

@@ -8,7 +8,7 @@ mod sim_bench;
 use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
 use plc_core::motion::{Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error};
-use plc_io::ethercat::{BusConfig, EtherCatBackend, StartupSdo};
+use plc_io::ethercat::{BusConfig, DeviceConfig, EtherCatBackend, StartupSdo, devices};
 use std::time::{Duration, Instant};
 
 /// The drive's 2^20 increments per revolution, one revolution per 10 mm of travel.
@@ -52,33 +52,14 @@ struct Machine {
     reset: McReset,
 }
 
-/// The AKD's process image as the simulated drive maps it (0x1600 and 0x1A00).
+/// The AKD alone, named `servo`, with start-up SDOs.
 fn description(startup: Vec<StartupSdo>) -> BusConfig {
-    BusConfig::from_toml_str(
-        r#"
-        [[devices]]
-        name = "servo"
-        description = "Kollmorgen AKD servo drive, CiA 402"
-        identity = { vendor = 0x6a, product = 0x00414b44 }
-        entries = [
-            { name = "controlword", direction = "output", bits = 16, type = "UINT" },
-            { name = "modes_of_operation", direction = "output", bits = 8, type = "SINT" },
-            { name = "target_position", direction = "output", bits = 32, type = "DINT" },
-            { name = "target_velocity", direction = "output", bits = 32, type = "DINT" },
-            { name = "statusword", direction = "input", bits = 16, type = "UINT" },
-            { name = "modes_of_operation_display", direction = "input", bits = 8, type = "SINT" },
-            { name = "position_actual_value", direction = "input", bits = 32, type = "DINT" },
-            { name = "velocity_actual_value", direction = "input", bits = 32, type = "DINT" },
-            { name = "following_error_actual_value", direction = "input", bits = 32, type = "DINT" },
-            { name = "error_code", direction = "input", bits = 16, type = "UINT" },
-        ]
-        "#,
-    )
-    .map(|mut bus| {
-        bus.devices[0].startup = startup;
-        bus
-    })
-    .unwrap()
+    BusConfig {
+        devices: vec![DeviceConfig {
+            startup,
+            ..devices::akd("servo")
+        }],
+    }
 }
 
 /// The program and its bus, cycled at 1 ms.

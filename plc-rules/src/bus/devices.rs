@@ -1,4 +1,5 @@
-//! Ready descriptions of Beckhoff terminals, the ones the simulated bus (`ethercat-sim`) models.
+//! Ready descriptions of the devices the simulated bus (`ethercat-sim`) models: Beckhoff
+//! terminals, and a Kollmorgen AKD servo drive ([`akd`]).
 //!
 //! Identities are vendor 2 (Beckhoff) and the product codes of the real terminals; the
 //! revision is left open (`None`), since terminals of one product ship in several revisions.
@@ -166,5 +167,54 @@ impl DeviceConfig {
         self.entries.retain(|e| e.direction != direction);
         self.entries.insert(first.min(self.entries.len()), group);
         self
+    }
+}
+
+/// Kollmorgen's EtherCAT vendor id.
+pub const KOLLMORGEN: u32 = 0x0000_006a;
+/// Product code of the AKD servo drive.
+pub const AKD: u32 = 0x0041_4b44;
+
+/// Kollmorgen AKD servo drive (CiA 402 over CoE) with the process image of its 0x1600/0x1A00
+/// mappings for cyclic synchronous position and velocity: outputs `controlword` (`UINT`),
+/// `modes_of_operation` (`SINT`), `target_position`, `target_velocity` (`DINT`) in SM2;
+/// inputs `statusword` (`UINT`), `modes_of_operation_display` (`SINT`),
+/// `position_actual_value`, `velocity_actual_value`, `following_error_actual_value` (`DINT`),
+/// `error_code` (`UINT`) in SM3. The names are `plc_core::motion::Cia402`'s members.
+///
+/// ```
+/// let drive = plc_rules::bus::devices::akd("crosshead");
+/// assert_eq!(drive.entries.len(), 10);
+/// assert_eq!(drive.entries[2].name, "target_position");
+/// ```
+pub fn akd(name: &str) -> DeviceConfig {
+    let (output, input) = (PdoDirection::Output, PdoDirection::Input);
+    let entries = [
+        ("controlword", output, 16, IecType::Uint),
+        ("modes_of_operation", output, 8, IecType::Sint),
+        ("target_position", output, 32, IecType::Dint),
+        ("target_velocity", output, 32, IecType::Dint),
+        ("statusword", input, 16, IecType::Uint),
+        ("modes_of_operation_display", input, 8, IecType::Sint),
+        ("position_actual_value", input, 32, IecType::Dint),
+        ("velocity_actual_value", input, 32, IecType::Dint),
+        ("following_error_actual_value", input, 32, IecType::Dint),
+        ("error_code", input, 16, IecType::Uint),
+    ]
+    .map(|(entry, direction, bits, ty)| PdoEntry {
+        sm: if direction == output { 2 } else { 3 },
+        ..PdoEntry::new(entry, direction, bits, ty)
+    });
+    DeviceConfig {
+        name: name.to_owned(),
+        identity: Identity {
+            vendor: KOLLMORGEN,
+            product: AKD,
+            revision: None,
+        },
+        description: "Kollmorgen AKD servo drive, CiA 402".to_owned(),
+        entries: entries.to_vec(),
+        startup: Vec::new(),
+        dc: None,
     }
 }
