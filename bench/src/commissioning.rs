@@ -23,6 +23,8 @@
 //!   normal priority draining every 10 ms as `plc trace` does; the rows lost
 //!   ([`TraceEvent::Lost`]) plus every gap or repeat in the rows' cycle numbers.
 
+mod floor;
+
 use super::gm1k::Gm1k;
 use super::owner::leaf_paths;
 use super::timing::median_per_iter;
@@ -368,6 +370,13 @@ fn forces_of(seg: &DynSegment, paths: &[String]) -> Result<Vec<Checked>, String>
         .collect()
 }
 
+/// Where the forced and traced values are in the image, for [`floor`].
+#[derive(Clone)]
+struct Places {
+    forced: Vec<floor::Place>,
+    traced: Vec<floor::Place>,
+}
+
 /// `n` of `items`, evenly spaced.
 fn spread<'a>(items: &[&'a String], n: usize) -> impl Iterator<Item = &'a String> {
     let step = (items.len() / n).max(1);
@@ -452,7 +461,7 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
     let mut gm = Gm1k::default();
     let mut image = Box::new(gm.to_image());
     owner.publish_image(&image).map_err(shm)?;
-    let (tool_tx, tool_rx) = std::sync::mpsc::channel::<Result<(), String>>();
+    let (tool_tx, tool_rx) = std::sync::mpsc::channel::<Result<Places, String>>();
     let (done_tx, done_rx) = std::sync::mpsc::channel::<()>();
     let tool_name = name.to_string();
     let tool = std::thread::spawn(move || {
@@ -461,12 +470,20 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
             let paths = leaf_paths(&seg);
             let forces = forces_of(&seg, &paths)?;
             seg.force(&forces).map_err(|e| e.to_string())?;
-            let trace = seg
-                .trace(&traced_paths(&seg, &paths)?, 1)
-                .map_err(|e| e.to_string())?;
-            Ok::<(DynSegment, Trace), String>((seg, trace))
+            let traced = traced_paths(&seg, &paths)?;
+            let trace = seg.trace(&traced, 1).map_err(|e| e.to_string())?;
+            let place = |at: &PathLocation| (at.var.offset, at.var.size);
+            let places = Places {
+                // The paths `forces_of` chose.
+                forced: spread(&paths.iter().collect::<Vec<_>>(), FORCED)
+                    .map(|p| seg.locate(p).map(|at| place(&at)))
+                    .collect::<Result<_, _>>()
+                    .map_err(|e| e.to_string())?,
+                traced: traced.iter().map(place).collect(),
+            };
+            Ok::<(DynSegment, Trace, Places), String>((seg, trace, places))
         })();
-        let _ = tool_tx.send(held.as_ref().map(|_| ()).map_err(Clone::clone));
+        let _ = tool_tx.send(held.as_ref().map(|h| h.2.clone()).map_err(Clone::clone));
         // Attached until the steps are timed: the trace records while it is.
         let _ = done_rx.recv();
         drop(held);
@@ -487,7 +504,7 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
     };
     // The trace's recording was queued before its answer: this takes it in.
     owner.apply_mailbox(&mut gm);
-    let timed = told.and_then(|()| {
+    let timed = told.and_then(|places| {
         if owner.forces_held() != FORCED {
             return Err(format!("{} forces held, not {FORCED}", owner.forces_held()));
         }
@@ -502,13 +519,18 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
             cycle += 1;
             owner.record_traces(black_box(&image), cycle, cycle);
         });
-        Ok((apply, record))
+        let bytes = zerocopy::IntoBytes::as_mut_bytes(&mut *image);
+        let forces_floor = floor::forces(bytes, &places.forced, batches, BATCH);
+        let trace_floor = floor::trace(bytes, &places.traced, batches, BATCH);
+        Ok((apply, record, forces_floor, trace_floor))
     });
     let _ = done_tx.send(());
     let _ = tool.join();
-    let (apply, record) = timed?;
+    let (apply, record, forces_floor, trace_floor) = timed?;
     let _ = writeln!(out, "forces_apply_32_ns: {}", apply.as_nanos());
     let _ = writeln!(out, "trace_record_64_ns: {}", record.as_nanos());
+    let _ = writeln!(out, "forces_floor_32_twice_ns: {}", forces_floor.as_nanos());
+    let _ = writeln!(out, "trace_floor_64_ns: {}", trace_floor.as_nanos());
     Ok(())
 }
 

@@ -52,8 +52,9 @@ pub(crate) struct Recording {
     /// Kept mapped while the cycle writes.
     _mapping: Mapping,
     base: Base,
-    /// Where each column's value is in the image, and its bytes (at most 8).
-    slots: Vec<(usize, usize)>,
+    /// Where each column's value is in the image, and which of the 8 bytes read there are
+    /// its own.
+    slots: Vec<Slot>,
     every: u32,
     /// Cycles to skip before the next row.
     countdown: u32,
@@ -88,7 +89,7 @@ impl Recording {
                     ),
                 ));
             }
-            slots.push((found.offset, var.element_size().min(8)));
+            slots.push(Slot::new(found.offset, var.element_size()));
         }
         let capacity = capacity(period_ns, every);
         let len = ROWS + capacity as usize * stride(values.len());
@@ -134,13 +135,9 @@ impl Recording {
         fence(Ordering::Release);
         b.word(at + 8).store(cycle, Ordering::Relaxed);
         b.word(at + 16).store(time_ns, Ordering::Relaxed);
-        for (j, &(offset, size)) in self.slots.iter().enumerate() {
-            let mut w = [0u8; 8];
-            if let Some(bytes) = image.get(offset..offset + size) {
-                w[..size].copy_from_slice(bytes);
-            }
+        for (j, slot) in self.slots.iter().enumerate() {
             b.word(at + 24 + 8 * j)
-                .store(u64::from_le_bytes(w), Ordering::Relaxed);
+                .store(slot.read(image), Ordering::Relaxed);
         }
         stamp.store(2 * k + 2, Ordering::Release);
         self.next = k + 1;
@@ -150,6 +147,47 @@ impl Recording {
     /// Tells the tool no more rows come (the program stops).
     pub fn end(&self) {
         self.base.store(T_ENDED, 1);
+    }
+}
+
+/// Where a column's value is in the image.
+#[derive(Clone, Copy, Debug)]
+struct Slot {
+    offset: usize,
+    /// The value's bytes (at most 8) in a little-endian word.
+    mask: u64,
+    size: usize,
+}
+
+impl Slot {
+    fn new(offset: usize, size: usize) -> Slot {
+        let size = size.min(8);
+        Slot {
+            offset,
+            mask: u64::MAX >> (64 - 8 * size.max(1)),
+            size,
+        }
+    }
+
+    /// The value as a little-endian word. One 8-byte load and a mask where the image has 8
+    /// bytes from the value on (all but the last few values): a copy of the value's own length
+    /// would be a call to `memcpy` for each column, most of a row's cost.
+    #[inline]
+    fn read(&self, image: &[u8]) -> u64 {
+        match image
+            .get(self.offset..)
+            .and_then(|rest| rest.first_chunk::<8>())
+        {
+            Some(word) => u64::from_le_bytes(*word) & self.mask,
+            None => {
+                let mut w = [0u8; 8];
+                let end = self.offset.saturating_add(self.size);
+                if let Some(bytes) = image.get(self.offset..end) {
+                    w[..self.size].copy_from_slice(bytes);
+                }
+                u64::from_le_bytes(w)
+            }
+        }
     }
 }
 
@@ -319,6 +357,23 @@ mod tests {
         assert_eq!(capacity(10_000_000, 1), 1024);
         assert_eq!(capacity(10_000, 1), 16_384);
         assert_eq!(capacity(0, 1), 16_384);
+    }
+
+    #[test]
+    fn a_column_reads_its_own_bytes_only_wherever_it_is() {
+        let image: Vec<u8> = (1..=20).collect();
+        // In the middle: the 8-byte load, masked.
+        assert_eq!(Slot::new(2, 1).read(&image), 3);
+        assert_eq!(Slot::new(2, 2).read(&image), 0x0403);
+        assert_eq!(Slot::new(4, 4).read(&image), 0x0807_0605);
+        assert_eq!(Slot::new(0, 8).read(&image), 0x0807_0605_0403_0201);
+        // At the end, fewer than 8 bytes follow: copied.
+        assert_eq!(Slot::new(19, 1).read(&image), 20);
+        assert_eq!(Slot::new(16, 4).read(&image), 0x1413_1211);
+        assert_eq!(Slot::new(12, 8).read(&image), 0x1413_1211_100f_0e0d);
+        // Beyond the image (not made by `create`): zero, never a panic.
+        assert_eq!(Slot::new(18, 4).read(&image), 0);
+        assert_eq!(Slot::new(usize::MAX, 8).read(&image), 0);
     }
 
     #[test]
