@@ -7,8 +7,9 @@ mod sim_bench;
 
 use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
+use plc_core::Time;
 use plc_core::motion::{Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error};
-use plc_io::ethercat::{BusConfig, DeviceConfig, EtherCatBackend, StartupSdo, devices};
+use plc_io::ethercat::{BusConfig, DcConfig, DeviceConfig, EtherCatBackend, StartupSdo, devices};
 use std::time::{Duration, Instant};
 
 /// The drive's 2^20 increments per revolution, one revolution per 10 mm of travel.
@@ -64,6 +65,7 @@ fn description(startup: Vec<StartupSdo>) -> BusConfig {
 
 /// The program and its bus, cycled at 1 ms.
 struct Running {
+    bus: SimBus,
     backend: EtherCatBackend<Machine>,
     gm: Machine,
     last: Instant,
@@ -71,12 +73,17 @@ struct Running {
 
 impl Running {
     fn start(startup: Vec<StartupSdo>) -> Running {
+        Running::on(description(startup))
+    }
+
+    fn on(config: BusConfig) -> Running {
         let bus = SimBus::new(vec![Device::akd()]);
-        let mut backend = sim_bench::backend::<Machine>(&bus, description(startup));
+        let mut backend = sim_bench::backend::<Machine>(&bus, config);
         backend.start().unwrap();
         let mut gm = Machine::default();
         gm.axis.scale = SCALE;
         Running {
+            bus,
             backend,
             gm,
             last: Instant::now(),
@@ -261,4 +268,73 @@ fn a_following_error_faults_the_drive_and_mc_reset_recovers_the_axis() {
     assert_eq!(m.gm.axis.error_id, 0);
     assert_eq!(m.gm.error_code, 0);
     m.backend.stop();
+}
+
+#[test]
+fn a_drive_that_loses_sync0_faults_and_the_axis_stops_on_its_error() {
+    let mut config = description(Vec::new());
+    config.devices[0].dc = Some(DcConfig {
+        sync0: Time::from_millis(1),
+        shift: Time::ZERO,
+    });
+    let mut m = Running::on(config);
+    m.powered();
+    let hold = |gm: &mut Machine| {
+        gm.power.call(&mut gm.axis, true);
+    };
+    // Enabled in cyclic synchronous position, SYNC0 pulsing.
+    m.until(200, hold, |gm| gm.mode_display == 8);
+    // SYNC0 starts 100 ms after the bus was configured.
+    for _ in 0..500 {
+        m.cycle(hold);
+        if m.bus.sync0(0).pulses >= 50 {
+            break;
+        }
+    }
+    let running = m.bus.sync0(0);
+    assert!(
+        running.active && running.pulses >= 50,
+        "SYNC0 {running:?}; system times {:?}",
+        m.bus.system_times()
+    );
+    // SYNC0 stops: another MainDevice on the wire switches the drive's SYNC unit off
+    // (0x0981 = 0), as a second master or a tool writing registers would.
+    let mut address = [0u8; 2];
+    m.bus.device(0).register(0x0010, &mut address);
+    let reply = m
+        .bus
+        .process_frame(&fpwr(u16::from_le_bytes(address), 0x0981, &[0]));
+    // The working counter, after the headers (14 + 2 + 10 bytes) and the one data byte.
+    assert_eq!(reply.map(|r| r[27]), Some(1), "the write reached the drive");
+    assert!(!m.bus.sync0(0).active);
+    // The drive faults with 0x8700 and stops; the axis goes to ErrorStop with its code.
+    m.until(200, hold, |gm| gm.axis.state() == AxisState::ErrorStop);
+    m.cycle(hold);
+    assert_eq!(m.gm.error_code, 0x8700);
+    assert_eq!((m.gm.power.Error, m.gm.power.ErrorID), (true, 0x8700));
+    assert_eq!(
+        m.gm.statusword & 0x4F,
+        0x08,
+        "fault: {:#06x}",
+        m.gm.statusword
+    );
+    m.backend.stop();
+}
+
+/// An Ethernet frame with one FPWR datagram (station `address`, register `register`).
+fn fpwr(address: u16, register: u16, data: &[u8]) -> Vec<u8> {
+    let mut f = vec![0xFF; 6];
+    f.extend_from_slice(&[0x10; 6]);
+    f.extend_from_slice(&ethercat_sim::ETHERTYPE.to_be_bytes());
+    f.extend_from_slice(&(0x1000 | (12 + data.len()) as u16).to_le_bytes());
+    // FPWR, index 0, station address, register, length, no IRQ.
+    f.extend_from_slice(&[0x05, 0]);
+    f.extend_from_slice(&address.to_le_bytes());
+    f.extend_from_slice(&register.to_le_bytes());
+    f.extend_from_slice(&(data.len() as u16).to_le_bytes());
+    f.extend_from_slice(&[0, 0]);
+    f.extend_from_slice(data);
+    // Working counter.
+    f.extend_from_slice(&[0, 0]);
+    f
 }
