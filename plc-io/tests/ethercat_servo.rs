@@ -156,6 +156,9 @@ fn an_axis_powers_homes_and_moves_the_simulated_drive_to_its_target() {
     assert!(m.gm.home.Done && m.gm.axis.homed);
     // 20 mm at 20 mm/s (2 revolutions per second), 200 mm/s² both ways.
     let mut most_lag: f64 = 0.0;
+    // The profile's limits, cycle by cycle: the set point's velocity, and its change from
+    // one cycle to the next (at the profile's 1 ms step), within what the move asked.
+    let (mut most_speed, mut most_accel, mut last_velocity) = (0.0f64, 0.0f64, 0.0);
     m.until(
         5_000,
         |gm| {
@@ -165,8 +168,21 @@ fn an_axis_powers_homes_and_moves_the_simulated_drive_to_its_target() {
         },
         |gm| {
             most_lag = most_lag.max((gm.axis.set_position - gm.axis.actual_position).abs());
+            let v = gm.axis.set_velocity;
+            most_speed = most_speed.max(v.abs());
+            most_accel = most_accel.max(((v - last_velocity) / 0.001).abs());
+            last_velocity = v;
             gm.move_to.Done
         },
+    );
+    // It cruised at the speed asked, never faster.
+    assert!(
+        (19.9..=20.0 + 1e-9).contains(&most_speed),
+        "set velocity reached {most_speed} mm/s"
+    );
+    assert!(
+        (150.0..=200.0 * (1.0 + 1e-6)).contains(&most_accel),
+        "set acceleration reached {most_accel} mm/s²"
     );
     // The set point is there at once; the drive within a few cycles.
     m.until(
