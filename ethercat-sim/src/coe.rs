@@ -6,6 +6,15 @@
 //! Frames (after the 6-byte mailbox header): CoE header u16 (service in bits 12-15: 2 SDO
 //! request, 3 SDO response), SDO command byte, index u16, sub-index u8, 4 data bytes; a normal
 //! upload response has the complete size in those 4 bytes and the data after them.
+//!
+//! The SDO information service (object and entry names, data types) is in [`info`].
+
+mod info;
+
+pub(crate) use info::{
+    ARRAY, READ, READ_WRITE, RECORD, RX_MAPPABLE, TX_MAPPABLE, deftype, sub_names,
+};
+pub(crate) use info::{SDO_INFORMATION, endless_fragment, refusal};
 
 /// CoE services (bits 12-15 of the CoE header).
 const SDO_REQUEST: u16 = 2;
@@ -29,12 +38,17 @@ pub(crate) struct Entry {
     pub(crate) writable: bool,
 }
 
-/// An object dictionary: entries by index and sub-index, and read-only byte strings.
+/// An object dictionary: entries by index and sub-index, and read-only byte strings; and
+/// what the SDO information service tells of them (names, object codes, data types).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Dictionary {
     pub(crate) entries: Vec<Entry>,
     /// Objects longer than 4 bytes (VISIBLE STRING), uploaded the normal way.
     pub(crate) texts: Vec<(u16, u8, Vec<u8>)>,
+    /// Object descriptions (Get Object Description).
+    pub(crate) objects: Vec<info::ObjectInfo>,
+    /// Entry descriptions (Get Entry Description).
+    pub(crate) entry_info: Vec<info::EntryInfo>,
 }
 
 impl Dictionary {
@@ -75,9 +89,24 @@ impl Dictionary {
             .find(|e| (e.index, e.sub) == (index, sub))
     }
 
+    /// Answers one CoE frame (`request` starts at the CoE header) with the replies the device
+    /// puts into its input mailbox one after the other (each at most `room` bytes): one SDO
+    /// reply, or one SDO information reply or its fragments. No reply for a service this
+    /// server does not offer (emergencies, segmented transfers): the device then answers
+    /// nothing.
+    pub(crate) fn serve_mailbox(&mut self, request: &[u8], room: usize) -> Vec<Vec<u8>> {
+        match request {
+            [a, b, ..] if u16::from_le_bytes([*a, *b]) >> 12 == SDO_INFORMATION => {
+                self.serve_info(request, room)
+            }
+            _ => self.serve(request, room).into_iter().collect(),
+        }
+    }
+
     /// Answers one CoE frame (`request` starts at the CoE header) with a reply of at most
-    /// `room` bytes; `None` for a service this server does not offer (SDO information,
-    /// emergencies): the device then answers nothing.
+    /// `room` bytes; `None` for a service this server does not offer here (SDO information
+    /// goes to [`Dictionary::serve_info`] through [`Dictionary::serve_mailbox`]; emergencies):
+    /// the device then answers nothing.
     pub(crate) fn serve(&mut self, request: &[u8], room: usize) -> Option<Vec<u8>> {
         if request.len() < 10 {
             return None;
@@ -159,7 +188,8 @@ impl Dictionary {
 /// configured through, per channel `0x80n0` (n = 0..3, as its data sheet lists them):
 /// `:02` presentation (u8: 0 signed, 1 unsigned, 2 absolute with MSB as sign), `:06` enable
 /// filter (bool as u8) and `:15` filter settings (u16: 0 = 50 Hz FIR), all writable, all 0
-/// after power-on.
+/// after power-on; the inputs `0x60n0` the TxPDOs map, read-only and 0; and the names and
+/// types the SDO information service gives ([`el3004_descriptions`]).
 pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
     let mut d = Dictionary::default();
     d.text(0x1008, "EL3004");
@@ -189,8 +219,87 @@ pub(crate) fn el3004(vendor: u32, product: u32, revision: u32) -> Dictionary {
         d.set(settings, 0x02, 0, 1, true);
         d.set(settings, 0x06, 0, 1, true);
         d.set(settings, 0x15, 0, 2, true);
+        // The inputs each channel's TxPDO maps, read-only (0 here: the simulated terminal
+        // measures nothing).
+        let inputs = 0x6000 + 0x10 * ch;
+        d.set(inputs, 0, 0x11, 1, false);
+        for (sub, size) in [(1, 1), (2, 1), (3, 1), (5, 1), (7, 1), (0x0F, 1), (0x10, 1)] {
+            d.set(inputs, sub, 0, size, false);
+        }
+        d.set(inputs, 0x11, 0, 2, false);
     }
+    el3004_descriptions(&mut d);
     d
+}
+
+/// The EL3004's object and entry names and types as its SDO information service gives them:
+/// Beckhoff's EL30xx documentation ("Object description and parameterization": 0x1008
+/// "Device name", 0x1018 "Identity", 0x1A0n "AI TxPDO-Map Standard Ch.n", 0x1C12/0x1C13
+/// "RxPDO assign"/"TxPDO assign", 0x60n0 "AI Inputs Ch.n" with "Underrange" ... "Value"
+/// (INT), 0x80n0 "AI Settings Ch.n"); see `data/README.md`.
+fn el3004_descriptions(d: &mut Dictionary) {
+    use deftype::*;
+    let bits = |text: &str| 8 * text.len() as u16;
+    d.describe_var(0x1008, "Device name", VISIBLE_STRING, bits("EL3004"), READ);
+    let identity: Vec<(u8, &str, u16, u16, u16)> =
+        ["Vendor ID", "Product code", "Revision", "Serial number"]
+            .iter()
+            .enumerate()
+            .map(|(i, n)| (i as u8 + 1, *n, UNSIGNED32, 32, READ))
+            .collect();
+    d.describe_record(0x1018, "Identity", RECORD, IDENTITY, READ, &identity);
+    let sub_names = sub_names();
+    let assign = |n: usize| -> Vec<(u8, &str, u16, u16, u16)> {
+        (0..n)
+            .map(|i| {
+                (
+                    i as u8 + 1,
+                    sub_names[i].as_str(),
+                    UNSIGNED16,
+                    16,
+                    READ_WRITE,
+                )
+            })
+            .collect()
+    };
+    d.describe_record(0x1C12, "RxPDO assign", ARRAY, UNSIGNED16, READ_WRITE, &[]);
+    d.describe_record(
+        0x1C13,
+        "TxPDO assign",
+        ARRAY,
+        UNSIGNED16,
+        READ_WRITE,
+        &assign(4),
+    );
+    for ch in 0..4u16 {
+        let n = ch + 1;
+        let map: Vec<(u8, &str, u16, u16, u16)> = (0..10)
+            .map(|i| (i as u8 + 1, sub_names[i].as_str(), UNSIGNED32, 32, READ))
+            .collect();
+        let pdo = 0x1A00 + 2 * ch;
+        let name = format!("AI TxPDO-Map Standard Ch.{n}");
+        d.describe_record(pdo, &name, RECORD, PDO_MAPPING, READ, &map);
+        let tx = READ | TX_MAPPABLE;
+        let inputs = [
+            (0x01, "Underrange", BOOLEAN, 1, tx),
+            (0x02, "Overrange", BOOLEAN, 1, tx),
+            (0x03, "Limit 1", BIT2, 2, tx),
+            (0x05, "Limit 2", BIT2, 2, tx),
+            (0x07, "Error", BOOLEAN, 1, tx),
+            (0x0F, "TxPDO State", BOOLEAN, 1, tx),
+            (0x10, "TxPDO Toggle", BOOLEAN, 1, tx),
+            (0x11, "Value", INTEGER16, 16, tx),
+        ];
+        let name = format!("AI Inputs Ch.{n}");
+        d.describe_record(0x6000 + 0x10 * ch, &name, RECORD, 0, READ, &inputs);
+        let settings = [
+            (0x02, "Presentation", BIT3, 3, READ_WRITE),
+            (0x06, "Enable filter", BOOLEAN, 1, READ_WRITE),
+            (0x15, "Filter settings", UNSIGNED16, 16, READ_WRITE),
+        ];
+        let name = format!("AI Settings Ch.{n}");
+        d.describe_record(0x8000 + 0x10 * ch, &name, RECORD, 0, READ, &settings);
+    }
 }
 
 #[cfg(test)]

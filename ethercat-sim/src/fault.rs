@@ -40,3 +40,19 @@ impl Faults {
         self.refused.retain(|(s, _)| *s != state);
     }
 }
+
+/// How a simulated SubDevice's CoE server misanswers the SDO information service, for tests
+/// of a MainDevice that reads object names ([`Device::set_sdo_info_fault`](crate::Device::set_sdo_info_fault)).
+/// SDO uploads and downloads are answered as before.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SdoInfoFault {
+    /// Every SDO information request is answered with an SDO Info Error (opcode 0x07, abort
+    /// code 0x05040001, "command specifier not valid or unknown"), as by a device without the
+    /// service.
+    Refused,
+    /// The reply's mailbox header states more bytes than the input mailbox holds.
+    Oversized,
+    /// The reply is a fragment that says more follow, and every time the MainDevice empties
+    /// the input mailbox another one arrives, without end.
+    EndlessFragments,
+}

@@ -6,8 +6,9 @@
 //!   (busy timing included), AL state machine, SyncManagers, FMMUs and distributed clocks
 //!   (a local clock per device that drifts, seeded per bus, its time control loop and its
 //!   SYNC0 output: [`SimBus::with_clock_seed`], [`Sync0`]); the EL3004 with a CoE mailbox
-//!   (expedited SDO upload and download, normal upload of its device name 0x1008) through
-//!   which ethercrab reads its PDO assignment; and a Kollmorgen AKD servo drive (order name
+//!   (expedited SDO upload and download, normal upload of its device name 0x1008, the SDO
+//!   information service with its objects' names and data types) through which ethercrab
+//!   reads its PDO assignment; and a Kollmorgen AKD servo drive (order name
 //!   `AKD`, alias `servo`; `Device::akd`), a CiA 402 drive over CoE with its state machine,
 //!   cyclic synchronous position and velocity, homing on the current position, a motor model
 //!   and a following error window.
@@ -68,10 +69,12 @@
 //!
 //! Faults for tests ([`SimBus`]): a lost link (the device and the ring behind it stop
 //! answering), a power cycle (back in INIT, unaddressed), a tripped SyncManager watchdog
-//! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change.
+//! (SAFE-OP, AL status code 0x001B), a wrong identity, a refused state change; and, on a
+//! device before it goes on the bus, a CoE server that misanswers the SDO information service
+//! ([`SdoInfoFault`], [`Device::set_sdo_info_fault`]).
 //!
-//! Not simulated: mailbox services other than expedited SDO transfers and normal uploads
-//! (segmented SDOs, SDO information, FoE, emergencies), the slower state changes of
+//! Not simulated: mailbox services other than expedited SDO transfers, normal uploads and the
+//! SDO information service (segmented SDOs, FoE, emergencies), the slower state changes of
 //! terminals with a microcontroller, SYNC1 signals, bit-granular FMMUs, watchdog timing (a
 //! test trips the watchdog), line errors (the RX error counters 0x0300-0x0307 count nothing;
 //! a write clears them, as on an ESC), and EEPROM contents the captures do not hold (see
@@ -94,6 +97,7 @@ pub use datagram::{Command, Datagram, ETHERTYPE, Malformed};
 pub use dc::{HOP_NS, Sync0};
 pub use device::Device;
 pub use esc::EscInfo;
+pub use fault::SdoInfoFault;
 pub use sii::SiiSyncManager;
 pub use transport::inproc;
 #[cfg(target_os = "linux")]

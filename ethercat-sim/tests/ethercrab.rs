@@ -260,3 +260,61 @@ fn an_sdo_write_to_the_el3004_changes_its_pdo_assignment() {
     let group = block_on(group.into_op(&md)).unwrap();
     assert_eq!(group.subdevice(&md, 1).unwrap().inputs_raw().len(), 8);
 }
+
+#[test]
+fn ethercrab_lists_the_object_dictionaries_through_the_sdo_information_service() {
+    // ethercrab gathers an object list in a 128 KiB buffer and returns it in another, on the
+    // stack: more than a test thread has in a debug build.
+    std::thread::Builder::new()
+        .stack_size(16 << 20)
+        .spawn(list_the_object_dictionaries)
+        .unwrap()
+        .join()
+        .unwrap();
+}
+
+fn list_the_object_dictionaries() {
+    use ethercrab::ObjectDescriptionListQuery as List;
+    let (tx, rx, pdu_loop) = storage!();
+    let bus = SimBus::new(vec![Device::ek1100(), Device::el3004(), Device::akd()]);
+    let _driver = inproc::spawn(tx, rx, bus.clone()).unwrap();
+    let md = maindevice(pdu_loop, timeouts());
+    let group = block_on(md.init_single_group::<8, 64>(ethercrab::std::ethercat_now)).unwrap();
+    let ai = group.subdevice(&md, 1).unwrap();
+    let all = block_on(ai.sdo_info_object_description_list(List::All))
+        .unwrap()
+        .unwrap();
+    for index in [0x1008, 0x1018, 0x1C13, 0x1A06, 0x6000, 0x6030, 0x8030] {
+        assert!(all.contains(&index), "{index:#06x} in {all:x?}");
+    }
+    assert!(all.windows(2).all(|w| w[0] < w[1]), "ascending, once each");
+    let inputs = block_on(ai.sdo_info_object_description_list(List::TxPdoMappable))
+        .unwrap()
+        .unwrap();
+    assert_eq!(inputs.as_slice(), [0x6000, 0x6010, 0x6020, 0x6030]);
+    let counts = block_on(ai.sdo_info_object_quantities()).unwrap().unwrap();
+    assert_eq!(
+        (
+            counts.all as usize,
+            counts.tx_pdo_mappable,
+            counts.rx_pdo_mappable
+        ),
+        (all.len(), 4, 0)
+    );
+    // The drive: its CiA 402 process data objects are mappable each way.
+    let drive = group.subdevice(&md, 2).unwrap();
+    let outputs = block_on(drive.sdo_info_object_description_list(List::RxPdoMappable))
+        .unwrap()
+        .unwrap();
+    assert_eq!(outputs.as_slice(), [0x6040, 0x6060, 0x607A, 0x60FF]);
+    let inputs = block_on(drive.sdo_info_object_description_list(List::TxPdoMappable))
+        .unwrap()
+        .unwrap();
+    assert!(
+        inputs.contains(&0x6041) && inputs.contains(&0x60F4),
+        "{inputs:x?}"
+    );
+    // SDO uploads still work after it.
+    let product: u32 = block_on(drive.sdo_read(0x1018, 2)).unwrap();
+    assert_eq!(product, 0x0041_4B44);
+}

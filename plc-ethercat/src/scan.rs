@@ -5,9 +5,19 @@
 //! bus description ([`plc_rules::bus::scan::describe`]) whose layout is the one the bus comes
 //! up with.
 //!
+//! Where a CoE SubDevice's EEPROM does not name a mapped entry, the scan reads the entry's
+//! name and data type from the device's object dictionary through the SDO information service
+//! (ETG.1000.6 §5.6.3, Get Entry Description; Get Object Description for an entry without a
+//! name of its own): a drive's `x6040_00` becomes `controlword` (UINT), an EL3004's `x6000_11`
+//! `value_1` (INT). A device that refuses the service, does not answer it in time, or answers
+//! it in a way that breaks the protocol keeps the `xIIII_SS` names (a warning in the log says
+//! why); see `coe_info.rs` for the exchange.
+//!
 //! Everything read is device data and is checked: the EEPROM is read category by category up
 //! to its end marker within the size it states (at most 128 KiB, [`MAX_CATEGORIES`]
 //! categories), PDO counts are capped, and bad data is a [`ScanError`] naming the device.
+//! Object descriptions are bounded the same way (timeouts, fragments, lengths), and bad ones
+//! only cost the names.
 //!
 //! ```
 //! use ethercat_sim::{Device, SimBus};
@@ -32,6 +42,9 @@ use plc_rules::bus::scan::{CoeAssignment, ScannedDevice, describe, process_data_
 use plc_rules::bus::sii::{CATEGORIES_START, CategoryHeader, MAX_CATEGORIES, Sii};
 use plc_rules::bus::{BusConfig, ConfigError, scan_file};
 use std::fmt;
+use std::time::Duration;
+
+mod coe_info;
 
 /// Most bytes read from one EEPROM: what 16-bit word addresses reach.
 const MAX_EEPROM_BYTES: usize = 2 * 0x1_0000;
@@ -105,7 +118,7 @@ impl std::error::Error for ScanError {}
 pub fn scan(transport: Transport, options: &Options) -> Result<ScannedBus, ScanError> {
     let (maindevice, driver, _) =
         super::transport::open(transport, options).map_err(ScanError::Bus)?;
-    let result = scan_group(&maindevice);
+    let result = scan_group(&maindevice, options.timeouts.mailbox_response);
     // SAFETY: every ethercrab call in `scan_group` was awaited to its end, so no frame is in
     // flight, and the group it made was dropped there.
     let _ = unsafe { maindevice.release_all() };
@@ -113,7 +126,11 @@ pub fn scan(transport: Transport, options: &Options) -> Result<ScannedBus, ScanE
     result
 }
 
-fn scan_group(md: &MainDevice<'static>) -> Result<ScannedBus, ScanError> {
+/// The scan itself; `mailbox_timeout` bounds each wait for an object description.
+fn scan_group(
+    md: &MainDevice<'static>,
+    mailbox_timeout: Duration,
+) -> Result<ScannedBus, ScanError> {
     let group =
         block_on(md.init_single_group::<MAX_SUBDEVICES, MAX_PDI>(ethercrab::std::ethercat_now))
             .map_err(|error| {
@@ -137,7 +154,16 @@ fn scan_group(md: &MainDevice<'static>) -> Result<ScannedBus, ScanError> {
             let sii = Sii::parse(&image).map_err(|e| fail(e.to_string()))?;
             let device = if sii.has_coe() {
                 let assigned = block_on(read_assignment(&sd, &sii)).map_err(fail)?;
-                ScannedDevice::from_coe(&sii, &assigned)
+                let mut device = ScannedDevice::from_coe(&sii, &assigned);
+                // After ethercrab's SDO uploads of this device (see `coe_info` on the
+                // mailbox counter).
+                block_on(name_from_dictionary(
+                    &sd,
+                    &sii,
+                    &mut device,
+                    mailbox_timeout,
+                ));
+                device
             } else {
                 ScannedDevice::from_sii(&sii)
             };
@@ -156,6 +182,40 @@ fn scan_group(md: &MainDevice<'static>) -> Result<ScannedBus, ScanError> {
         eeproms,
         bus,
     })
+}
+
+/// Names and types the entries of `device` its EEPROM does not name from the device's object
+/// dictionary (SDO information service, [`coe_info`]). Asked regardless of the EEPROM's "SDO
+/// information" bit (General category, CoE details bit 1), which is not a reliable sign: the
+/// AKD's EEPROM clears it, and the simulated AKD (like, as far as ethercrab's captures of a real
+/// one suggest, the real drive) answers the service. A device without the service answers
+/// with an error, or not at all within `timeout`, and is not asked again; either way its
+/// entries keep the `xIIII_SS` names, with a warning in the log.
+async fn name_from_dictionary(
+    sd: &SubDeviceRef<'_, &SubDevice>,
+    sii: &Sii,
+    device: &mut ScannedDevice,
+    timeout: Duration,
+) {
+    if device
+        .entries
+        .iter()
+        .all(|e| e.name.is_some() || e.index == 0)
+    {
+        return;
+    }
+    let why = match coe_info::EscMailbox::new(sd, sii, timeout).await {
+        Ok(mut mailbox) => coe_info::name_entries(&mut mailbox, &mut device.entries).await,
+        Err(why) => Some(why),
+    };
+    if let Some(why) = why {
+        log::warn!(
+            target: "plc_io::ethercat",
+            "scan: {}: no object names from its CoE object dictionary ({why}); unnamed entries \
+             are named by object index",
+            sd.name()
+        );
+    }
 }
 
 /// Reads `buf.len()` bytes of the EEPROM from byte `at` (even).

@@ -1,5 +1,6 @@
 //! `plc_io::ethercat::scan` on the simulated bus: real ethercrab brings simulated terminals to
-//! PRE-OP, the scan reads their EEPROMs (and the EL3004's CoE objects), and the description it
+//! PRE-OP, the scan reads their EEPROMs (and the EL3004's and the drive's CoE objects, their
+//! names through the SDO information service), and the description it
 //! makes matches the hand-written one and the terminals' data sheets, reads back through
 //! `BusConfig`, and brings the same bus to OP.
 
@@ -38,16 +39,6 @@ fn tensile_tester_sim() -> Vec<Device> {
     ]
 }
 
-/// The scanned drive's entries named and typed as the ready description's (the CiA 402
-/// object names and data types the tensile tester's file uses), as a user edits the scan.
-fn crosshead(mut d: DeviceConfig) -> DeviceConfig {
-    for (e, ready) in d.entries.iter_mut().zip(devices::akd("").entries) {
-        e.name = ready.name;
-        e.iec_type = ready.iec_type;
-    }
-    d
-}
-
 /// An entry without its name, to compare entries names aside.
 fn unnamed(e: &PdoEntry) -> (PdoDirection, u32, String, u8) {
     (e.direction, e.bits, e.iec_type.clone(), e.sm)
@@ -80,9 +71,9 @@ fn a_scan_of_the_tensile_tester_bus_reproduces_its_devices_identities_and_entrie
     // The file groups the EL1004's inputs and the EL2889's outputs into one word each; grouped
     // the same way, the scanned entries are the file's, names aside.
     let mut grouped = scan.bus.clone();
-    // The drive's EEPROM types its mode BYTE and its error code WORD; the file gives the
-    // CiA 402 types (SINT, UINT), as a user edits the scan.
-    grouped.devices[4] = crosshead(grouped.devices[4].clone());
+    // The drive is named and typed from its CiA 402 object dictionary (the SDO information
+    // service) as its ready description and the file name it.
+    assert_eq!(grouped.devices[4].entries, devices::akd("").entries);
     for (got, want) in grouped.devices.iter_mut().zip(&file.devices) {
         if let [only] = want.entries.as_slice()
             && got.entries.len() > 1
@@ -183,9 +174,11 @@ fn the_el3004_has_four_channels_of_status_and_value_from_its_coe_objects() {
     assert_eq!(layout.devices[1].input_bytes, 16);
     for ch in 0..4u16 {
         let object = 0x6000 + 0x10 * ch;
+        // Named from the terminal's object dictionary: 0x60n0:11 "Value", INTEGER16.
         let value = layout
-            .entry("el3004", &format!("x{object:04x}_11"))
+            .entry("el3004", &format!("value_{}", ch + 1))
             .unwrap();
+        assert_eq!(value.iec_type, plc_core::IecType::Int);
         assert_eq!(
             (value.bit_offset, value.bits),
             (32 * ch as usize + 16, 16),
@@ -312,7 +305,6 @@ fn renamed_for_the_tensile_tester(mut bus: BusConfig) -> BusConfig {
     {
         e.name = name.into();
     }
-    bus.devices[4] = crosshead(bus.devices[4].clone());
     bus
 }
 

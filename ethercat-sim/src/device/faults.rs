@@ -15,6 +15,8 @@ impl Device {
         self.mem = fresh.mem;
         self.eeprom = fresh.eeprom;
         self.coe.clone_from(&self.coe_at_power_on);
+        self.mailbox_queue.clear();
+        self.endless_fragments = None;
         if let Some(drive) = self.servo.as_deref_mut() {
             *drive = super::servo::Drive::default();
         }

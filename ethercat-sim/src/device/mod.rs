@@ -53,6 +53,14 @@ pub struct Device {
     microcontroller: bool,
     /// The firmware of a CiA 402 drive, run on each process-data exchange (see [`servo`]).
     servo: Option<Box<servo::Drive>>,
+    /// The fragments of an SDO information reply still to go into the input mailbox, each as
+    /// soon as the MainDevice has read the one before.
+    mailbox_queue: std::collections::VecDeque<Vec<u8>>,
+    /// How the SDO information service is misanswered, for tests.
+    sdo_info_fault: Option<crate::fault::SdoInfoFault>,
+    /// While an endless reply runs (`SdoInfoFault::EndlessFragments`): the count of
+    /// fragments its next fragment claims are left.
+    endless_fragments: Option<u16>,
 }
 
 impl Device {
@@ -86,6 +94,9 @@ impl Device {
             coe_at_power_on: None,
             microcontroller: false,
             servo: None,
+            mailbox_queue: Default::default(),
+            sdo_info_fault: None,
+            endless_fragments: None,
         };
         d.load_from_eeprom();
         d.set_u16(reg::AL_CONTROL, al::INIT as u16);

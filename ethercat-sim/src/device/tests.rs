@@ -108,3 +108,87 @@ fn an_fmmu_reads_back_as_its_fields() {
     };
     assert_eq!(d.fmmus(), [expected]);
 }
+
+/// Configures the EL3004's mailboxes as a MainDevice does (SM0 0x1000 128 bytes written by
+/// the MainDevice, SM1 at 0x1080 of `in_len` bytes read by it), in PRE-OP.
+fn el3004_with_mailboxes(in_len: u16) -> Device {
+    let mut d = Device::el3004();
+    let mut sm = |i: usize, start: u16, len: u16, control: u8| {
+        let mut r = start.to_le_bytes().to_vec();
+        r.extend_from_slice(&len.to_le_bytes());
+        r.extend_from_slice(&[control, 0, 1, 0]);
+        d.write(reg::SM0 + 8 * i, &r, 0);
+    };
+    sm(0, 0x1000, 128, 0x26);
+    sm(1, 0x1080, in_len, 0x22);
+    d
+}
+
+/// Writes an SDO information request (`opcode`, `data`) with mailbox counter 5.
+fn info_request(d: &mut Device, opcode: u8, data: &[u8]) {
+    let mut frame = vec![0u8; 128];
+    frame[..2].copy_from_slice(&(6 + data.len() as u16).to_le_bytes());
+    frame[5] = 0x53;
+    frame[6..8].copy_from_slice(&0x8000u16.to_le_bytes());
+    frame[8] = opcode;
+    frame[12..12 + data.len()].copy_from_slice(data);
+    d.write(0x1000, &frame, 0);
+}
+
+/// Reads the whole input mailbox if it is full.
+fn take_reply(d: &mut Device, len: usize) -> Option<Vec<u8>> {
+    let mut status = [0u8];
+    d.read(reg::SM0 + 8 + 5, &mut status, 0);
+    (status[0] & 0x08 != 0).then(|| {
+        let mut out = vec![0u8; len];
+        d.read(0x1080, &mut out, 0);
+        out
+    })
+}
+
+#[test]
+fn an_sdo_information_answer_longer_than_the_mailbox_comes_in_fragments_one_per_read() {
+    let mut d = el3004_with_mailboxes(16);
+    info_request(&mut d, 0x01, &[1, 0]); // Get OD List, all objects
+    let mut data = Vec::new();
+    let mut lefts = Vec::new();
+    while let Some(r) = take_reply(&mut d, 16) {
+        let len = u16::from_le_bytes([r[0], r[1]]) as usize;
+        assert!(len <= 10);
+        assert_eq!(r[5], 0x53, "CoE, the request's counter");
+        assert_eq!(r[8] & 0x7F, 0x02);
+        let left = u16::from_le_bytes([r[10], r[11]]);
+        assert_eq!(r[8] & 0x80 != 0, left > 0, "incomplete until the last");
+        lefts.push(left);
+        data.extend_from_slice(&r[12..6 + len]);
+        assert!(lefts.len() < 100);
+    }
+    assert!(lefts.len() > 3);
+    assert!(lefts.windows(2).all(|w| w[1] + 1 == w[0]) && lefts.last() == Some(&0));
+    assert_eq!(data[..2], [1, 0], "the list type, then the indexes");
+    let indexes: Vec<u16> = data[2..]
+        .chunks(2)
+        .map(|c| u16::from_le_bytes([c[0], c[1]]))
+        .collect();
+    assert_eq!(indexes[..2], [0x1008, 0x1018]);
+    assert!(indexes.contains(&0x6030));
+    // A new request drops what was left of the old answer.
+    info_request(&mut d, 0x01, &[1, 0]);
+    take_reply(&mut d, 16).unwrap();
+    info_request(&mut d, 0x03, &[0x00, 0x60]); // Get Object Description 0x6000
+    let r = take_reply(&mut d, 16).unwrap();
+    assert_eq!((r[8], &r[12..16]), (0x84, &[0x00, 0x60, 0, 0][..]));
+}
+
+#[test]
+fn a_refusing_device_answers_sdo_information_with_an_info_error_and_uploads_as_before() {
+    let mut d = el3004_with_mailboxes(128);
+    d.set_sdo_info_fault(Some(crate::SdoInfoFault::Refused));
+    info_request(&mut d, 0x05, &[0x00, 0x60, 0x11, 0]);
+    let r = take_reply(&mut d, 128).unwrap();
+    assert_eq!(
+        (r[8], &r[12..16]),
+        (0x07, &0x0504_0001u32.to_le_bytes()[..])
+    );
+    assert_eq!(take_reply(&mut d, 128), None);
+}

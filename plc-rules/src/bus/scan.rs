@@ -6,8 +6,10 @@
 //! 0x1C1n assign to SyncManager n (and their mapping objects 0x16xx/0x1Axx); one without gets
 //! the EEPROM's TxPDOs and RxPDOs, each on the SyncManager it names. Within a direction,
 //! SyncManagers follow in index order and entries in PDO order. Names follow
-//! [`naming`](super::naming); an entry's type comes from its EEPROM data type where the EEPROM
-//! has one and fits, else from its width (see [`iec_type`]).
+//! [`naming`](super::naming); an entry's type comes from its CoE data type where the EEPROM (or,
+//! for an entry the EEPROM does not describe, the device's object dictionary, read by the scan
+//! through the SDO information service) has one that fits, else from its width (see
+//! [`iec_type`]).
 //!
 //! ```
 //! use plc_rules::bus::scan::{describe, ScannedDevice, ScannedEntry};
@@ -49,7 +51,8 @@ pub struct ScannedDevice {
 /// One PDO entry of a scanned SubDevice.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ScannedEntry {
-    /// Its name in the EEPROM, if the EEPROM names it.
+    /// Its name in the EEPROM, if the EEPROM names it; else the name the device's CoE object
+    /// dictionary gives the entry (or its object), if the scan could read one.
     pub name: Option<String>,
     /// Object index (0 for a gap).
     pub index: u16,
@@ -59,7 +62,8 @@ pub struct ScannedEntry {
     pub direction: PdoDirection,
     /// Bits in the process data.
     pub bits: u8,
-    /// CoE data type from the EEPROM (ETG.1000.6 table 63), if the EEPROM describes it.
+    /// CoE data type (ETG.1000.6 table 63) from the EEPROM, if the EEPROM describes the entry,
+    /// else from the device's object dictionary, if the scan could read it.
     pub data_type: Option<u8>,
     /// The SyncManager it is assigned to.
     pub sm: u8,
@@ -162,7 +166,8 @@ pub fn process_data_sms(sii: &Sii) -> impl Iterator<Item = (u8, SmUsage)> + '_ {
 /// the data type names one and the width fits it (UNSIGNED16 -> `UINT`, INTEGER16 -> `INT`,
 /// REAL32 -> `REAL`, BOOLEAN of 1 bit -> `BOOL`); otherwise, and for entries mapped over CoE
 /// (whose mapping has no data type), `BOOL` for 1 bit and the narrowest bit string that
-/// holds the bits (`BYTE`, `WORD`, `DWORD`, `LWORD`). `None` above 64 bits.
+/// holds the bits (`BYTE`, `WORD`, `DWORD`, `LWORD`). `None` above 64 bits. (A scan fills in
+/// the data type of an entry mapped over CoE from the device's object dictionary where it can.)
 pub fn iec_type(data_type: Option<u8>, bits: u8) -> Option<IecType> {
     let named = match data_type? {
         0x01 => IecType::Bool,
@@ -197,8 +202,9 @@ fn by_width(bits: u8) -> Option<IecType> {
     })
 }
 
-/// The name an entry the EEPROM does not name is given: `gap` for a gap (index 0), else its
-/// object as `x<index>_<sub-index>` in hexadecimal (`x6000_11`).
+/// The name an entry that neither the EEPROM nor the object dictionary names is given: `gap`
+/// for a gap (index 0), else its object as `x<index>_<sub-index>` in hexadecimal
+/// (`x6000_11`).
 fn unnamed(e: &ScannedEntry) -> String {
     if e.index == 0 {
         "gap".into()
@@ -358,6 +364,48 @@ mod tests {
                 ("value", 16, "INT", input),
                 ("gap", 6, "BYTE", input),
                 ("x6000_0f", 1, "BOOL", input),
+            ]
+        );
+    }
+
+    #[test]
+    fn names_and_types_from_the_object_dictionary_are_made_like_eeprom_ones() {
+        // What a scan fills in from Get Entry Description where the EEPROM names nothing: the
+        // EL3004's "Value" (INTEGER16) of two channels, a drive's "Modes of operation"
+        // (INTEGER8) and an entry the device refused to describe.
+        let entry = |name: Option<&str>, index, sub, bits, data_type| ScannedEntry {
+            name: name.map(str::to_owned),
+            index,
+            subindex: sub,
+            direction: PdoDirection::Input,
+            bits,
+            data_type,
+            sm: 3,
+        };
+        let d = ScannedDevice {
+            entries: vec![
+                entry(Some("Value"), 0x6000, 0x11, 16, Some(0x03)),
+                entry(Some("Value"), 0x6010, 0x11, 16, Some(0x03)),
+                entry(Some("Modes of operation"), 0x6060, 0, 8, Some(0x02)),
+                entry(Some("Limit 1"), 0x6000, 0x03, 2, Some(0x31)),
+                entry(None, 0x603f, 0, 16, None),
+            ],
+            ..ScannedDevice::from_sii(&sii())
+        };
+        let bus = describe(&[d]).unwrap();
+        let got: Vec<_> = bus.devices[0]
+            .entries
+            .iter()
+            .map(|e| (e.name.as_str(), e.iec_type.as_str()))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("value_1", "INT"),
+                ("value_2", "INT"),
+                ("modes_of_operation", "SINT"),
+                ("limit_1", "BYTE"),
+                ("x603f_00", "WORD"),
             ]
         );
     }

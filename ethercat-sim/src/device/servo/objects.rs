@@ -2,7 +2,7 @@
 //! and mappings ethercrab reads by SDO, and the CiA 402 objects the drive model reads and
 //! writes each cycle. Where each value comes from: `data/README.md` ("AKD").
 
-use crate::coe::Dictionary;
+use crate::coe::{ARRAY, Dictionary, READ, READ_WRITE, RECORD, RX_MAPPABLE, TX_MAPPABLE, deftype};
 
 /// 0x6040 controlword (u16, RxPDO).
 pub(crate) const CONTROLWORD: u16 = 0x6040;
@@ -86,7 +86,194 @@ pub(crate) fn akd(vendor: u32, product: u32, revision: u32, serial: u32) -> Dict
     assignment(&mut d, 0x1C12, 0x1600);
     assignment(&mut d, 0x1C13, 0x1A00);
     profile(&mut d);
+    descriptions(&mut d);
     d
+}
+
+/// The names and data types the SDO information service gives: CiA 402's object names and
+/// data types for the drive profile (0x603F-0x60FF, 0x6502), CiA 301's for the communication
+/// objects (0x1000-0x1018), ETG.1000.6's for the SyncManager objects (0x1C00-0x1C13); the
+/// PDO mapping objects after CiA 301's "RPDO/TPDO mapping parameter". See `data/README.md`.
+fn descriptions(d: &mut Dictionary) {
+    use deftype::*;
+    let (rx, tx) = (READ_WRITE | RX_MAPPABLE, READ | TX_MAPPABLE);
+    // Entries of records and arrays without names of their own: "SubIndex 001" ...
+    let sub_names = crate::coe::sub_names();
+    let sub_name = |i: u8| sub_names[usize::from(i) - 1].as_str();
+    d.describe_var(0x1000, "Device type", UNSIGNED32, 32, READ);
+    d.describe_var(
+        0x1008,
+        "Manufacturer device name",
+        VISIBLE_STRING,
+        8 * 3,
+        READ,
+    );
+    d.describe_var(
+        0x100A,
+        "Manufacturer software version",
+        VISIBLE_STRING,
+        8 * 14,
+        READ,
+    );
+    let identity = [
+        (1, "Vendor-ID", UNSIGNED32, 32, READ),
+        (2, "Product code", UNSIGNED32, 32, READ),
+        (3, "Revision number", UNSIGNED32, 32, READ),
+        (4, "Serial number", UNSIGNED32, 32, READ),
+    ];
+    d.describe_record(0x1018, "Identity object", RECORD, IDENTITY, READ, &identity);
+    let types: Vec<(u8, &str, u16, u16, u16)> = (1..=4u8)
+        .map(|i| (i, sub_name(i), UNSIGNED8, 8, READ))
+        .collect();
+    d.describe_record(
+        0x1C00,
+        "Sync manager communication type",
+        ARRAY,
+        UNSIGNED8,
+        READ,
+        &types,
+    );
+    let assign: Vec<(u8, &str, u16, u16, u16)> = (1..=4u8)
+        .map(|i| (i, sub_name(i), UNSIGNED16, 16, READ_WRITE))
+        .collect();
+    d.describe_record(
+        0x1C12,
+        "Sync manager 2 PDO assignment",
+        ARRAY,
+        UNSIGNED16,
+        READ_WRITE,
+        &assign,
+    );
+    d.describe_record(
+        0x1C13,
+        "Sync manager 3 PDO assignment",
+        ARRAY,
+        UNSIGNED16,
+        READ_WRITE,
+        &assign,
+    );
+    for (base, kind) in [
+        (0x1600u16, "RPDO"),
+        (0x1700, "RPDO"),
+        (0x1A00, "TPDO"),
+        (0x1B00, "TPDO"),
+    ] {
+        for offset in 0..0x100u16 {
+            let index = base + offset;
+            let subs: Vec<u8> = (1..=u8::MAX)
+                .take_while(|&s| d.get(index, s).is_some())
+                .collect();
+            if subs.is_empty() {
+                continue;
+            }
+            let access = if base & 0x0100 == 0 { READ_WRITE } else { READ };
+            let entries: Vec<(u8, &str, u16, u16, u16)> = subs
+                .iter()
+                .map(|&s| (s, sub_name(s), UNSIGNED32, 32, access))
+                .collect();
+            let name = format!("{kind} mapping parameter {:#06x}", index);
+            d.describe_record(index, &name, RECORD, PDO_MAPPING, access, &entries);
+        }
+    }
+    // CiA 402 drive profile.
+    let vars: [(u16, &str, u16, u16, u16); 21] = [
+        (ERROR_CODE, "Error code", UNSIGNED16, 16, tx),
+        (CONTROLWORD, "Controlword", UNSIGNED16, 16, rx),
+        (STATUSWORD, "Statusword", UNSIGNED16, 16, tx),
+        (0x605A, "Quick stop option code", INTEGER16, 16, READ),
+        (MODES_OF_OPERATION, "Modes of operation", INTEGER8, 8, rx),
+        (MODES_DISPLAY, "Modes of operation display", INTEGER8, 8, tx),
+        (
+            POSITION_INTERNAL,
+            "Position actual internal value",
+            INTEGER32,
+            32,
+            tx,
+        ),
+        (POSITION_ACTUAL, "Position actual value", INTEGER32, 32, tx),
+        (
+            FOLLOWING_ERROR_WINDOW,
+            "Following error window",
+            UNSIGNED32,
+            32,
+            READ_WRITE,
+        ),
+        (
+            FOLLOWING_ERROR_TIME_OUT,
+            "Following error time out",
+            UNSIGNED16,
+            16,
+            READ_WRITE,
+        ),
+        (VELOCITY_ACTUAL, "Velocity actual value", INTEGER32, 32, tx),
+        (TORQUE_ACTUAL, "Torque actual value", INTEGER16, 16, tx),
+        (TARGET_POSITION, "Target position", INTEGER32, 32, rx),
+        (HOME_OFFSET, "Home offset", INTEGER32, 32, READ_WRITE),
+        (
+            MAX_VELOCITY,
+            "Max profile velocity",
+            UNSIGNED32,
+            32,
+            READ_WRITE,
+        ),
+        (
+            QUICK_STOP_DECELERATION,
+            "Quick stop deceleration",
+            UNSIGNED32,
+            32,
+            READ_WRITE,
+        ),
+        (HOMING_METHOD, "Homing method", INTEGER8, 8, READ_WRITE),
+        (
+            MAX_ACCELERATION,
+            "Max acceleration",
+            UNSIGNED32,
+            32,
+            READ_WRITE,
+        ),
+        (
+            FOLLOWING_ERROR_ACTUAL,
+            "Following error actual value",
+            INTEGER32,
+            32,
+            tx,
+        ),
+        (TARGET_VELOCITY, "Target velocity", INTEGER32, 32, rx),
+        (0x6502, "Supported drive modes", UNSIGNED32, 32, READ),
+    ];
+    for (index, name, ty, bits, access) in vars {
+        d.describe_var(index, name, ty, bits, access);
+    }
+    let resolution = [
+        (1, "Encoder increments", UNSIGNED32, 32, READ),
+        (2, "Motor revolutions", UNSIGNED32, 32, READ),
+    ];
+    d.describe_record(
+        0x608F,
+        "Position encoder resolution",
+        ARRAY,
+        UNSIGNED32,
+        READ,
+        &resolution,
+    );
+    let period = [
+        (
+            1,
+            "Interpolation time period value",
+            UNSIGNED8,
+            8,
+            READ_WRITE,
+        ),
+        (2, "Interpolation time index", INTEGER8, 8, READ_WRITE),
+    ];
+    d.describe_record(
+        0x60C2,
+        "Interpolation time period",
+        RECORD,
+        0,
+        READ,
+        &period,
+    );
 }
 
 /// 0x1600-0x1603 and 0x1A00-0x1A03, freely mappable: 0x1600/0x1A00 preset to the image
