@@ -760,6 +760,61 @@ fn bus_show_prints_the_process_image_and_refuses_a_bad_file() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `plc bus show` lists the distributed clocks of a description whose devices take SYNC0.
+#[test]
+fn bus_show_lists_the_devices_sync0_and_shift() {
+    let dir = std::env::temp_dir().join(format!("plc-bus-show-dc-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("dc.toml");
+    let mut bus = plc_rules::bus::BusConfig {
+        devices: vec![
+            plc_rules::bus::devices::ek1100("coupler"),
+            plc_rules::bus::devices::el2004("lamps"),
+        ],
+    };
+    bus.devices[1].dc = Some(plc_rules::bus::DcConfig {
+        sync0: plc_rules::time::Time::from_millis(2),
+        shift: plc_rules::time::Time::from_micros(300),
+    });
+    std::fs::write(&file, bus.to_toml_string()).unwrap();
+    let o = plc(&["bus", "show", file.to_str().unwrap()]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let clocks: Vec<Vec<&str>> = text
+        .lines()
+        .skip_while(|l| *l != "distributed clocks:")
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert!(clocks.len() >= 3, "{text}");
+    assert_eq!(clocks[1], ["pos", "device", "sync0", "shift"], "{text}");
+    assert_eq!(clocks[2], ["1", "lamps", "2ms", "300us"], "{text}");
+}
+
+/// `plc bus scan --sim` names the entries a CoE device's EEPROM leaves unnamed from its object
+/// dictionary (SDO information service): the EL3004's values and the AKD's CiA 402 objects.
+#[test]
+fn bus_scan_names_coe_entries_from_the_object_dictionary() {
+    let o = plc(&["bus", "scan", "--sim", "EK1100,EL3004,AKD"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = stdout(&o);
+    let bus = plc_rules::bus::BusConfig::from_toml_str(&text).unwrap();
+    let value = &bus.devices[1].entries[9];
+    assert_eq!(
+        (value.name.as_str(), value.iec_type.as_str()),
+        ("value_1", "INT")
+    );
+    assert_eq!(
+        bus.devices[2].entries,
+        plc_rules::bus::devices::akd("").entries,
+        "{text}"
+    );
+    assert!(
+        !text.contains("name = \"x"),
+        "no entry named by its object index: {text}"
+    );
+}
+
 /// `plc bus scan --sim` scans a simulated bus in its own process: the TOML it prints is a bus
 /// description of those terminals that `BusConfig` reads, `--out` writes the same text (a
 /// symlink in its place is replaced, not followed) and `plc bus show` takes the file.

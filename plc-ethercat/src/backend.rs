@@ -19,10 +19,11 @@ use async_io::block_on;
 use ethercrab::MainDevice;
 use ethercrab::subdevice_group::{HasPdi, Op, SafeOp};
 use plc_core::GlobalMemory;
+use plc_runtime::CyclePhase;
 use plc_shm::BusState;
 use std::fmt;
 use std::marker::PhantomData;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 enum Stage {
     Op(Group<Op>),
@@ -41,6 +42,9 @@ struct Running {
     dc_devices: Vec<DcDevice>,
     /// When their system time differences are read next.
     dc_check: RecoveryTimer,
+    /// The description's SYNC0 shift: where the cycle's frame should pass the reference
+    /// clock after SYNC0 (the runtime's cycle follows it, [`EtherCatBackend::cycle_phase`]).
+    sync0_shift: Duration,
 }
 
 impl Running {
@@ -90,12 +94,17 @@ impl Running {
 /// DC time until every SubDevice is in OP, and each `exchange` is then one `tx_rx_dc`, which
 /// also distributes the reference clock's time. [`BusStatus::dc`] tells the largest system
 /// time difference and the cycle's offset to SYNC0; [`check_period`](Self::check_period)
-/// the cycle periods SYNC0 allows. Recovery does not configure SYNC0 again: a DC SubDevice
-/// restarted after a power loss that needs SYNC0 for OP stays out of OP and is named in
-/// [`problems`](Self::problems); restart the program to configure it again.
+/// the cycle periods SYNC0 allows; [`cycle_phase`](Self::cycle_phase) where the frame fell
+/// against SYNC0, which `plc_runtime::Runtime` follows so the cycle runs on the DC time.
+/// Recovery gives a DC SubDevice that restarted after a power loss its clock offset and SYNC0
+/// again in PRE-OP (the description's period, starting 100 ms later on a whole period of
+/// the reference clock's time, as at start-up) before it goes on to SAFE-OP and OP. Not
+/// recovered: a restart of the reference clock itself (the first SubDevice with a DC unit),
+/// whose time starts afresh; the other clocks follow it at their loops' pace.
 ///
-/// Implements `plc_runtime::IoBackend` (`start`, `exchange`, `fault`, `stop`) for
-/// `plc_runtime::Runtime` (`plc_io::Runtime` in a control program).
+/// Implements `plc_runtime::IoBackend` (`start`, `exchange`, `fault`, `stop`,
+/// `check_period`, `cycle_phase`) for `plc_runtime::Runtime` (`plc_io::Runtime` in a
+/// control program).
 ///
 /// Each started backend leaks ethercrab's frame storage (about 20 KiB): ethercrab needs it
 /// `'static`, and a stopped bus may still see late frames.
@@ -110,6 +119,8 @@ pub struct EtherCatBackend<T> {
     status: BusStatus,
     running: Option<Running>,
     problems: Vec<String>,
+    /// The last exchange's phase against SYNC0 (`None` when it measured none).
+    phase: Option<CyclePhase>,
     _gm: PhantomData<fn(&mut T)>,
 }
 
@@ -153,6 +164,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             status: BusStatus::stopped(expected_wkc, 0),
             running: None,
             problems: Vec::new(),
+            phase: None,
             _gm: PhantomData,
         })
     }
@@ -203,8 +215,13 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             recovery: RecoveryTimer::new(self.options.recovery_interval),
             dc_devices: Vec::new(),
             dc_check: RecoveryTimer::new(self.options.dc_check_interval),
+            sync0_shift: Duration::ZERO,
         };
         let dc = self.config.dc();
+        if let Some(dc) = dc {
+            // Validation keeps the shift within 0..sync0.
+            running.sync0_shift = Duration::from_nanos(dc.shift.as_nanos().max(0) as u64);
+        }
         let up = bring_up(
             &running.maindevice,
             &self.config.devices,
@@ -215,9 +232,25 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         match up {
             Ok(Up {
                 group,
-                configured,
+                mut configured,
                 dc_devices,
             }) => {
+                // What recovery needs to set up a restarted DC device's SYNC0 again.
+                let recorded = match dc {
+                    Some(dc) if !dc_devices.is_empty() => super::dc::record_for_recovery(
+                        &group,
+                        &running.maindevice,
+                        &dc_devices,
+                        dc,
+                        &mut configured,
+                    ),
+                    _ => Ok(()),
+                };
+                if let Err(e) = recorded {
+                    drop(group);
+                    running.release();
+                    return Err(e);
+                }
                 let dc_status = dc.filter(|_| !dc_devices.is_empty()).map(|dc| DcStatus {
                     // Validation keeps sync0 within u32 nanoseconds.
                     sync0_period_ns: u32::try_from(dc.sync0.as_nanos()).unwrap_or(u32::MAX),
@@ -250,6 +283,8 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
 
     /// One cycle: see the type's documentation.
     pub fn exchange(&mut self, gm: &mut T) -> BusStatus {
+        // Only this exchange's measurement counts: an old one would be corrected for twice.
+        self.phase = None;
         let Some(running) = self.running.as_mut() else {
             self.status.inputs_valid = false;
             self.status.bus_fault = true;
@@ -271,6 +306,10 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
         ) {
             dc.sync0_offset_ns =
                 u64::try_from(cycle.cycle_start_offset.as_nanos()).unwrap_or(u64::MAX);
+            self.phase = Some(CyclePhase {
+                offset: cycle.cycle_start_offset,
+                target: running.sync0_shift,
+            });
             if running.dc_check.due(Instant::now()) {
                 dc.max_time_difference_ns = largest_difference(md, &running.dc_devices);
             }
@@ -323,6 +362,17 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
             self.set_problems(problems);
         }
         self.status
+    }
+
+    /// Where the last exchange's frame passed the DC reference clock after SYNC0
+    /// ([`CyclePhase::offset`], ethercrab's `CycleInfo::cycle_start_offset`) and where it
+    /// should pass (the description's `shift`), on a bus with SYNC0 whose last exchange came
+    /// back; `None` otherwise. `plc_runtime::Runtime` moves its next deadline towards it each
+    /// cycle (`IoBackend::cycle_phase`), so the cycle runs on the DC time: its frame leaves
+    /// `shift` after each SYNC0 pulse, give or take the machine's jitter, instead of wandering
+    /// through the SYNC0 period as the host's and the reference clock's crystals differ.
+    pub fn cycle_phase(&self) -> Option<CyclePhase> {
+        self.phase
     }
 
     /// What is wrong with the bus now, one line per SubDevice that is not in OP (naming its
@@ -378,6 +428,7 @@ impl<T: GlobalMemory> EtherCatBackend<T> {
     /// diagnostic tool): a program that panicked leaves the bus in its safe state rather
     /// than looking like a clean shutdown. Safe to call twice.
     pub fn stop(&mut self) {
+        self.phase = None;
         let Some(mut running) = self.running.take() else {
             return;
         };

@@ -10,10 +10,11 @@
 
 use super::config::{DcConfig, DeviceConfig};
 use super::error::{EtherCatError, bus};
-use super::group::Typed;
+use super::group::{Group, Typed};
+use super::recovery::{Configured, Sync0Setup};
 use async_io::block_on;
 use ethercrab::error::Error as CrabError;
-use ethercrab::subdevice_group::{DcConfiguration, HasDc, NoDc, PreOp, PreOpPdi};
+use ethercrab::subdevice_group::{DcConfiguration, HasDc, NoDc, Op, PreOp, PreOpPdi};
 use ethercrab::{DcSupport, DcSync, MainDevice, RegisterAddress};
 use std::time::Duration;
 
@@ -102,6 +103,45 @@ fn configuration(dc: DcConfig) -> DcConfiguration {
         sync0_period: ns(dc.sync0),
         sync0_shift: ns(dc.shift),
     }
+}
+
+/// Records on each DC device's entry of `configured` (ring order) its clock and SYNC0
+/// settings, so recovery can give them again to one that lost its power (see
+/// `recovery::sync0`): the reference clock (ethercrab's, the first SubDevice with a DC
+/// unit), the SYNC0 period and start delay used at start-up, and the propagation delay
+/// ethercrab measured.
+pub(super) fn record_for_recovery(
+    group: &Group<Op>,
+    md: &MainDevice<'static>,
+    dc_devices: &[DcDevice],
+    dc: DcConfig,
+    configured: &mut [Configured],
+) -> Result<(), EtherCatError> {
+    let Some(reference) = group
+        .subdevices(md)
+        .find(|sd| sd.dc_support().any())
+        .map(|sd| sd.configured_address())
+    else {
+        // check_units found DC units, so ethercrab found a reference: not reached.
+        return Ok(());
+    };
+    // Validation keeps sync0 within u32 nanoseconds.
+    let period_ns = u32::try_from(configuration(dc).sync0_period.as_nanos()).unwrap_or(u32::MAX);
+    for d in dc_devices {
+        let Some(entry) = configured.get_mut(d.position) else {
+            continue;
+        };
+        let setup = block_on(Sync0Setup::read(
+            md,
+            d.address,
+            reference,
+            period_ns,
+            START_DELAY,
+        ))
+        .map_err(bus("reading the propagation delay of the DC SubDevices"))?;
+        entry.sync0 = Some(setup);
+    }
+    Ok(())
 }
 
 /// The largest system time difference (register 0x092C, magnitude in ns) of `devices`, or

@@ -3,7 +3,7 @@
 use super::backend::EtherCatBackend;
 use super::error::EtherCatError;
 use plc_core::GlobalMemory;
-use plc_runtime::{IoBackend, IoError, IoStatus};
+use plc_runtime::{CyclePhase, IoBackend, IoError, IoStatus};
 use plc_shm::BusClocks;
 
 impl From<EtherCatError> for IoError {
@@ -37,6 +37,10 @@ impl<T: GlobalMemory> IoBackend<T> for EtherCatBackend<T> {
 
     fn check_period(&self, period: std::time::Duration) -> Result<(), IoError> {
         EtherCatBackend::check_period(self, period).map_err(IoError::from)
+    }
+
+    fn cycle_phase(&self) -> Option<CyclePhase> {
+        EtherCatBackend::cycle_phase(self)
     }
 }
 

@@ -14,8 +14,10 @@
 //!    after the identities and process data sizes are checked (`bringup`); each `exchange` is
 //!    one `tx_rx` with a working-counter check (`status`), or on a bus with distributed clocks
 //!    (devices with `dc` in the description) SYNC0 configured in PRE-OP and one `tx_rx_dc`
-//!    per exchange (`dc`, `group`), moving the linked variables
-//!    (`process_data`) and bringing SubDevices back to OP after a fault (`recovery`). The
+//!    per exchange (`dc`, `group`), whose phase against SYNC0 the runtime's cycle follows
+//!    (`EtherCatBackend::cycle_phase`), moving the linked variables (`process_data`) and
+//!    bringing SubDevices back to OP after a fault, a restarted DC SubDevice with its clock
+//!    and SYNC0 set up again (`recovery`). The
 //!    transport (`transport`) is a raw socket on a NIC ([`Transport::Interface`]) or anything
 //!    that drives ethercrab's `PduTx`/`PduRx`, such as the in-process simulated bus of
 //!    `ethercat-sim` ([`Transport::custom`]). Settings are [`Options`], failures to start

@@ -31,6 +31,6 @@ pub use plc_shm as shm;
 pub use plc_runtime::probe;
 #[cfg(feature = "runtime")]
 pub use plc_runtime::{
-    BusState, Context, CycleStats, IoBackend, IoError, IoStatus, NoIo, Runtime, RuntimeBuilder,
-    RuntimeError, StopHandle, zero_outputs,
+    BusState, Context, CyclePhase, CycleStats, IoBackend, IoError, IoStatus, NoIo, Runtime,
+    RuntimeBuilder, RuntimeError, StopHandle, zero_outputs,
 };

@@ -60,6 +60,49 @@ pub trait IoBackend<T> {
         let _ = period;
         Ok(())
     }
+    /// Where the last [`exchange`](Self::exchange) fell against a clock the I/O keeps of
+    /// its own, when it keeps one and that exchange measured it: `None` (the default) leaves
+    /// the cycle on the runtime's monotonic clock alone. EtherCAT with distributed clocks
+    /// answers with where its frame passed the reference clock after SYNC0 and where it
+    /// should have (the shift), which ethercrab's `tx_rx_dc` measures; the runtime then moves
+    /// its next deadlines a little at a time until the two meet, so the cycle follows the
+    /// bus's time instead of drifting against it (see [`CyclePhase`]).
+    ///
+    /// Called once per cycle, right after the exchange; answer `None` for a cycle whose
+    /// exchange measured nothing (a lost frame), never an old measurement, which would be
+    /// corrected for twice.
+    fn cycle_phase(&self) -> Option<CyclePhase> {
+        None
+    }
+}
+
+/// Where a cycle's exchange fell against the I/O's own clock ([`IoBackend::cycle_phase`]):
+/// `offset` after that clock's last tick, where it should be `target` after one. Both are
+/// taken modulo the cycle's period (the I/O's ticks, e.g. SYNC0, come every whole number of
+/// periods), so only the difference between them counts.
+///
+/// The runtime corrects its next deadline by a quarter of that difference, at most a
+/// sixteenth of the period per cycle (`schedule`'s documentation says why): a cycle then
+/// follows the I/O's clock within a few microseconds after a few dozen cycles, and a
+/// wrong or wild value moves one cycle's start by at most a sixteenth of the period.
+///
+/// ```
+/// use plc_runtime::CyclePhase;
+/// use std::time::Duration;
+/// // The frame passed the reference clock 300 us after SYNC0; it should pass at 250 us.
+/// let phase = CyclePhase {
+///     offset: Duration::from_micros(300),
+///     target: Duration::from_micros(250),
+/// };
+/// assert!(phase.offset > phase.target);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CyclePhase {
+    /// When the exchange met the I/O's clock, after its last tick (EtherCAT: when the frame
+    /// passed the DC reference clock, after the last SYNC0 pulse).
+    pub offset: std::time::Duration,
+    /// Where the I/O wants it (EtherCAT: the description's SYNC0 `shift`).
+    pub target: std::time::Duration,
 }
 
 /// No I/O: for programs that only talk through shared memory, and for tests.

@@ -110,7 +110,8 @@ where
 
     /// Cycles every period until a stop is asked for, `max_cycles` are done or the tick
     /// panics. A late cycle is followed at once by the next, timed from then: no burst of
-    /// catch-up cycles. The deadlines are absolute (`schedule`).
+    /// catch-up cycles. The deadlines are absolute (`schedule`), and follow the I/O's own
+    /// clock when it has one ([`IoBackend::cycle_phase`]).
     pub(super) fn repeat(
         &mut self,
         s: &mut RuntimeBuilder<T>,
@@ -120,10 +121,13 @@ where
         let mut start = monotonic_ns();
         while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
             let end = self.once(start, &mut *s.backend, tick)?;
+            // Where the exchange fell against the I/O's own clock (EtherCAT: SYNC0), if it
+            // keeps one: the next deadline moves a little towards it (`schedule`).
+            let phase = s.backend.cycle_phase();
             // A cycle that follows at once (period zero, or the last one overran) starts
             // where the last one ended: its report, a few nanoseconds, counts in its time, and
             // a cycle running flat out reads the clock once instead of twice.
-            start = if schedule.wait(end) {
+            start = if schedule.wait(end, phase) {
                 monotonic_ns()
             } else {
                 end

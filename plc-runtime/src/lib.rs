@@ -12,7 +12,7 @@ pub mod retain;
 mod schedule;
 mod stats;
 
-pub use backend::{IoBackend, IoError, IoStatus, NoIo};
+pub use backend::{CyclePhase, IoBackend, IoError, IoStatus, NoIo};
 pub use context::Context;
 pub use plc_shm::{BusState, CycleStats};
 
@@ -186,7 +186,9 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
 impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// The cycle period. Each cycle is due one period after the last one's deadline, an
     /// absolute time on the monotonic clock slept to with no timer slack; a late cycle is
-    /// followed at once, with no burst of catch-up cycles.
+    /// followed at once, with no burst of catch-up cycles. With an I/O that keeps a clock of
+    /// its own (EtherCAT with distributed clocks) the deadlines follow that clock: each moves
+    /// by at most a sixteenth of the period ([`IoBackend::cycle_phase`]).
     pub fn period(mut self, period: Duration) -> Self {
         self.period = period;
         self

@@ -1,6 +1,7 @@
 //! `plc bus show FILE`: the resolved process image of a bus description, the table a
 //! commissioning engineer checks against the wiring: each device in ring order with each PDO
-//! entry's direction, place (byte and bit in the device's input or output data), width and type.
+//! entry's direction, place (byte and bit in the device's input or output data), width and type;
+//! then, when devices take SYNC0, their distributed clocks (`dc`: SYNC0 period and shift).
 //!
 //! `plc bus scan --interface IFACE | --sim MODELS [--out FILE]`: a bus description read from
 //! the SubDevices themselves (`plc_ethercat::scan`).
@@ -105,11 +106,45 @@ pub fn table(bus: &BusConfig) -> String {
             ]);
         }
     }
-    let widths: Vec<usize> = (0..7)
+    let mut out = String::new();
+    aligned(&mut out, &rows);
+    out.push_str(
+        "\nbyte.bit: the place in the device's input or output data (each SyncManager starts on \
+         a byte).\n",
+    );
+    let clocks: Vec<[String; 4]> = bus
+        .devices
+        .iter()
+        .enumerate()
+        .filter_map(|(pos, d)| {
+            d.dc.map(|dc| {
+                [
+                    pos.to_string(),
+                    d.name.clone(),
+                    duration(dc.sync0),
+                    duration(dc.shift),
+                ]
+            })
+        })
+        .collect();
+    if !clocks.is_empty() {
+        out.push_str("\ndistributed clocks:\n");
+        let header = ["pos", "device", "sync0", "shift"].map(String::from);
+        aligned(&mut out, &[&[header][..], &clocks].concat());
+        out.push_str(
+            "\nsync0: the SYNC0 period; shift: when the cycle's frame reaches the devices after \
+             each pulse.\n",
+        );
+    }
+    out
+}
+
+/// `rows` as lines of columns, each as wide as its widest cell, two spaces apart.
+fn aligned<const N: usize>(out: &mut String, rows: &[[String; N]]) {
+    let widths: Vec<usize> = (0..N)
         .map(|c| rows.iter().map(|r| r[c].chars().count()).max().unwrap_or(0))
         .collect();
-    let mut out = String::new();
-    for r in &rows {
+    for r in rows {
         let line: Vec<String> = r
             .iter()
             .zip(&widths)
@@ -117,17 +152,23 @@ pub fn table(bus: &BusConfig) -> String {
             .collect();
         let _ = writeln!(out, "{}", line.join("  ").trim_end());
     }
-    out.push_str(
-        "\nbyte.bit: the place in the device's input or output data (each SyncManager starts on \
-         a byte).\n",
-    );
-    out
+}
+
+/// A duration as the bus description writes it: `1ms`, `250us` (the IEC literal without
+/// its `LTIME#`).
+fn duration(t: plc_rules::time::Time) -> String {
+    let literal = t.to_string();
+    match literal.split_once('#') {
+        Some((_, rest)) => rest.to_owned(),
+        None => literal,
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use plc_rules::IecType;
-    use plc_rules::bus::{BusConfig, PdoDirection, devices};
+    use plc_rules::bus::{BusConfig, DcConfig, PdoDirection, devices};
+    use plc_rules::time::Time;
 
     #[test]
     fn the_table_lists_each_entry_in_place() {
@@ -154,5 +195,45 @@ mod tests {
             lines[6],
             "2    lamps    output4            output     0.3       1     BOOL"
         );
+    }
+
+    #[test]
+    fn devices_with_dc_are_listed_with_their_sync0_and_shift() {
+        let dc = DcConfig {
+            sync0: Time::from_millis(1),
+            shift: Time::from_micros(250),
+        };
+        let mut bus = BusConfig {
+            devices: vec![
+                devices::ek1100("coupler"),
+                devices::el1004("di"),
+                devices::el2004("lamps"),
+            ],
+        };
+        assert!(
+            !super::table(&bus).contains("distributed clocks"),
+            "nothing about clocks without `dc`"
+        );
+        bus.devices[2].dc = Some(dc);
+        let t = super::table(&bus);
+        let clocks: Vec<&str> = t
+            .lines()
+            .skip_while(|l| *l != "distributed clocks:")
+            .collect();
+        assert_eq!(
+            clocks[..3],
+            [
+                "distributed clocks:",
+                "pos  device  sync0  shift",
+                "2    lamps   1ms    250us"
+            ],
+            "{t}"
+        );
+        assert!(clocks[4].starts_with("sync0: the SYNC0 period"), "{t}");
+        bus.devices[2].dc = Some(DcConfig {
+            shift: Time::ZERO,
+            ..dc
+        });
+        assert!(super::table(&bus).contains("2    lamps   1ms    0s"));
     }
 }

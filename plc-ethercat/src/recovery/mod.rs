@@ -3,9 +3,11 @@
 //! in words an operator can act on ([`describe`]).
 
 mod registers;
+mod sync0;
 
 pub(super) use registers::Configured;
 use registers::Outcome;
+pub(super) use sync0::Sync0Setup;
 
 use async_io::block_on;
 use ethercrab::MainDevice;

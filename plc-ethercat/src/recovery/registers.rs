@@ -12,16 +12,17 @@
 //!   EEPROM still holds the vendor and product found at start-up (a terminal swapped in is
 //!   reported, never given the old one's settings), write back the SyncManagers and FMMUs
 //!   ethercrab had configured (read from the device at start-up), and step it through PRE-OP
-//!   and SAFE-OP to OP.
+//!   and SAFE-OP to OP; a device with `dc` gets its clock offset and SYNC0 again in PRE-OP
+//!   (`sync0`), before SAFE-OP, where a device that needs SYNC0 checks it.
 //!
 //! Each attempt sends a few single datagrams per device and never waits for a slow
 //! transition: a device with a microcontroller that takes a while to change state is picked
 //! up again by the next attempt. The bus description's start-up SDOs are written again in
 //! PRE-OP, before SAFE-OP, by the caller's `pre_op` (through ethercrab's CoE, whose mailbox
-//! SyncManagers were just restored). Not repeated: distributed-clock settings (the backend runs
-//! without DC). A device that
-//! cannot be brought back (BOOT, a refused request) stays reported, with its AL status code.
+//! SyncManagers were just restored). A device that cannot be brought back (BOOT, a refused
+//! request) stays reported, with its AL status code.
 
+use super::sync0::Sync0Setup;
 use ethercrab::error::{Error as CrabError, TimeoutError};
 use ethercrab::{AlStatusCode, Command, MainDevice};
 use std::time::{Duration, Instant};
@@ -54,6 +55,8 @@ pub(crate) struct Configured {
     sync_managers: Vec<(u16, [u8; 8])>,
     /// Enabled FMMUs: register address and their 16 bytes.
     fmmus: Vec<(u16, [u8; 16])>,
+    /// Its clock and SYNC0 settings, on a device configured for SYNC0.
+    pub(crate) sync0: Option<Sync0Setup>,
 }
 
 impl Configured {
@@ -92,6 +95,7 @@ impl Configured {
             identity,
             sync_managers,
             fmmus,
+            sync0: None,
         })
     }
 
@@ -189,6 +193,19 @@ pub(crate) async fn attempt(
                 if let Err(e) = pre_op(dev.position).await {
                     return Outcome::NotOp(format!("in PRE-OP: {e}"));
                 }
+                if let Some(setup) = &dev.sync0 {
+                    match restore_sync0(md, dev.address, setup).await {
+                        Ok(true) => done.push("configured its clock and SYNC0 again".into()),
+                        Ok(false) => {}
+                        Err(e) => {
+                            return Outcome::NotOp(format!(
+                                "in PRE-OP: its SYNC0 could not be configured again ({e}); \
+                                 it is tried again at the next attempt: if that keeps \
+                                 failing, restart the program"
+                            ));
+                        }
+                    }
+                }
                 4
             }
             (4, None) => 8,
@@ -239,6 +256,21 @@ pub(crate) async fn attempt(
         text.push(')');
     }
     Outcome::NotOp(text)
+}
+
+/// A device with `dc` in PRE-OP whose SYNC0 is off (it restarted): its clock and SYNC0
+/// configured again (`sync0`); whether that was needed. One whose SYNC0 still runs (it only
+/// dropped to PRE-OP) keeps its clock and pulses untouched.
+async fn restore_sync0(
+    md: &MainDevice<'_>,
+    address: u16,
+    setup: &Sync0Setup,
+) -> Result<bool, CrabError> {
+    if Sync0Setup::is_active(md, address).await? {
+        return Ok(false);
+    }
+    setup.restore(md, address).await?;
+    Ok(true)
 }
 
 /// Vendor and product from SII words 8-11, read through the ESC's EEPROM interface as
