@@ -4,14 +4,17 @@
 //! description's period, a start on the SYNC0 grid of the reference clock, as ethercrab's
 //! `configure_dc_sync` at start-up) before it goes on to SAFE-OP and OP.
 
+#[path = "common/servo.rs"]
+mod servo;
 #[path = "common/sim_bench.rs"]
 mod sim_bench;
 
 use ethercat_sim::{Device, SimBus};
 use plc_core::GlobalMemory;
 use plc_core::Time;
-use plc_core::motion::{Axis, AxisState, McPower};
+use plc_core::motion::AxisState;
 use plc_io::ethercat::{BusConfig, DcConfig, DeviceConfig, EtherCatBackend, devices};
+use servo::Machine;
 use sim_bench::{backend, description, sim};
 use std::time::{Duration, Instant};
 
@@ -152,65 +155,12 @@ fn a_dc_terminal_that_lost_power_comes_back_to_op_with_its_clock_and_sync0() {
 /// Ring positions of the servo bench: an EK1100 (the DC reference clock) and the AKD.
 const SERVO: usize = 1;
 
-/// The drive's 2^20 increments per revolution, one revolution per 10 mm of travel.
-const SCALE: f64 = 1_048_576.0 / 10.0;
-
-#[derive(GlobalMemory, Debug, Clone)]
-struct Machine {
-    #[plc(link = "ethercat.servo.controlword", direction = "output")]
-    controlword: u16,
-    #[plc(link = "ethercat.servo.modes_of_operation", direction = "output")]
-    mode: i8,
-    #[plc(link = "ethercat.servo.target_position", direction = "output")]
-    target_position: i32,
-    #[plc(link = "ethercat.servo.target_velocity", direction = "output")]
-    target_velocity: i32,
-    #[plc(link = "ethercat.servo.statusword", direction = "input")]
-    statusword: u16,
-    #[plc(
-        link = "ethercat.servo.modes_of_operation_display",
-        direction = "input"
-    )]
-    mode_display: i8,
-    #[plc(link = "ethercat.servo.position_actual_value", direction = "input")]
-    position: i32,
-    #[plc(link = "ethercat.servo.velocity_actual_value", direction = "input")]
-    velocity: i32,
-    #[plc(
-        link = "ethercat.servo.following_error_actual_value",
-        direction = "input"
-    )]
-    following_error: i32,
-    #[plc(link = "ethercat.servo.error_code", direction = "input")]
-    error_code: u16,
-    /// The crosshead, in mm.
-    #[plc(quantity = "length")]
-    axis: Axis,
-    power: McPower,
-    reset: plc_core::motion::McReset,
-}
-
-impl Machine {
-    /// One cycle of the program with valid inputs: the drive's inputs into the axis, the
-    /// power block enabled (and `reset` asked), the axis's outputs out.
-    fn program(&mut self, reset: bool) {
-        let d = &mut self.axis.drive;
-        d.statusword = self.statusword;
-        d.modes_of_operation_display = self.mode_display;
-        d.position_actual_value = self.position;
-        d.velocity_actual_value = self.velocity;
-        d.following_error_actual_value = self.following_error;
-        d.error_code = self.error_code;
-        self.axis.read_drive();
-        self.power.call(&mut self.axis, true);
-        self.reset.call(&mut self.axis, reset);
-        self.axis.cycle(0.001);
-        let d = &self.axis.drive;
-        self.controlword = d.controlword;
-        self.mode = d.modes_of_operation;
-        self.target_position = d.target_position;
-        self.target_velocity = d.target_velocity;
-    }
+/// One cycle of the program with valid inputs: the power block enabled (and `reset` asked).
+fn program(gm: &mut Machine, reset: bool) {
+    gm.cycle(|gm| {
+        gm.power.call(&mut gm.axis, true);
+        gm.reset.call(&mut gm.axis, reset);
+    });
 }
 
 /// Exchanges and runs the program every millisecond (the program only on valid inputs,
@@ -228,7 +178,7 @@ fn run(
         let status = backend.exchange(gm);
         if status.inputs_valid {
             let r = reset(gm);
-            gm.program(r);
+            program(gm, r);
         }
         if done(gm, &status) {
             return true;
@@ -252,8 +202,7 @@ fn a_servo_drive_that_lost_power_is_back_in_op_synchronised_and_can_be_enabled_a
     };
     let mut backend = backend::<Machine>(&bus, config);
     backend.start().unwrap();
-    let mut gm = Machine::default();
-    gm.axis.scale = SCALE;
+    let mut gm = Machine::new();
     let enabled = |gm: &Machine, _: &plc_io::ethercat::BusStatus| {
         gm.power.Status && gm.axis.state() == AxisState::Standstill && gm.mode_display == 8
     };

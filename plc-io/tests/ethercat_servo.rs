@@ -2,56 +2,17 @@
 //! ethercrab: the drive's entries linked at the top level and copied into the axis each
 //! cycle, as docs/motion.md shows.
 
+#[path = "common/servo.rs"]
+mod servo;
 #[path = "common/sim_bench.rs"]
 mod sim_bench;
 
 use ethercat_sim::{Device, SimBus};
-use plc_core::GlobalMemory;
 use plc_core::Time;
-use plc_core::motion::{Axis, AxisState, McHome, McMoveAbsolute, McPower, McReset, McStop, error};
+use plc_core::motion::{AxisState, error};
 use plc_io::ethercat::{BusConfig, DcConfig, DeviceConfig, EtherCatBackend, StartupSdo, devices};
+use servo::Machine;
 use std::time::{Duration, Instant};
-
-/// The drive's 2^20 increments per revolution, one revolution per 10 mm of travel.
-const SCALE: f64 = 1_048_576.0 / 10.0;
-
-#[derive(GlobalMemory, Debug, Clone)]
-struct Machine {
-    #[plc(link = "ethercat.servo.controlword", direction = "output")]
-    controlword: u16,
-    #[plc(link = "ethercat.servo.modes_of_operation", direction = "output")]
-    mode: i8,
-    #[plc(link = "ethercat.servo.target_position", direction = "output")]
-    target_position: i32,
-    #[plc(link = "ethercat.servo.target_velocity", direction = "output")]
-    target_velocity: i32,
-    #[plc(link = "ethercat.servo.statusword", direction = "input")]
-    statusword: u16,
-    #[plc(
-        link = "ethercat.servo.modes_of_operation_display",
-        direction = "input"
-    )]
-    mode_display: i8,
-    #[plc(link = "ethercat.servo.position_actual_value", direction = "input")]
-    position: i32,
-    #[plc(link = "ethercat.servo.velocity_actual_value", direction = "input")]
-    velocity: i32,
-    #[plc(
-        link = "ethercat.servo.following_error_actual_value",
-        direction = "input"
-    )]
-    following_error: i32,
-    #[plc(link = "ethercat.servo.error_code", direction = "input")]
-    error_code: u16,
-    /// The crosshead, in mm.
-    #[plc(quantity = "length")]
-    axis: Axis,
-    power: McPower,
-    home: McHome,
-    move_to: McMoveAbsolute,
-    stop: McStop,
-    reset: McReset,
-}
 
 /// The AKD alone, named `servo`, with start-up SDOs.
 fn description(startup: Vec<StartupSdo>) -> BusConfig {
@@ -80,8 +41,7 @@ impl Running {
         let bus = SimBus::new(vec![Device::akd()]);
         let mut backend = sim_bench::backend::<Machine>(&bus, config);
         backend.start().unwrap();
-        let mut gm = Machine::default();
-        gm.axis.scale = SCALE;
+        let gm = Machine::new();
         Running {
             bus,
             backend,
@@ -95,22 +55,7 @@ impl Running {
     fn cycle(&mut self, program: impl FnOnce(&mut Machine)) {
         let status = self.backend.exchange(&mut self.gm);
         assert!(status.inputs_valid, "{status:?}");
-        let gm = &mut self.gm;
-        let d = &mut gm.axis.drive;
-        d.statusword = gm.statusword;
-        d.modes_of_operation_display = gm.mode_display;
-        d.position_actual_value = gm.position;
-        d.velocity_actual_value = gm.velocity;
-        d.following_error_actual_value = gm.following_error;
-        d.error_code = gm.error_code;
-        gm.axis.read_drive();
-        program(gm);
-        gm.axis.cycle(0.001);
-        let d = &gm.axis.drive;
-        gm.controlword = d.controlword;
-        gm.mode = d.modes_of_operation;
-        gm.target_position = d.target_position;
-        gm.target_velocity = d.target_velocity;
+        self.gm.cycle(program);
         // About 1 ms a cycle (the drive integrates the bus's real time).
         let next = self.last + Duration::from_millis(1);
         if let Some(wait) = next.checked_duration_since(Instant::now()) {
