@@ -190,7 +190,8 @@ fn scan_group(
 /// AKD's EEPROM clears it, and the simulated AKD (like, as far as ethercrab's captures of a real
 /// one suggest, the real drive) answers the service. A device without the service answers
 /// with an error, or not at all within `timeout`, and is not asked again; either way its
-/// entries keep the `xIIII_SS` names, with a warning in the log.
+/// entries keep the `xIIII_SS` names, with a note for the file's comment
+/// ([`ScannedDevice::note`]) and a warning in the log.
 async fn name_from_dictionary(
     sd: &SubDeviceRef<'_, &SubDevice>,
     sii: &Sii,
@@ -208,13 +209,19 @@ async fn name_from_dictionary(
         Ok(mut mailbox) => coe_info::name_entries(&mut mailbox, &mut device.entries).await,
         Err(why) => Some(why),
     };
-    if let Some(why) = why {
-        log::warn!(
-            target: "plc_io::ethercat",
-            "scan: {}: no object names from its CoE object dictionary ({why}); unnamed entries \
-             are named by object index",
-            sd.name()
+    let unnamed = device
+        .entries
+        .iter()
+        .filter(|e| e.name.is_none() && e.index != 0)
+        .count();
+    if unnamed > 0 {
+        let why = why.unwrap_or_else(|| "the device answered an SDO information error".into());
+        let note = format!(
+            "{unnamed} entries have no name from its CoE object dictionary ({why}): they are \
+             named by object index (x6000_11 is 0x6000:11); rename them from its data sheet"
         );
+        log::warn!(target: "plc_io::ethercat", "scan: {}: {note}", sd.name());
+        device.note = Some(note);
     }
 }
 

@@ -121,6 +121,17 @@ fn a_device_that_refuses_the_service_keeps_object_index_names() {
     assert_eq!(got[1], ("x6060_00", "BYTE", 8));
     assert_eq!(got[5], ("x6061_00", "BYTE", 8));
     assert_eq!(got[9], ("x603f_00", "WORD", 16));
+    // The file says why, above the device's entries.
+    let text = scan.to_toml();
+    let at = text
+        .find("# 3 entries have no name from its CoE object dictionary (the device answered")
+        .expect(&text);
+    assert!(text[at..].contains("named by object index"), "{text}");
+    assert!(at > text.find("name = \"akd\"").expect(&text), "{text}");
+    assert!(
+        scan.devices[0].note.is_none(),
+        "the coupler has nothing to say"
+    );
 }
 
 #[test]

@@ -23,6 +23,7 @@
 //!     description: "EL1002 2K. Dig. Eingang".into(),
 //!     identity: Identity { vendor: 2, product: 0x03ea3052, revision: Some(0x0011_0000) },
 //!     entries: vec![input("Input", 1), input("Input", 2)],
+//!     note: None,
 //! };
 //! let bus = describe(&[device]).unwrap();
 //! assert_eq!(bus.devices[0].name, "el1002");
@@ -46,6 +47,10 @@ pub struct ScannedDevice {
     pub identity: Identity,
     /// Its PDO entries as the bus will be configured, gaps included.
     pub entries: Vec<ScannedEntry>,
+    /// What the engineer should know of how its entries were named, for a comment in the
+    /// scanned file (the device did not answer the SDO information service, so entries its
+    /// EEPROM does not name are named by object index); `None` if nothing.
+    pub note: Option<String>,
 }
 
 /// One PDO entry of a scanned SubDevice.
@@ -149,6 +154,7 @@ impl ScannedDevice {
                 revision: Some(sii.revision),
             },
             entries: Vec::new(),
+            note: None,
         }
     }
 }

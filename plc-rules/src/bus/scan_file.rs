@@ -12,6 +12,7 @@
 //!     description: "EK1100 EtherCAT-Koppler (2A E-Bus)".into(),
 //!     identity: Identity { vendor: 2, product: 0x044c2c52, revision: Some(0x00120000) },
 //!     entries: vec![],
+//!     note: None,
 //! };
 //! let bus = describe(std::slice::from_ref(&coupler)).unwrap();
 //! let text = to_toml(&bus, &[coupler]);
@@ -22,6 +23,13 @@
 use super::BusConfig;
 use super::scan::ScannedDevice;
 use std::fmt::Write;
+
+/// `text` for a comment: on one line, without control characters (it may hold device data).
+fn one_line(text: &str) -> String {
+    text.chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect()
+}
 
 /// The description as commented TOML; `scanned` (the devices it was made from, same order)
 /// gives each entry's object for its comment.
@@ -50,6 +58,9 @@ pub fn to_toml(bus: &BusConfig, scanned: &[ScannedDevice]) -> String {
             let _ = write!(out, ", revision = {r:#010x}");
         }
         out.push_str(" }\n");
+        if let Some(note) = scanned.get(pos).and_then(|s| s.note.as_deref()) {
+            let _ = writeln!(out, "# {}", one_line(note));
+        }
         if d.entries.is_empty() {
             out.push_str("# no process data\n");
             continue;
@@ -130,6 +141,7 @@ mod tests {
                 revision: None,
             },
             entries: vec![entry("Output", 0), entry("Output", 1)],
+            note: Some("names by object index:\nline two\u{1b}[2J".into()),
         };
         let bus = describe(std::slice::from_ref(&device)).unwrap();
         let text = to_toml(&bus, &[device]);
@@ -142,6 +154,10 @@ mod tests {
         );
         assert!(
             text.contains(r#"description = "quote \" backslash \\ tab \u0009 ü""#),
+            "{text}"
+        ); // The note is one comment line: device text cannot start a TOML line of its own.
+        assert!(
+            text.contains("\n# names by object index: line two [2J\n"),
             "{text}"
         );
     }
