@@ -163,6 +163,39 @@ pub fn for_each(frame: &mut [u8], mut f: impl FnMut(&mut Datagram<'_>)) -> Resul
     Ok(())
 }
 
+/// A frame from 10:10:10:10:10:10 with one datagram: command code `cmd` (ETG.1000.4 table
+/// 10, e.g. 0x05 FPWR), address `adp`/`ado`, `data`, working counter 0. For tests that talk
+/// to the ring without a MainDevice, or behind one's back as a second master would, through
+/// [`SimBus::process_frame`](crate::SimBus::process_frame). The reply's data starts at byte
+/// 26, its working counter follows it.
+///
+/// ```
+/// use ethercat_sim::{Device, SimBus, datagram_frame};
+/// let bus = SimBus::new(vec![Device::ek1100()]);
+/// // APRD of the type register (0x0000) of the device at position 0.
+/// let reply = bus.process_frame(&datagram_frame(0x01, 0, 0x0000, &[0])).unwrap();
+/// assert_eq!(reply[26], 0x11, "an ESC of type 0x11");
+/// assert_eq!(reply[27], 1, "one device answered");
+/// ```
+pub fn datagram_frame(cmd: u8, adp: u16, ado: u16, data: &[u8]) -> Vec<u8> {
+    let mut f = vec![0xFF; 6];
+    f.extend_from_slice(&[0x10; 6]);
+    f.extend_from_slice(&ETHERTYPE.to_be_bytes());
+    // EtherCAT header: length of the datagram (header, data, working counter), type 1.
+    f.extend_from_slice(&(0x1000 | (DATAGRAM_HEADER + data.len() + 2) as u16).to_le_bytes());
+    f.extend_from_slice(&[cmd, 0]);
+    f.extend_from_slice(&adp.to_le_bytes());
+    f.extend_from_slice(&ado.to_le_bytes());
+    // Length; no round trip, no more datagrams.
+    f.extend_from_slice(&(data.len() as u16).to_le_bytes());
+    // IRQ.
+    f.extend_from_slice(&[0, 0]);
+    f.extend_from_slice(data);
+    // Working counter.
+    f.extend_from_slice(&[0, 0]);
+    f
+}
+
 /// The reply a ring gives back: the first device sets bit 1 ("locally administered") of the
 /// source MAC, so 10:10:10:10:10:10 becomes 12:10:10:10:10:10 (ethercrab drops frames that
 /// still carry its own address), and a frame shorter than Ethernet's minimum is padded to 60

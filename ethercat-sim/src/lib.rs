@@ -93,7 +93,7 @@ pub mod sii;
 mod transport;
 
 pub use bus::{FrameCounters, REPLY_SOURCE, SimBus};
-pub use datagram::{Command, Datagram, ETHERTYPE, Malformed};
+pub use datagram::{Command, Datagram, ETHERTYPE, Malformed, datagram_frame};
 pub use dc::{HOP_NS, Sync0};
 pub use device::Device;
 pub use esc::EscInfo;

@@ -7,7 +7,7 @@
 mod common;
 
 use common::timeouts;
-use ethercat_sim::{Device, SimBus, inproc};
+use ethercat_sim::{Device, SimBus, datagram_frame as frame, inproc};
 use ethercrab::error::Error;
 use ethercrab::subdevice_group::DcConfiguration;
 use ethercrab::{Command, DcSync, MainDevice, MainDeviceConfig, PduLoop, RegisterAddress};
@@ -265,22 +265,6 @@ fn sync0_with_a_start_time_in_the_past_never_fires() {
         s.last_pulse.unwrap() % 500_000,
         (now + 20_000_000) % 500_000
     );
-}
-
-/// A frame from 10:10:10:10:10:10 with one datagram.
-fn frame(cmd: u8, adp: u16, ado: u16, data: &[u8]) -> Vec<u8> {
-    let mut f = vec![0xFF; 6];
-    f.extend_from_slice(&[0x10; 6]);
-    f.extend_from_slice(&ethercat_sim::ETHERTYPE.to_be_bytes());
-    f.extend_from_slice(&(0x1000 | (12 + data.len()) as u16).to_le_bytes());
-    f.extend_from_slice(&[cmd, 0]);
-    f.extend_from_slice(&adp.to_le_bytes());
-    f.extend_from_slice(&ado.to_le_bytes());
-    f.extend_from_slice(&(data.len() as u16).to_le_bytes());
-    f.extend_from_slice(&[0, 0]);
-    f.extend_from_slice(data);
-    f.extend_from_slice(&[0, 0]);
-    f
 }
 
 /// The data of a reply's only datagram.

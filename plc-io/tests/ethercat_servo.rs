@@ -7,7 +7,7 @@ mod servo;
 #[path = "common/sim_bench.rs"]
 mod sim_bench;
 
-use ethercat_sim::{Device, SimBus};
+use ethercat_sim::{Device, SimBus, datagram_frame};
 use plc_core::Time;
 use plc_core::motion::{AxisState, error};
 use plc_io::ethercat::{BusConfig, DcConfig, DeviceConfig, EtherCatBackend, StartupSdo, devices};
@@ -262,9 +262,12 @@ fn a_drive_that_loses_sync0_faults_and_the_axis_stops_on_its_error() {
     // (0x0981 = 0), as a second master or a tool writing registers would.
     let mut address = [0u8; 2];
     m.bus.device(0).register(0x0010, &mut address);
-    let reply = m
-        .bus
-        .process_frame(&fpwr(u16::from_le_bytes(address), 0x0981, &[0]));
+    let reply = m.bus.process_frame(&datagram_frame(
+        0x05,
+        u16::from_le_bytes(address),
+        0x0981,
+        &[0],
+    ));
     // The working counter, after the headers (14 + 2 + 10 bytes) and the one data byte.
     assert_eq!(reply.map(|r| r[27]), Some(1), "the write reached the drive");
     assert!(!m.bus.sync0(0).active);
@@ -280,22 +283,4 @@ fn a_drive_that_loses_sync0_faults_and_the_axis_stops_on_its_error() {
         m.gm.statusword
     );
     m.backend.stop();
-}
-
-/// An Ethernet frame with one FPWR datagram (station `address`, register `register`).
-fn fpwr(address: u16, register: u16, data: &[u8]) -> Vec<u8> {
-    let mut f = vec![0xFF; 6];
-    f.extend_from_slice(&[0x10; 6]);
-    f.extend_from_slice(&ethercat_sim::ETHERTYPE.to_be_bytes());
-    f.extend_from_slice(&(0x1000 | (12 + data.len()) as u16).to_le_bytes());
-    // FPWR, index 0, station address, register, length, no IRQ.
-    f.extend_from_slice(&[0x05, 0]);
-    f.extend_from_slice(&address.to_le_bytes());
-    f.extend_from_slice(&register.to_le_bytes());
-    f.extend_from_slice(&(data.len() as u16).to_le_bytes());
-    f.extend_from_slice(&[0, 0]);
-    f.extend_from_slice(data);
-    // Working counter.
-    f.extend_from_slice(&[0, 0]);
-    f
 }

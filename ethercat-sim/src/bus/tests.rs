@@ -2,22 +2,7 @@
 
 use super::*;
 use crate::al;
-
-/// A frame from 10:10:10:10:10:10 with one datagram.
-fn frame(cmd: u8, adp: u16, ado: u16, data: &[u8]) -> Vec<u8> {
-    let mut f = vec![0xFF; 6];
-    f.extend_from_slice(&[0x10; 6]);
-    f.extend_from_slice(&crate::ETHERTYPE.to_be_bytes());
-    f.extend_from_slice(&(0x1000 | (12 + data.len()) as u16).to_le_bytes());
-    f.extend_from_slice(&[cmd, 0]);
-    f.extend_from_slice(&adp.to_le_bytes());
-    f.extend_from_slice(&ado.to_le_bytes());
-    f.extend_from_slice(&(data.len() as u16).to_le_bytes());
-    f.extend_from_slice(&[0, 0]);
-    f.extend_from_slice(data);
-    f.extend_from_slice(&[0, 0]);
-    f
-}
+use crate::datagram_frame as frame;
 
 /// (data, wkc, adp) of the reply's datagram.
 fn answer(reply: &[u8], len: usize) -> (Vec<u8>, u16, u16) {
