@@ -314,14 +314,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// now.
     pub fn report(&self, cycle_count: u64, stats: &CycleStats, io: &IoStatus) {
         self.view.base.store(S_HEARTBEAT_NS, now_ns());
-        write_report(
-            &self.view.base,
-            &self.view.off,
-            cycle_count,
-            stats,
-            io,
-            utc_ns(),
-        );
+        self.report_published(cycle_count, stats, io, utc_ns());
     }
 
     /// The runtime's [`report`](Self::report), right after its publish (which stamped the

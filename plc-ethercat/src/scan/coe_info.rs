@@ -29,7 +29,7 @@
 //! back to INIT (which resets its mailbox), so the two counters never meet. The simulated
 //! devices echo whatever counter they get.
 
-use ethercrab::{SubDevice, SubDeviceRef};
+use ethercrab::{RegisterAddress, SubDevice, SubDeviceRef};
 use plc_rules::bus::scan::ScannedEntry;
 use plc_rules::bus::sii::{Sii, SmUsage};
 use std::collections::HashMap;
@@ -69,10 +69,9 @@ const INFO_ERROR: u8 = 0x07;
 /// given up.
 const MAX_EMERGENCIES: usize = 4;
 
-/// SyncManager registers: block n at 0x0800 + 8n (start u16, length u16, control, status,
-/// activate, PDI control); status bit 3 "mailbox full".
-const SM_REGISTERS: u16 = 0x0800;
-const SM_STATUS: u16 = 5;
+/// SyncManager status bit 3: "mailbox full". (A SyncManager's registers, ethercrab's
+/// `RegisterAddress::sync_manager(n)`: start u16, length u16, control, status, activate, PDI
+/// control.)
 const SM_MAILBOX_FULL: u8 = 0x08;
 
 /// Pause between two polls of a SyncManager status.
@@ -394,7 +393,8 @@ pub async fn name_entries(
 /// One mailbox SyncManager as ethercrab configured it.
 #[derive(Clone, Copy, Debug)]
 struct Sm {
-    index: u16,
+    /// 0..=15, which ethercrab's SyncManager register addresses take.
+    index: u8,
     start: u16,
     len: u16,
 }
@@ -422,7 +422,7 @@ impl<'a, 'md> EscMailbox<'a, 'md> {
                 .iter()
                 .position(|s| s.usage == usage)
                 .filter(|&i| i < 16)
-                .and_then(|i| u16::try_from(i).ok())
+                .and_then(|i| u8::try_from(i).ok())
                 .ok_or_else(|| format!("its EEPROM names no {usage:?} SyncManager among 0-15"))
         };
         let (out, inp) = (find(SmUsage::MailboxOut)?, find(SmUsage::MailboxIn)?);
@@ -433,7 +433,7 @@ impl<'a, 'md> EscMailbox<'a, 'md> {
         }; 2];
         for (slot, index) in sms.iter_mut().zip([out, inp]) {
             let r: [u8; 8] = sd
-                .register_read(SM_REGISTERS + 8 * index)
+                .register_read(RegisterAddress::sync_manager(index))
                 .await
                 .map_err(|e| format!("reading SyncManager {index}: {e}"))?;
             let (start, len) = (
@@ -458,7 +458,7 @@ impl<'a, 'md> EscMailbox<'a, 'md> {
 
     async fn status(&self, sm: Sm) -> Result<u8, String> {
         self.sd
-            .register_read::<u8>(SM_REGISTERS + 8 * sm.index + SM_STATUS)
+            .register_read::<u8>(RegisterAddress::sync_manager_status(sm.index))
             .await
             .map_err(|e| format!("reading SyncManager {} status: {e}", sm.index))
     }
