@@ -18,17 +18,18 @@
 //!   0 at power-on and not written, as ethercrab does not.
 
 use ethercrab::error::Error as CrabError;
-use ethercrab::{Command, MainDevice};
+use ethercrab::{Command, MainDevice, RegisterAddress};
 use std::time::Duration;
 
-const RECEIVE_TIME_PORT0: u16 = 0x0900;
-const RECEIVE_TIME_PU: u16 = 0x0918;
-const SYSTEM_TIME: u16 = 0x0910;
-const SYSTEM_TIME_OFFSET: u16 = 0x0920;
-const SYSTEM_TIME_DELAY: u16 = 0x0928;
-const SYNC_ACTIVATION: u16 = 0x0981;
-const SYNC0_START_TIME: u16 = 0x0990;
-const SYNC0_CYCLE_TIME: u16 = 0x09A0;
+// The registers, by ethercrab's names for them.
+const RECEIVE_TIME_PORT0: u16 = RegisterAddress::DcTimePort0 as u16;
+const RECEIVE_TIME_PU: u16 = RegisterAddress::DcReceiveTime as u16;
+const SYSTEM_TIME: u16 = RegisterAddress::DcSystemTime as u16;
+const SYSTEM_TIME_OFFSET: u16 = RegisterAddress::DcSystemTimeOffset as u16;
+const SYSTEM_TIME_DELAY: u16 = RegisterAddress::DcSystemTimeTransmissionDelay as u16;
+const SYNC_ACTIVATION: u16 = RegisterAddress::DcSyncActive as u16;
+const SYNC0_START_TIME: u16 = RegisterAddress::DcSyncStartTime as u16;
+const SYNC0_CYCLE_TIME: u16 = RegisterAddress::DcSync0CycleTime as u16;
 
 /// 0x0981: cyclic operation (bit 0) and SYNC0 (bit 1), ethercrab's `SYNC0_ACTIVATE |
 /// CYCLIC_OP_ENABLE`.
