@@ -10,7 +10,7 @@ use super::Error;
 use ethercat_sim::{Device, SimBus};
 use plc_ethercat::scan::scan as scan_bus;
 use plc_ethercat::{MAX_SUBDEVICES, Options, Transport};
-use plc_rules::bus::{BusConfig, BusLayout};
+use plc_rules::bus::{BusConfig, BusLayout, written_duration};
 use std::fmt::Write;
 use std::path::Path;
 
@@ -121,8 +121,8 @@ pub fn table(bus: &BusConfig) -> String {
                 [
                     pos.to_string(),
                     d.name.clone(),
-                    duration(dc.sync0),
-                    duration(dc.shift),
+                    written_duration(dc.sync0),
+                    written_duration(dc.shift),
                 ]
             })
         })
@@ -151,16 +151,6 @@ fn aligned<const N: usize>(out: &mut String, rows: &[[String; N]]) {
             .map(|(cell, w)| format!("{cell:<w$}"))
             .collect();
         let _ = writeln!(out, "{}", line.join("  ").trim_end());
-    }
-}
-
-/// A duration as the bus description writes it: `1ms`, `250us` (the IEC literal without
-/// its `LTIME#`).
-fn duration(t: plc_rules::time::Time) -> String {
-    let literal = t.to_string();
-    match literal.split_once('#') {
-        Some((_, rest)) => rest.to_owned(),
-        None => literal,
     }
 }
 

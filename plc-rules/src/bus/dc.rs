@@ -67,26 +67,26 @@ pub(super) fn problems(bus: &BusConfig, problems: &mut Vec<String>) {
         if sync0 <= 0 {
             problems.push(format!(
                 "{at}: sync0 = \"{}\" is not a period: give one above zero, e.g. \"1ms\"",
-                text(dc.sync0)
+                written_duration(dc.sync0)
             ));
         } else if sync0 > MAX_DC_NS {
             problems.push(format!(
                 "{at}: sync0 = \"{}\" is longer than the 4.29 s (2^32 - 1 ns) an ESC's SYNC0 \
                  cycle register holds: give a shorter period",
-                text(dc.sync0)
+                written_duration(dc.sync0)
             ));
         }
         if shift < 0 {
             problems.push(format!(
                 "{at}: shift = \"{}\" is negative: give zero or more, less than sync0",
-                text(dc.shift)
+                written_duration(dc.shift)
             ));
         } else if sync0 > 0 && shift >= sync0 {
             problems.push(format!(
                 "{at}: shift = \"{}\" is not less than sync0 = \"{}\": the shift places the \
                  cycle within one SYNC0 period; give a shorter one (e.g. a quarter of sync0)",
-                text(dc.shift),
-                text(dc.sync0)
+                written_duration(dc.shift),
+                written_duration(dc.sync0)
             ));
         }
         match first {
@@ -95,18 +95,26 @@ pub(super) fn problems(bus: &BusConfig, problems: &mut Vec<String>) {
                 "{at}: sync0 = \"{}\", shift = \"{}\" differ from device {p} (`{name}`)'s \
                  sync0 = \"{}\", shift = \"{}\": ethercrab configures one SYNC0 period and shift \
                  per bus, so give every device with `dc` the same",
-                text(dc.sync0),
-                text(dc.shift),
-                text(f.sync0),
-                text(f.shift)
+                written_duration(dc.sync0),
+                written_duration(dc.shift),
+                written_duration(f.sync0),
+                written_duration(f.shift)
             )),
             Some(_) => {}
         }
     }
 }
 
-/// A duration as the description writes it: the IEC literal without its prefix (`1ms`).
-fn text(t: Time) -> String {
+/// A duration as the description writes it (`sync0`, `shift`): the IEC literal without
+/// its prefix.
+///
+/// ```
+/// use plc_rules::bus::written_duration;
+/// use plc_rules::time::Time;
+/// assert_eq!(written_duration(Time::from_micros(250)), "250us");
+/// assert_eq!(written_duration(Time::ZERO), "0s");
+/// ```
+pub fn written_duration(t: Time) -> String {
     let literal = t.to_string();
     match literal.split_once('#') {
         Some((_, rest)) => rest.to_owned(),
@@ -120,7 +128,7 @@ mod duration_text {
     use serde::{Deserialize, Deserializer, Serializer};
 
     pub(super) fn serialize<S: Serializer>(t: &Time, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&super::text(*t))
+        s.serialize_str(&super::written_duration(*t))
     }
 
     pub(super) fn deserialize<'de, D: Deserializer<'de>>(d: D) -> Result<Time, D::Error> {

@@ -26,7 +26,7 @@ pub mod scan_file;
 pub mod sii;
 mod validate;
 
-pub use dc::{DcConfig, MAX_DC_NS};
+pub use dc::{DcConfig, MAX_DC_NS, written_duration};
 pub use layout::{BusLayout, EntryLayout, LayoutError};
 pub use links::{LinkIssue, LinkedVar, resolve_links};
 
