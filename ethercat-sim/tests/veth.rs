@@ -15,6 +15,7 @@ mod common;
 use common::{bench, maindevice, timeouts};
 use ethercat_sim::{al, raw};
 use futures_lite::future::block_on;
+use plc_test_support::SpawnGuarded;
 use std::io::Write;
 use std::process::Command;
 use std::time::{Duration, Instant};
@@ -61,7 +62,7 @@ fn reason_to_skip() -> Option<String> {
     }
     let ip_works = Command::new("ip")
         .arg("-V")
-        .output()
+        .output_guarded()
         .is_ok_and(|o| o.status.success());
     if ip_works {
         return None;
@@ -92,7 +93,7 @@ impl Namespace {
     fn ip(&self, args: &[&str]) -> Result<(), String> {
         let out = Command::new("ip")
             .args(args)
-            .output()
+            .output_guarded()
             .map_err(|e| format!("ip {args:?}: {e}"))?;
         if !out.status.success() {
             return Err(format!(

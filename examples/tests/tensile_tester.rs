@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use plc_test_support::{ChildGuard, SpawnGuarded};
+
 /// Runs `tensile_tester` with `args` to its end, on a segment and a retain directory of its
 /// own named after `test`; returns its output and that directory.
 fn run_to_end(test: &str, args: &[&str]) -> (Output, PathBuf) {
@@ -14,7 +16,7 @@ fn run_to_end(test: &str, args: &[&str]) -> (Output, PathBuf) {
         .args(["--segment", &format!("tt_{test}_{id}")])
         .arg("--retain")
         .arg(&retain)
-        .output()
+        .output_guarded()
         .expect("tensile_tester starts");
     (out, retain)
 }
@@ -49,7 +51,7 @@ fn tensile_tester_runs_n_cycles_on_the_simulated_bus_and_exits_0() {
 fn tensile_tester_refuses_an_unknown_option_with_its_usage_and_exit_1() {
     let out = Command::new(env!("CARGO_BIN_EXE_tensile_tester"))
         .arg("--cycle")
-        .output()
+        .output_guarded()
         .expect("tensile_tester starts");
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
@@ -72,16 +74,7 @@ fn tensile_tester_refuses_a_cpu_the_process_may_not_use_before_the_bus_starts() 
 }
 
 /// A running `tensile_tester`, killed if the test fails before stopping it.
-struct Program(Option<std::process::Child>);
-
-impl Drop for Program {
-    fn drop(&mut self) {
-        if let Some(mut child) = self.0.take() {
-            let _ = child.kill();
-            let _ = child.wait();
-        }
-    }
-}
+struct Program(ChildGuard);
 
 /// Starts `tensile_tester` on segment `segment` with retain directory `retain`, until stopped.
 fn start(segment: &str, retain: &std::path::Path) -> Program {
@@ -91,9 +84,9 @@ fn start(segment: &str, retain: &std::path::Path) -> Program {
         .arg(retain)
         .stdout(std::process::Stdio::piped())
         .stderr(std::process::Stdio::piped())
-        .spawn()
+        .spawn_guarded()
         .expect("tensile_tester starts");
-    Program(Some(child))
+    Program(child)
 }
 
 /// The program's segment once it runs (the bus comes up first: allow a busy machine time).
@@ -109,11 +102,10 @@ fn attach(segment: &str) -> plc_io::shm::DynSegment {
 }
 
 /// SIGTERM, as a service manager stops it; returns its exit status and what it printed.
-fn terminate(mut program: Program) -> (std::process::ExitStatus, String) {
-    let child = program.0.take().expect("running");
-    // SAFETY: kill(2) on the pid of a child we spawned and have not reaped.
-    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGTERM) }, 0);
-    let out = child.wait_with_output().expect("tensile_tester exits");
+fn terminate(program: Program) -> (std::process::ExitStatus, String) {
+    let mut child = program.0;
+    child.signal(libc::SIGTERM);
+    let out = child.into_output().expect("tensile_tester exits");
     (
         out.status,
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -129,7 +121,7 @@ fn a_setpoint_written_by_the_hmi_reader_is_applied_retained_and_restored_after_s
     let seg = attach(&segment);
     let hmi = Command::new(env!("CARGO_BIN_EXE_hmi_reader"))
         .args([&segment, "test_speed_mm_s=3.5", "--seconds", "1"])
-        .output()
+        .output_guarded()
         .expect("hmi_reader starts");
     assert!(
         hmi.status.success(),
@@ -189,14 +181,12 @@ fn a_final_save_that_fails_makes_tensile_tester_exit_1_and_say_so() {
     let id = std::process::id();
     let segment = format!("tt_lost_{id}");
     let retain = std::env::temp_dir().join(format!("tensile-lost-{id}"));
-    let mut program = start(&segment, &retain);
+    let Program(mut child) = start(&segment, &retain);
     drop(attach(&segment));
     // The retain directory disappears under the running program (a failed disk does the same).
     std::fs::remove_dir_all(&retain).expect("the program created its retain directory");
-    let child = program.0.take().expect("running");
-    // SAFETY: kill(2) on the pid of a child we spawned and have not reaped.
-    assert_eq!(unsafe { libc::kill(child.id() as i32, libc::SIGTERM) }, 0);
-    let out = child.wait_with_output().expect("tensile_tester exits");
+    child.signal(libc::SIGTERM);
+    let out = child.into_output().expect("tensile_tester exits");
     let (stdout, stderr) = (
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr),

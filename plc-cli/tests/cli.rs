@@ -4,10 +4,11 @@
 use plc_core::{FixedString, GlobalMemory, Time};
 mod common;
 
-use common::{plc, stderr, stdout, terminate, wait_until};
+use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, terminate, wait_until};
 use plc_io::shm::BusClocks;
 use plc_io::{BusState, IoBackend, IoError, IoStatus, Runtime};
-use std::process::{Child, Command, Output, Stdio};
+use plc_test_support::TmuxSession;
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -51,7 +52,7 @@ fn owner_role() {
 }
 
 struct Owner {
-    child: Child,
+    child: ChildGuard,
     segment: String,
 }
 
@@ -68,7 +69,7 @@ impl Owner {
             .env("PLC_TEST_ROLE", role)
             .env("SEGMENT", &segment)
             .stdout(Stdio::null())
-            .spawn()
+            .spawn_guarded()
             .unwrap();
         let owner = Owner { child, segment };
         wait_until("the owner to start", || {
@@ -265,21 +266,16 @@ fn set_refuses_bad_writes_and_writes_nothing() {
     assert!(!plc(&["get", "no_such_program", "x"]).status.success());
 }
 
-fn signal(child: &Child, sig: i32) {
-    // SAFETY: signalling a child we spawned.
-    unsafe { libc::kill(child.id() as i32, sig) };
-}
-
 #[test]
 fn a_batch_is_applied_in_one_cycle_and_a_program_that_takes_no_writes_is_reported() {
-    let owner = Owner::start("batch");
+    let mut owner = Owner::start("batch");
     let s = owner.segment.as_str();
     // The program stops (as in a debugger): `plc set` waits a bounded time and says so.
-    signal(&owner.child, libc::SIGSTOP);
+    owner.child.signal(libc::SIGSTOP);
     let start = Instant::now();
     let o = plc(&["set", s, "speed_setpoint=999", "recipe=new", "table[0]=5"]);
     let waited = start.elapsed();
-    signal(&owner.child, libc::SIGCONT);
+    owner.child.signal(libc::SIGCONT);
     assert!(!o.status.success());
     let err = stderr(&o);
     assert!(err.contains("did not answer"), "{err}");
@@ -337,18 +333,14 @@ fn set_by_a_user_the_program_does_not_let_write_reports_the_rule() {
         .env("SEGMENT", &segment)
         .env(plc_io::shm::RUNTIME_DIR_ENV, &dir)
         .stdout(Stdio::null())
-        .spawn()
+        .spawn_guarded()
         .unwrap();
     // The `plc` binary where uid 65534 may run it: the build's own directory may be closed to
-    // other users (a checkout in a private directory).
-    let plc_bin = base.join("plc");
-    std::fs::copy(env!("CARGO_BIN_EXE_plc"), &plc_bin).unwrap();
+    // other users (a checkout in a private directory). Installed by a process of its own: a
+    // copy written here could be held open by a child another test forks meanwhile.
     std::fs::set_permissions(&base, std::os::unix::fs::PermissionsExt::from_mode(0o755)).unwrap();
-    std::fs::set_permissions(
-        &plc_bin,
-        std::os::unix::fs::PermissionsExt::from_mode(0o755),
-    )
-    .unwrap();
+    let plc_bin =
+        plc_test_support::install_executable(env!("CARGO_BIN_EXE_plc").as_ref(), &base).unwrap();
     let as_nobody = |args: &[&str]| {
         let mut cmd = Command::new(&plc_bin);
         cmd.args(args).env(plc_io::shm::RUNTIME_DIR_ENV, &dir);
@@ -364,15 +356,13 @@ fn set_by_a_user_the_program_does_not_let_write_reports_the_rule() {
                 Ok(())
             });
         }
-        cmd.output().unwrap()
+        cmd.output_guarded().unwrap()
     };
     wait_until("the program to start", || {
         as_nobody(&["get", &segment, "counter"]).status.success()
     });
     let o = as_nobody(&["set", &segment, "speed_setpoint=1"]);
-    // SAFETY: signalling a child we spawned.
-    unsafe { libc::kill(owner.id() as i32, libc::SIGTERM) };
-    let _ = owner.wait();
+    let _ = owner.terminate();
     let _ = std::fs::remove_dir_all(&base);
     assert!(!o.status.success());
     let err = stderr(&o);
@@ -389,21 +379,21 @@ fn log_stopped_with_ctrl_c_keeps_its_rows() {
     let owner = Owner::start("logint");
     let file = std::env::temp_dir().join(format!("plc-logint-{}.csv", std::process::id()));
     let _ = std::fs::remove_file(&file);
-    let child = Command::new(env!("CARGO_BIN_EXE_plc"))
+    let mut child = Command::new(env!("CARGO_BIN_EXE_plc"))
         .args(["log", &owner.segment, "counter", "--csv"])
         .arg(&file)
         .args(["--rate", "50"])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
-        .spawn()
+        .spawn_guarded()
         .unwrap();
     wait_until("the CSV header", || {
         std::fs::read_to_string(&file).is_ok_and(|c| c.starts_with("time_s,cycle,counter\n"))
     });
     // Well under the once-a-second flush: only the signal handling can save these rows.
     std::thread::sleep(Duration::from_millis(300));
-    signal(&child, libc::SIGINT);
-    let o = child.wait_with_output().unwrap();
+    child.signal(libc::SIGINT);
+    let o = child.into_output().unwrap();
     assert!(o.status.success(), "{}", stderr(&o));
     let csv = std::fs::read_to_string(&file).unwrap();
     let rows = csv.lines().count() - 1;
@@ -439,8 +429,7 @@ fn a_rate_too_small_for_a_period_is_refused_not_a_panic() {
 #[test]
 fn list_shows_a_killed_programs_leftover_instead_of_hiding_it() {
     let mut owner = Owner::start("killedlist");
-    // SAFETY: signalling a child we spawned.
-    unsafe { libc::kill(owner.child.id() as i32, libc::SIGKILL) };
+    owner.child.signal(libc::SIGKILL);
     let _ = owner.child.wait();
     let o = plc(&["list"]);
     assert!(o.status.success(), "{}", stderr(&o));
@@ -499,39 +488,20 @@ fn export_prints_the_declaration_as_json() {
     assert_eq!(v["dwell"]["initial"], "T#1.5s");
 }
 
-fn tmux(args: &[&str]) -> Output {
-    Command::new("tmux").args(args).output().unwrap()
-}
-
 #[test]
 fn watch_shows_live_values_filters_and_writes_in_tmux() {
-    if Command::new("tmux").arg("-V").output().is_err() {
+    if !TmuxSession::available() {
         eprintln!("SKIPPED: tmux is not installed (scripts/test.sh installs it)");
         return;
     }
     let owner = Owner::start("watch");
-    let session = format!("plcwatch{}", std::process::id());
     let cmd = format!(
         "{} watch {} --rate 20",
         env!("CARGO_BIN_EXE_plc"),
         owner.segment
     );
-    assert!(
-        tmux(&[
-            "new-session",
-            "-d",
-            "-s",
-            &session,
-            "-x",
-            "150",
-            "-y",
-            "30",
-            &cmd
-        ])
-        .status
-        .success()
-    );
-    let screen = || stdout(&tmux(&["capture-pane", "-p", "-t", &session]));
+    let session = TmuxSession::start("plcwatch", 150, 30, &cmd).unwrap();
+    let screen = || session.screen();
     let counter_value = |s: &str| -> Option<u64> {
         s.lines()
             .find(|l| l.contains("│counter"))?
@@ -558,14 +528,14 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
         "owner state and cycle statistics in the header:\n{header}"
     );
 
-    tmux(&["send-keys", "-t", &session, "/", "speed_set", "Enter"]);
+    session.send_keys(&["/", "speed_set", "Enter"]);
     assert!(
         header.contains("LTIME#1s500ms"),
         "a duration as its literal:\n{header}"
     );
     wait_until("the filter", || screen().contains("1 of 9 variables"));
     assert!(!screen().contains("│counter"));
-    tmux(&["send-keys", "-t", &session, "Enter", "2500", "Enter"]);
+    session.send_keys(&["Enter", "2500", "Enter"]);
     wait_until("the write to reach the program", || {
         stdout(&plc(&["get", &owner.segment, "speed_actual"])).contains("= 2500")
     });
@@ -585,10 +555,8 @@ fn watch_shows_live_values_filters_and_writes_in_tmux() {
     });
     assert!(plc(&["unforce", &owner.segment, "--all"]).status.success());
     wait_until("the mark gone", || !screen().contains("F 3000"));
-    tmux(&["send-keys", "-t", &session, "q"]);
-    wait_until("watch to quit", || {
-        !tmux(&["has-session", "-t", &session]).status.success()
-    });
+    session.send_keys(&["q"]);
+    wait_until("watch to quit", || !session.is_running());
 }
 
 #[test]

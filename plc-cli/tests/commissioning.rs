@@ -4,12 +4,12 @@
 
 mod common;
 
-use common::{plc, stderr, stdout, terminate, wait_until};
+use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, terminate, wait_until};
 use plc_core::GlobalMemory;
 use plc_io::Runtime;
 use std::fs::File;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::Duration;
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -46,7 +46,7 @@ fn counter_role() {
 }
 
 /// A program in another process, stopped (as Ctrl-C would) when dropped.
-struct Program(Child);
+struct Program(ChildGuard);
 
 impl Drop for Program {
     fn drop(&mut self) {
@@ -61,7 +61,7 @@ fn counter(segment: &str, period_us: u64) -> Program {
         .env("SEGMENT", segment)
         .env("PERIOD_US", period_us.to_string())
         .stdout(Stdio::null())
-        .spawn()
+        .spawn_guarded()
         .unwrap();
     let p = Program(child);
     wait_until("the program to start", || {
@@ -87,7 +87,7 @@ fn tensile_tester(dir: &Path, segment: &str) -> (Program, PathBuf) {
         .arg(dir.join("retain"))
         .stdout(log.try_clone().unwrap())
         .stderr(log)
-        .spawn()
+        .spawn_guarded()
         .unwrap();
     let p = Program(child);
     wait_until("the tensile tester to start", || {

@@ -5,18 +5,10 @@
 
 use std::fs::File;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// A child process, killed when the test ends however it ends.
-struct Running(Child);
-
-impl Drop for Running {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
+use plc_test_support::{ChildGuard, SpawnGuarded};
 
 /// The venv's python, which has asyncua.
 fn python() -> PathBuf {
@@ -41,7 +33,7 @@ fn tensile_tester() -> PathBuf {
     path
 }
 
-fn start_program(dir: &Path, segment: &str, n: usize) -> Running {
+fn start_program(dir: &Path, segment: &str, n: usize) -> ChildGuard {
     let log = File::create(dir.join(format!("tensile_tester-{n}.log"))).expect("log file");
     let child = Command::new(tensile_tester())
         .args(["--segment", segment])
@@ -49,15 +41,15 @@ fn start_program(dir: &Path, segment: &str, n: usize) -> Running {
         .arg(dir.join("retain"))
         .stdout(log.try_clone().expect("log file"))
         .stderr(log)
-        .spawn()
+        .spawn_guarded()
         .expect("tensile_tester starts");
     wait_for(&format!("segment {segment}"), || {
         Command::new(env!("CARGO_BIN_EXE_plc"))
             .args(["get", segment, "state_cycles"])
-            .output()
+            .output_guarded()
             .is_ok_and(|o| o.status.success())
     });
-    Running(child)
+    child
 }
 
 fn wait_for(what: &str, mut ready: impl FnMut() -> bool) {
@@ -76,7 +68,7 @@ fn client(dir: &Path, args: &[&str]) {
     let out = Command::new(python())
         .arg(script)
         .args(args)
-        .output()
+        .output_guarded()
         .expect("python starts");
     let stdout = String::from_utf8_lossy(&out.stdout);
     print!("{stdout}");
@@ -105,7 +97,7 @@ fn client(dir: &Path, args: &[&str]) {
 
 /// `plc opcua serve SEGMENT` on localhost, its certificates in `dir/pki`, its output in
 /// `dir/server.log`; returns once it accepts connections.
-fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (Running, u16) {
+fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (ChildGuard, u16) {
     let port = free_port();
     let log = File::create(dir.join("server.log")).expect("log file");
     let mut command = Command::new(env!("CARGO_BIN_EXE_plc"));
@@ -119,7 +111,7 @@ fn serve(dir: &Path, segment: &str, users: Option<&Path>) -> (Running, u16) {
     if let Some(users) = users {
         command.arg("--users").arg(users);
     }
-    let server = Running(command.spawn().expect("plc opcua serve starts"));
+    let server = command.spawn_guarded().expect("plc opcua serve starts");
     wait_for("the OPC UA server", || {
         std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
     });
@@ -135,7 +127,7 @@ fn add_user(dir: &Path) -> PathBuf {
         .arg(&users)
         .arg("operator")
         .stdin(Stdio::piped())
-        .spawn()
+        .spawn_guarded()
         .expect("plc opcua user add starts");
     use std::io::Write;
     add.stdin
@@ -219,8 +211,8 @@ fn an_independent_opcua_client_browses_reads_subscribes_writes_and_follows_a_res
     );
 
     // The program killed: values Bad; started again (a takeover of its segment): Good again.
-    let _ = program.0.kill();
-    let _ = program.0.wait();
+    let _ = program.kill();
+    let _ = program.wait();
     client(&dir, &["values", &url, &segment, "bad"]);
     program = start_program(&dir, &segment, 2);
     client(&dir, &["values", &url, &segment, "good"]);
@@ -416,7 +408,7 @@ fn attackers_on_loopback_cannot_lock_out_an_operator_or_exhaust_the_server() {
     let (server, port) = serve(&dir, &segment, Some(&users));
     let url = format!("opc.tcp://127.0.0.1:{port}/");
     let (pki, work) = (dir.join("pki"), dir.to_str().expect("a UTF-8 temp dir"));
-    let pid = server.0.id().to_string();
+    let pid = server.id().to_string();
     client(
         &dir,
         &[

@@ -5,10 +5,11 @@
 use plc_core::{GlobalMemory, PlcStruct};
 mod common;
 
-use common::{plc, stderr, stdout, terminate, wait_until};
+use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, terminate, wait_until};
 use plc_io::Runtime;
+use plc_test_support::TmuxSession;
 use std::path::PathBuf;
-use std::process::{Child, Command, Output, Stdio};
+use std::process::{Command, Stdio};
 use std::time::Duration;
 
 #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
@@ -97,7 +98,7 @@ fn owner_role() {
 }
 
 struct Owner {
-    child: Child,
+    child: ChildGuard,
 }
 
 impl Owner {
@@ -108,7 +109,7 @@ impl Owner {
             .env("SEGMENT", segment)
             .env("RETAIN", retain)
             .stdout(Stdio::null())
-            .spawn()
+            .spawn_guarded()
             .unwrap();
         let owner = Owner { child };
         wait_until("the owner to start", || {
@@ -120,7 +121,6 @@ impl Owner {
     /// Stops it cleanly (SIGTERM: the final retain save, the segment removed).
     fn stop(mut self) {
         assert!(terminate(&mut self.child), "the owner stopped cleanly");
-        std::mem::forget(self);
     }
 }
 
@@ -254,30 +254,14 @@ fn a_nonvolatile_member_survives_a_restart_and_an_edit() {
     owner.stop();
 }
 
-fn tmux(args: &[&str]) -> Output {
-    Command::new("tmux").args(args).output().unwrap()
-}
-
 #[test]
 fn watch_shows_structures_as_a_tree_and_writes_a_member() {
     let dir = temp_dir("watch");
     let segment = format!("cli_struct_watch_{}", std::process::id());
     let owner = Owner::start("owner", &segment, &dir.join("s.retain"));
-    let session = format!("plcwatchstruct{}", std::process::id());
     let cmd = format!("{} watch {} --rate 20", env!("CARGO_BIN_EXE_plc"), segment);
-    let started = tmux(&[
-        "new-session",
-        "-d",
-        "-s",
-        &session,
-        "-x",
-        "150",
-        "-y",
-        "40",
-        &cmd,
-    ]);
-    assert!(started.status.success(), "{}", stderr(&started));
-    let screen = || stdout(&tmux(&["capture-pane", "-p", "-t", &session]));
+    let session = TmuxSession::start("plcwatchstruct", 150, 40, &cmd).unwrap();
+    let screen = || session.screen();
     wait_until("the watch window", || screen().contains("▸ axes"));
     assert!(screen().contains("Axis[2]"), "{}", screen());
     assert!(
@@ -287,27 +271,18 @@ fn watch_shows_structures_as_a_tree_and_writes_a_member() {
     );
 
     // Select `axes` (the filter leaves it first), open it, then its element [1].
-    tmux(&["send-keys", "-t", &session, "/", "axes", "Enter"]);
+    session.send_keys(&["/", "axes", "Enter"]);
     wait_until("the filter", || !screen().contains("│counter"));
-    tmux(&["send-keys", "-t", &session, "Right"]);
+    session.send_keys(&["Right"]);
     wait_until("axes open", || {
         screen().contains("▾ axes") && screen().contains("▸ [1]")
     });
-    tmux(&["send-keys", "-t", &session, "Down", "Down", "Right"]);
+    session.send_keys(&["Down", "Down", "Right"]);
     wait_until("axes[1] open", || screen().contains("▾ [1]"));
     assert!(screen().contains("target"), "{}", screen());
 
     // Down to `axes[1].target`, then write it from the window.
-    tmux(&[
-        "send-keys",
-        "-t",
-        &session,
-        "Down",
-        "Down",
-        "Enter",
-        "75.5",
-        "Enter",
-    ]);
+    session.send_keys(&["Down", "Down", "Enter", "75.5", "Enter"]);
     wait_until("the write to reach the program", || {
         get(&segment, "axes[1].target") == "axes[1].target = 75.5"
     });
@@ -316,10 +291,8 @@ fn watch_shows_structures_as_a_tree_and_writes_a_member() {
         "{}",
         screen()
     );
-    tmux(&["send-keys", "-t", &session, "q"]);
-    wait_until("watch to quit", || {
-        !tmux(&["has-session", "-t", &session]).status.success()
-    });
+    session.send_keys(&["q"]);
+    wait_until("watch to quit", || !session.is_running());
     owner.stop();
 }
 

@@ -529,6 +529,7 @@ fn a_failing_write_keeps_the_old_file_and_leaves_no_temporary_file() {
     std::fs::create_dir_all(&dir).unwrap();
     let out = dir.join("gm.rs");
     std::fs::write(&out, "// the old module\n").unwrap();
+    use plc_test_support::SpawnGuarded;
     let status = std::process::Command::new(std::env::current_exe().unwrap())
         .args([
             "a_failing_write_keeps_the_old_file_and_leaves_no_temporary_file",
@@ -536,7 +537,9 @@ fn a_failing_write_keeps_the_old_file_and_leaves_no_temporary_file() {
         ])
         .env("PLC_ATOMIC_CHILD", &out)
         .stdout(std::process::Stdio::null())
-        .status()
+        .spawn_guarded()
+        .unwrap()
+        .wait()
         .unwrap();
     assert!(status.success(), "the child's write did not fail as set up");
     assert_eq!(

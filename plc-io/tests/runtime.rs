@@ -154,18 +154,13 @@ fn a_second_ctrl_c_ends_a_program_whose_cycle_never_returns() {
         SharedGlobalMemory::<Gm>::attach(&name).ok()
     });
     std::thread::sleep(Duration::from_millis(100));
-    let pid = child.id() as i32;
-    let sigint = || {
-        // SAFETY: sending a signal to a pid we spawned.
-        unsafe { libc::kill(pid, libc::SIGINT) };
-    };
-    sigint();
+    child.signal(libc::SIGINT);
     std::thread::sleep(Duration::from_millis(500));
     assert!(
         child.try_wait().unwrap().is_none(),
         "the first Ctrl-C only asks for a stop, which a hung cycle never reaches"
     );
-    sigint();
+    child.signal(libc::SIGINT);
     let status = (0..500).find_map(|_| {
         std::thread::sleep(Duration::from_millis(20));
         child.try_wait().unwrap()

@@ -1,15 +1,18 @@
 //! What the `plc` tests share: running `plc`, reading its output, waiting for a condition, and
-//! stopping a child program as Ctrl-C would.
+//! stopping a child program as Ctrl-C would. Every child is started through
+//! `plc_test_support`, so it ends with the test that started it, whatever happens.
 #![allow(dead_code)] // each test file uses its part
 
-use std::process::{Child, Command, Output};
+use std::process::{Command, Output};
 use std::time::{Duration, Instant};
+
+pub use plc_test_support::{ChildGuard, SpawnGuarded};
 
 /// Runs `plc` with `args` and waits for it.
 pub fn plc(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_plc"))
         .args(args)
-        .output()
+        .output_guarded()
         .unwrap()
 }
 
@@ -34,9 +37,7 @@ pub fn wait_until(what: &str, mut f: impl FnMut() -> bool) {
 }
 
 /// Stops a program with SIGTERM (a clean stop: its retained values saved, its segment
-/// removed) and waits for it; whether it stopped cleanly.
-pub fn terminate(child: &mut Child) -> bool {
-    // SAFETY: signalling a child we spawned.
-    unsafe { libc::kill(child.id() as i32, libc::SIGTERM) };
-    child.wait().is_ok_and(|s| s.success())
+/// removed) and waits for it (killed after 20 s); whether it stopped cleanly.
+pub fn terminate(child: &mut ChildGuard) -> bool {
+    child.terminate().is_ok_and(|s| s.success())
 }

@@ -3,11 +3,14 @@
 // Each test binary uses a different subset of these helpers.
 #![allow(dead_code)]
 
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Runs test `test` of this binary in a child process with role `role` and extra env vars.
-pub fn spawn_role(test: &str, role: &str, env: &[(&str, String)]) -> Child {
+pub use plc_test_support::{ChildGuard, SpawnGuarded};
+
+/// Runs test `test` of this binary in a child process with role `role` and extra env vars; the
+/// child ends with the test whatever happens.
+pub fn spawn_role(test: &str, role: &str, env: &[(&str, String)]) -> ChildGuard {
     let mut cmd = Command::new(std::env::current_exe().expect("test binary path"));
     cmd.args([test, "--exact", "--nocapture", "--test-threads=1"])
         .env("PLC_TEST_ROLE", role)
@@ -16,7 +19,7 @@ pub fn spawn_role(test: &str, role: &str, env: &[(&str, String)]) -> Child {
     for (k, v) in env {
         cmd.env(k, v);
     }
-    cmd.spawn().expect("spawn child test process")
+    cmd.spawn_guarded().expect("spawn child test process")
 }
 
 /// The role this process plays, if it is a child.
@@ -42,9 +45,8 @@ pub fn wait_for<T>(limit: Duration, mut f: impl FnMut() -> Option<T>) -> T {
 }
 
 /// SIGKILL, as a crash or `kill -9` would end a process.
-pub fn kill9(child: &mut Child) {
-    // SAFETY: sending a signal to a pid we spawned.
-    unsafe { libc::kill(child.id() as i32, libc::SIGKILL) };
+pub fn kill9(child: &mut ChildGuard) {
+    child.signal(libc::SIGKILL);
     let _ = child.wait();
 }
 
