@@ -144,6 +144,44 @@ fn ranges_far_apart_get_panels_of_their_own() {
 }
 
 #[test]
+fn a_value_without_a_unit_never_shares_an_axis_that_names_one() {
+    // A running timer (seconds) and a counter of about the same range: one panel by range,
+    // but the counter is no number of seconds.
+    let columns = [
+        column("timer.ET", IecType::Ltime, None),
+        column("parts", IecType::Dint, None),
+    ];
+    let rows: Vec<Row> = (0..100u64)
+        .map(|i| Row {
+            cycle: i,
+            time_ns: i * 10_000_000,
+            values: vec![
+                Value::Time(plc_core::Time::from_millis(i as i64 * 10)),
+                Value::Int(i as i64 / 50),
+            ],
+        })
+        .collect();
+    let (texts, _) = parts(
+        &svg(
+            "t",
+            &columns,
+            &Samples::from_rows(columns.len(), &rows),
+            None,
+        )
+        .unwrap(),
+    );
+    assert!(texts.iter().any(|t| t == "timer.ET (s)"), "{texts:?}");
+    assert!(
+        texts.iter().any(|t| t == "s"),
+        "the timer's axis: {texts:?}"
+    );
+    assert!(
+        texts.iter().any(|t| t == "value"),
+        "the counter's own axis: {texts:?}"
+    );
+}
+
+#[test]
 fn no_rows_one_row_constants_and_nans_still_draw() {
     let (columns, rows) = tensile(100, 2);
     let (texts, _) =
