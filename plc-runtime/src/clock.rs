@@ -2,8 +2,8 @@
 //! and at its end, as plain nanoseconds, and nothing more. The schedule's deadlines, the
 //! program's `Context::now`, the cycle time and the wall-clock time stamped on the published
 //! values are all worked out from those two readings: every clock read costs a cycle
-//! 15-25 ns, about what the rest of its bookkeeping costs together (the repository's BENCHMARKS.md, "The
-//! runtime's cycle"), and integer nanoseconds subtract without `Instant`'s normalising.
+//! 15-25 ns, about what the rest of its bookkeeping costs together (the repository's
+//! docs/benchmarks-history.md, "The runtime's cycle"), and integer nanoseconds subtract without `Instant`'s normalising.
 
 use plc_shm::clock_ns;
 #[cfg(feature = "cycle-probe")]
