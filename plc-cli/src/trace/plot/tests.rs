@@ -69,6 +69,12 @@ fn parts(svg: &str) -> (Vec<String>, Vec<(String, usize)>) {
     (texts, lines)
 }
 
+/// The texts of the picture of `rows` of `columns`, without a trigger.
+fn texts_of(columns: &[Column], rows: &[Row]) -> Vec<String> {
+    let samples = Samples::from_rows(columns.len(), rows);
+    parts(&svg("t", columns, &samples, None).unwrap()).0
+}
+
 fn hex(c: RGBColor) -> String {
     format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
 }
@@ -127,15 +133,7 @@ fn ranges_far_apart_get_panels_of_their_own() {
                 .to_vec(),
         })
         .collect();
-    let (texts, _) = parts(
-        &svg(
-            "t",
-            &columns,
-            &Samples::from_rows(columns.len(), &rows),
-            None,
-        )
-        .unwrap(),
-    );
+    let texts = texts_of(&columns, &rows);
     assert!(
         texts.iter().any(|t| t == "kN") && texts.iter().any(|t| t == "%"),
         "{texts:?}"
@@ -161,15 +159,7 @@ fn a_value_without_a_unit_never_shares_an_axis_that_names_one() {
             ],
         })
         .collect();
-    let (texts, _) = parts(
-        &svg(
-            "t",
-            &columns,
-            &Samples::from_rows(columns.len(), &rows),
-            None,
-        )
-        .unwrap(),
-    );
+    let texts = texts_of(&columns, &rows);
     assert!(texts.iter().any(|t| t == "timer.ET (s)"), "{texts:?}");
     assert!(
         texts.iter().any(|t| t == "s"),
@@ -214,15 +204,7 @@ fn no_rows_one_row_constants_and_nans_still_draw() {
     .unwrap();
     assert!(!drawn.contains("NaN") && !drawn.contains("inf"));
     parts(&drawn);
-    let (texts, _) = parts(
-        &svg(
-            "t",
-            &columns[2..],
-            &Samples::from_rows(columns[2..].len(), &rows),
-            None,
-        )
-        .unwrap(),
-    );
+    let texts = texts_of(&columns[2..], &rows);
     assert!(
         !texts.iter().any(|t| t == "value"),
         "no numeric panel for bools only"

@@ -4,41 +4,22 @@ use super::run::{Run, Step, step};
 use crate::motion::axis::{Axis, AxisState};
 use crate::motion::error;
 
-/// MC_Home, homing on the current position: the axis's position becomes `Position` where it
-/// stands (CiA 402 homing method 37 does the same in the drive).
-#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
-#[plc(crate = "crate", name = "MC_Home", __iec_standard)]
-#[allow(non_snake_case)]
-pub struct McHome {
-    /// Input: homes on its rising edge.
-    #[plc(direction = "input")]
-    pub Execute: bool,
-    /// Input: the position the axis reads where it stands, in user units.
-    #[plc(direction = "input")]
-    pub Position: f64,
-    /// Output: homed.
-    #[plc(direction = "output")]
-    pub Done: bool,
-    /// Output: homing.
-    #[plc(direction = "output")]
-    pub Busy: bool,
-    /// Output: owns the axis.
-    #[plc(direction = "output")]
-    pub Active: bool,
-    /// Output: another block took the axis.
-    #[plc(direction = "output")]
-    pub CommandAborted: bool,
-    /// Output: refused or failed.
-    #[plc(direction = "output")]
-    pub Error: bool,
-    /// Output: why.
-    #[plc(direction = "output")]
-    pub ErrorID: u16,
-    /// State: `Execute` of the previous call.
-    pub M: bool,
+execute_block! {
+    /// MC_Home, homing on the current position: the axis's position becomes `Position` where
+    /// it stands (CiA 402 homing method 37 does the same in the drive).
+    McHome = "MC_Home" {
+        Execute: "Input: homes on its rising edge.",
+        inputs: {
+            /// Input: the position the axis reads where it stands, in user units.
+            Position: f64,
+        },
+        Done: "Output: homed.",
+        Busy: "Output: homing.",
+        CommandAborted: "Output: another block took the axis.",
+        Error: "Output: refused or failed.",
+        state: {},
+    }
 }
-
-outputs!(McHome, Done);
 
 impl McHome {
     /// Runs the block for `axis`; returns `Done`.

@@ -5,54 +5,34 @@ use super::run::{Run, Step, started, step};
 use crate::motion::axis::{Axis, motion};
 use crate::motion::profile::Limits;
 
-/// The members of the moving blocks (MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity).
+/// A moving block (MC_MoveAbsolute, MC_MoveRelative, MC_MoveVelocity): its target input
+/// (`$target`), its limits, what it reaches (`$reached`), and the number of its command.
 macro_rules! move_block {
     ($(#[$doc:meta])* $fb:ident, $name:literal, $target:ident, $target_doc:literal, $reached:ident, $reached_doc:literal) => {
-        $(#[$doc])*
-        #[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
-        #[plc(crate = "crate", name = $name, __iec_standard)]
-        #[allow(non_snake_case)]
-        pub struct $fb {
-            /// Input: starts on its rising edge.
-            #[plc(direction = "input")]
-            pub Execute: bool,
-            #[doc = $target_doc]
-            #[plc(direction = "input")]
-            pub $target: f64,
-            /// Input: the highest speed, units per second.
-            #[plc(direction = "input")]
-            pub Velocity: f64,
-            /// Input: units per second squared.
-            #[plc(direction = "input")]
-            pub Acceleration: f64,
-            /// Input: units per second squared.
-            #[plc(direction = "input")]
-            pub Deceleration: f64,
-            #[doc = $reached_doc]
-            #[plc(direction = "output")]
-            pub $reached: bool,
-            /// Output: has not finished.
-            #[plc(direction = "output")]
-            pub Busy: bool,
-            /// Output: owns the axis.
-            #[plc(direction = "output")]
-            pub Active: bool,
-            /// Output: another block took the axis.
-            #[plc(direction = "output")]
-            pub CommandAborted: bool,
-            /// Output: refused, or the axis stopped on an error.
-            #[plc(direction = "output")]
-            pub Error: bool,
-            /// Output: why.
-            #[plc(direction = "output")]
-            pub ErrorID: u16,
-            /// State: `Execute` of the previous call.
-            pub M: bool,
-            /// State: the number of the command it started.
-            pub Id: u32,
+        execute_block! {
+            $(#[$doc])*
+            $fb = $name {
+                Execute: "Input: starts on its rising edge.",
+                inputs: {
+                    #[doc = $target_doc]
+                    $target: f64,
+                    /// Input: the highest speed, units per second.
+                    Velocity: f64,
+                    /// Input: units per second squared.
+                    Acceleration: f64,
+                    /// Input: units per second squared.
+                    Deceleration: f64,
+                },
+                $reached: $reached_doc,
+                Busy: "Output: has not finished.",
+                CommandAborted: "Output: another block took the axis.",
+                Error: "Output: refused, or the axis stopped on an error.",
+                state: {
+                    /// State: the number of the command it started.
+                    Id: u32,
+                },
+            }
         }
-
-        outputs!($fb, $reached);
 
         impl $fb {
             /// Takes the call's inputs into the members; the limits they set.

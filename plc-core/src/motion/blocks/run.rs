@@ -155,3 +155,64 @@ macro_rules! outputs {
         }
     };
 }
+
+/// Declares an Execute-kind block with PLCopen's members in PLCopen's order: `Execute`, the
+/// block's own inputs, its `Done` (under the block's name for it), `Busy`, `Active`,
+/// `CommandAborted`, `Error`, `ErrorID`, then its state (`M`, `Execute` of the previous call,
+/// and the block's own); and its [`Run`] conversions (`outputs!`). Each block says in its
+/// own words what `Execute`, `Done`, `Busy`, `CommandAborted` and `Error` mean for it.
+macro_rules! execute_block {
+    (
+        $(#[$doc:meta])*
+        $fb:ident = $name:literal {
+            Execute: $execute:literal,
+            inputs: { $($(#[$input_doc:meta])* $input:ident: $input_ty:ty,)* },
+            $done:ident: $done_doc:literal,
+            Busy: $busy:literal,
+            CommandAborted: $aborted:literal,
+            Error: $error:literal,
+            state: { $($(#[$state_doc:meta])* $state:ident: $state_ty:ty,)* },
+        }
+    ) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
+        #[plc(crate = "crate", name = $name, __iec_standard)]
+        #[allow(non_snake_case)]
+        pub struct $fb {
+            #[doc = $execute]
+            #[plc(direction = "input")]
+            pub Execute: bool,
+            $(
+                $(#[$input_doc])*
+                #[plc(direction = "input")]
+                pub $input: $input_ty,
+            )*
+            #[doc = $done_doc]
+            #[plc(direction = "output")]
+            pub $done: bool,
+            #[doc = $busy]
+            #[plc(direction = "output")]
+            pub Busy: bool,
+            /// Output: owns the axis.
+            #[plc(direction = "output")]
+            pub Active: bool,
+            #[doc = $aborted]
+            #[plc(direction = "output")]
+            pub CommandAborted: bool,
+            #[doc = $error]
+            #[plc(direction = "output")]
+            pub Error: bool,
+            /// Output: why.
+            #[plc(direction = "output")]
+            pub ErrorID: u16,
+            /// State: `Execute` of the previous call.
+            pub M: bool,
+            $(
+                $(#[$state_doc])*
+                pub $state: $state_ty,
+            )*
+        }
+
+        outputs!($fb, $done);
+    };
+}

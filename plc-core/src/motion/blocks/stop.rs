@@ -5,45 +5,27 @@ use super::run::{Run, Step, started, step};
 use crate::motion::axis::{Axis, AxisState, motion};
 use crate::motion::profile::Limits;
 
-/// MC_Stop: brings the axis to rest at `Deceleration` and holds it there while `Execute`
-/// stays TRUE. As PLCopen's state diagram has it, the stop takes the axis into Stopping
-/// from any powered state (another stop included), where no move is taken; `Done` once at
-/// rest; the axis goes to Standstill once the stop is done and `Execute` is FALSE.
-#[derive(Clone, Copy, Debug, PartialEq, plc_derive::PlcStruct)]
-#[plc(crate = "crate", name = "MC_Stop", __iec_standard)]
-#[allow(non_snake_case)]
-pub struct McStop {
-    /// Input: stops on its rising edge; holds while TRUE.
-    #[plc(direction = "input")]
-    pub Execute: bool,
-    /// Input: units per second squared.
-    #[plc(direction = "input")]
-    pub Deceleration: f64,
-    /// Output: at rest.
-    #[plc(direction = "output")]
-    pub Done: bool,
-    /// Output: stopping.
-    #[plc(direction = "output")]
-    pub Busy: bool,
-    /// Output: owns the axis.
-    #[plc(direction = "output")]
-    pub Active: bool,
-    /// Output: another block took the axis (an error stop, another stop).
-    #[plc(direction = "output")]
-    pub CommandAborted: bool,
-    /// Output: refused.
-    #[plc(direction = "output")]
-    pub Error: bool,
-    /// Output: why.
-    #[plc(direction = "output")]
-    pub ErrorID: u16,
-    /// State: `Execute` of the previous call.
-    pub M: bool,
-    /// State: the number of its command.
-    pub Id: u32,
+execute_block! {
+    /// MC_Stop: brings the axis to rest at `Deceleration` and holds it there while `Execute`
+    /// stays TRUE. As PLCopen's state diagram has it, the stop takes the axis into Stopping
+    /// from any powered state (another stop included), where no move is taken; `Done` once
+    /// at rest; the axis goes to Standstill once the stop is done and `Execute` is FALSE.
+    McStop = "MC_Stop" {
+        Execute: "Input: stops on its rising edge; holds while TRUE.",
+        inputs: {
+            /// Input: units per second squared.
+            Deceleration: f64,
+        },
+        Done: "Output: at rest.",
+        Busy: "Output: stopping.",
+        CommandAborted: "Output: another block took the axis (an error stop, another stop).",
+        Error: "Output: refused.",
+        state: {
+            /// State: the number of its command.
+            Id: u32,
+        },
+    }
 }
-
-outputs!(McStop, Done);
 
 impl McStop {
     /// Runs the block for `axis`; returns `Done`.
