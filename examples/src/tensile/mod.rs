@@ -20,8 +20,8 @@ mod program;
 mod tests;
 mod vars;
 
-pub use program::{State, TickInfo, process_tick};
-pub use vars::{Axis, Gm, axis};
+pub use program::{TickInfo, process_tick};
+pub use vars::{Axis, Gm, State, axis};
 
 use ethercat_sim::{Device, SimBus};
 use plc_io::ethercat::Transport;

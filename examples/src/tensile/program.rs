@@ -1,6 +1,7 @@
 //! The tensile tester's program: the machine's state machine, one call per cycle.
 
-use super::{Gm, axis, crosshead};
+use super::crosshead;
+use super::vars::{Gm, State, axis};
 use plc_core::{FixedString, Time};
 use std::time::Duration;
 
@@ -8,50 +9,6 @@ use std::time::Duration;
 const CENTERING_TIMEOUT: Time = Time::from_secs(5);
 const LIFTING_TIMEOUT: Time = Time::from_secs(5);
 const TEST_TIMEOUT: Time = Time::from_secs(100);
-
-/// The machine states, as `machine_state` holds them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-pub enum State {
-    /// Waiting for a start.
-    Idle = 0,
-    /// Closing the centering jaws on the specimen.
-    Centering = 1,
-    /// Lifting the specimen off the lower limit.
-    Lifting = 2,
-    /// Pulling until the specimen breaks.
-    Testing = 3,
-    /// Test finished; drives off, the crosshead stopped.
-    Done = 4,
-    /// A step took too long, the bus failed or the crosshead's drive faulted; waits for
-    /// `cmd_reset` or `cmd_start`.
-    Fault = 5,
-}
-
-impl State {
-    fn from_u8(v: u8) -> State {
-        match v {
-            1 => State::Centering,
-            2 => State::Lifting,
-            3 => State::Testing,
-            4 => State::Done,
-            5 => State::Fault,
-            _ => State::Idle,
-        }
-    }
-
-    /// Lower-case name.
-    pub fn name(self) -> &'static str {
-        match self {
-            State::Idle => "idle",
-            State::Centering => "centering",
-            State::Lifting => "lifting",
-            State::Testing => "testing",
-            State::Done => "done",
-            State::Fault => "fault",
-        }
-    }
-}
 
 /// What the cycle tells the program besides the variables.
 #[derive(Clone, Copy, Debug)]

@@ -1,4 +1,5 @@
-//! The tensile tester's variables: [`Gm`] and the drives' view of the HMI ([`Axis`]).
+//! The tensile tester's variables: [`Gm`], the drives' view of the HMI ([`Axis`]) and the
+//! machine's states as `machine_state` holds them ([`State`]).
 
 use plc_core::fb::Ton;
 use plc_core::motion::{self, McHome, McMoveAbsolute, McMoveVelocity, McPower, McReset, McStop};
@@ -196,4 +197,49 @@ pub struct Gm {
     pub to_start: McMoveAbsolute,
     /// MC_Reset: resets the crosshead's drive fault when the operator acknowledges it
     pub reset: McReset,
+}
+
+/// The machine states, as `machine_state` holds them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+pub enum State {
+    /// Waiting for a start.
+    Idle = 0,
+    /// Closing the centering jaws on the specimen.
+    Centering = 1,
+    /// Lifting the specimen off the lower limit.
+    Lifting = 2,
+    /// Pulling until the specimen breaks.
+    Testing = 3,
+    /// Test finished; drives off, the crosshead stopped.
+    Done = 4,
+    /// A step took too long, the bus failed or the crosshead's drive faulted; waits for
+    /// `cmd_reset` or `cmd_start`.
+    Fault = 5,
+}
+
+impl State {
+    /// The state `machine_state` holds (an unknown number reads as Idle).
+    pub(super) fn from_u8(v: u8) -> State {
+        match v {
+            1 => State::Centering,
+            2 => State::Lifting,
+            3 => State::Testing,
+            4 => State::Done,
+            5 => State::Fault,
+            _ => State::Idle,
+        }
+    }
+
+    /// Lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            State::Idle => "idle",
+            State::Centering => "centering",
+            State::Lifting => "lifting",
+            State::Testing => "testing",
+            State::Done => "done",
+            State::Fault => "fault",
+        }
+    }
 }

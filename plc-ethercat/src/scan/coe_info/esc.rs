@@ -1,7 +1,7 @@
 //! The mailbox of a real SubDevice: its two mailbox SyncManagers, written and read through
 //! ethercrab's register access.
 
-use super::Mailbox;
+use super::mailbox::Mailbox;
 use ethercrab::{RegisterAddress, SubDevice, SubDeviceRef};
 use plc_rules::bus::sii::{Sii, SmUsage};
 use std::time::{Duration, Instant};

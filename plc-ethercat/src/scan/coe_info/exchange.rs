@@ -2,7 +2,7 @@
 //! exchange's own mailbox counter), then the answer gathered from its fragments, each checked
 //! against the mailbox, the protocol and the limits.
 
-use super::{Failure, MAX_ANSWER, MAX_FRAGMENTS, Mailbox};
+use super::mailbox::{Failure, MAX_ANSWER, MAX_FRAGMENTS, Mailbox};
 
 /// Mailbox header (6 bytes), CoE header (2), SDO information header (4).
 const MAILBOX_HEADER: usize = 6;

@@ -13,11 +13,11 @@
 //! status until it is full, and read the whole buffer (the ESC frees it when its last byte is
 //! read). An answer longer than the mailbox comes in fragments, each read in turn.
 //!
-//! Device data is hostile: every wait ends at a deadline, at most [`MAX_FRAGMENTS`] fragments
-//! and [`MAX_ANSWER`] bytes make one answer, lengths are checked against the mailbox, an
-//! answer must be for the object asked about, and nothing panics. What cannot be used is a
-//! [`Failure`], after which the entry (or the whole device) keeps the name the scan gives an
-//! entry without one.
+//! Device data is hostile: every wait ends at a deadline, at most
+//! [`MAX_FRAGMENTS`](mailbox::MAX_FRAGMENTS) fragments and [`MAX_ANSWER`](mailbox::MAX_ANSWER)
+//! bytes make one answer, lengths are checked against the mailbox, an answer must be for the
+//! object asked about, and nothing panics. What cannot be used is a [`Failure`], after which
+//! the entry (or the whole device) keeps the name the scan gives an entry without one.
 //!
 //! **Mailbox counter.** Each mailbox request carries a counter (header byte 5, bits 4-6) by
 //! which a device recognises a repeated request and may drop it. ethercrab keeps its counter
@@ -29,11 +29,13 @@
 //! back to INIT (which resets its mailbox), so the two counters never meet. The simulated
 //! devices echo whatever counter they get.
 //!
-//! The files: `exchange` builds a request and gathers its answer's fragments, `esc` carries
-//! them through a real device's SyncManagers, and this one reads the descriptions.
+//! The files, in layers: `mailbox` the carrier and what may fail, `exchange` builds a request
+//! and gathers its answer's fragments, `esc` carries them through a real device's
+//! SyncManagers, and this one reads the descriptions.
 
 mod esc;
 mod exchange;
+mod mailbox;
 #[cfg(test)]
 mod tests;
 
@@ -42,43 +44,13 @@ pub use exchange::Counter;
 use exchange::{
     GET_ENTRY_REQUEST, GET_ENTRY_RESPONSE, GET_OBJECT_REQUEST, GET_OBJECT_RESPONSE, exchange,
 };
+pub use mailbox::{Failure, Mailbox};
 use plc_rules::bus::scan::ScannedEntry;
 use std::collections::HashMap;
-
-/// Most fragments of one answer. An entry or object description fits one mailbox of any
-/// real device; a few fragments are allowed for devices with tiny mailboxes.
-pub const MAX_FRAGMENTS: usize = 16;
-
-/// Most bytes of one answer's data (a description is a few dozen bytes and a name).
-pub const MAX_ANSWER: usize = 4096;
 
 /// Longest name taken from a device (ETG object names are a few dozen characters); a longer
 /// one is not used.
 pub const MAX_NAME: usize = 128;
-/// Why a description could not be used.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Failure {
-    /// Only this object or entry: the device answered with an SDO Info Error (its abort
-    /// code), or its answer is unusable (a name too long). Other entries are still asked.
-    Entry(String),
-    /// The whole device: no answer in time, a mailbox error reply (no SDO information
-    /// service), or an answer that breaks the protocol (a length beyond the mailbox, too many
-    /// fragments, an answer for another object). It is not asked again.
-    Device(String),
-}
-
-/// A mailbox that carries one request frame to a device and its answer frames back.
-pub trait Mailbox {
-    /// Bytes the device's input mailbox holds, its 6-byte header included.
-    fn capacity(&self) -> usize;
-
-    /// Sends one request frame (mailbox header included).
-    fn send(&mut self, frame: &[u8]) -> impl Future<Output = Result<(), String>>;
-
-    /// The next frame the device puts into its input mailbox (the whole buffer), or an error
-    /// when none comes in time.
-    fn receive(&mut self) -> impl Future<Output = Result<Vec<u8>, String>>;
-}
 
 /// What Get Entry Description (or, for an unnamed entry, Get Object Description) tells of
 /// one entry.
