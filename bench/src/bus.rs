@@ -4,8 +4,8 @@
 //! tick. The two run in alternating blocks of a fixed number of cycles (so both see the same
 //! machine load), each block on a thread of its own pinned to the same CPU, under SCHED_FIFO
 //! where it is permitted; each figure is the median over the blocks. The same comparison on
-//! ethercat-sim's in-process transport follows, labelled `bus_inproc_*`. Method and results:
-//! BENCHMARKS.md, "Bus cycle".
+//! ethercat-sim's in-process transport follows, labelled `bus_inproc_*`. Method and figures:
+//! BENCHMARKS.md; the runs: docs/benchmarks-history.md, "Bus cycle".
 
 mod direct;
 mod jitter;
@@ -275,7 +275,7 @@ impl Plan<'_> {
 
 /// The figure lines of one transport, or for each figure why there is none: a bus that
 /// stopped answering in a block (on a machine too loaded for the simulator to answer within
-/// the timeout, a late answer ends ethercrab's `tx_rx_task`; BENCHMARKS.md).
+/// the timeout, a late answer ends ethercrab's `tx_rx_task`; docs/benchmarks-history.md, "Bus cycle").
 fn report_or_why(out: &mut String, label: &str, rates: Result<Vec<Rate>, String>, sched: &str) {
     match rates {
         Ok(rates) => report(out, label, &rates, sched),

@@ -158,7 +158,7 @@ fn check(dir: &Path) -> Result<f64, String> {
     };
     let failed = |status: std::process::ExitStatus| {
         // The OOM killer ends a check that needs more memory than the machine has (a
-        // 100,000-variable declaration needed more than 24 GiB: BENCHMARKS.md).
+        // 100,000-variable declaration needed more than 24 GiB: docs/benchmarks-history.md).
         let hint = if status.signal() == Some(libc::SIGKILL) {
             ": killed, most likely for want of memory (see the kernel log)"
         } else {

@@ -11,6 +11,10 @@
 //! - `--hex` and `--bin` write integers and bit strings as IEC literals of all the type's bits
 //!   in groups of four digits (`16#00FF`, `16#FFFF_FFFF`, `2#1111_1100`); a negative signed
 //!   integer as its two's complement.
+//! - For a person (`plc get`, `watch`, `forces`: [`Format::seconds`]) a TIME or LTIME is
+//!   seconds, as a real with the digits asked (`4.34 s` where the IEC literal reads
+//!   `LTIME#4s340ms4us953ns`), at full precision its exact nanoseconds (`4.340004953 s`).
+//!   `plc log`, `trace` and what a tool echoes back of a write keep the literal.
 //! - A STRING's control characters are escaped ([`escape_text`]): text a program stored, an ESC
 //!   sequence say, must not drive the terminal that shows it. A CSV cell of text that a
 //!   spreadsheet would run as a formula is kept text ([`csv_cell`]).
@@ -41,6 +45,8 @@ pub struct Format {
     pub digits: Option<u8>,
     /// How integers and bit strings are written.
     pub radix: Radix,
+    /// TIME and LTIME as seconds a person reads (`4.34 s`) instead of IEC literals.
+    pub seconds: bool,
 }
 
 /// The flags that choose a [`Format`], shared by `plc get` and `plc watch`.
@@ -68,6 +74,8 @@ impl FormatArgs {
         Format {
             digits: self.digits,
             radix,
+            // The flags are `get`'s, `watch`'s and `forces`': a person reads them.
+            seconds: true,
         }
     }
 }
@@ -88,8 +96,25 @@ pub fn value(v: &Value, iec_type: IecType, f: &Format) -> String {
             }
         },
         Value::Text(t) => escape_text(t.as_str()),
+        Value::Time(t) if f.seconds => seconds(t.as_nanos(), f.digits),
         other => other.to_string(),
     }
+}
+
+/// `ns` nanoseconds as seconds for a person: rounded to `digits` significant digits as a
+/// real is, or exact (trailing zeros dropped, `.0` kept as a real's) without.
+fn seconds(ns: i64, digits: Option<u8>) -> String {
+    if digits.is_some() {
+        return format!("{} s", real(ns as f64 / 1e9, IecType::Lreal, digits));
+    }
+    let sign = if ns < 0 { "-" } else { "" };
+    let abs = ns.unsigned_abs();
+    let fraction = format!("{:09}", abs % 1_000_000_000);
+    let fraction = match fraction.trim_end_matches('0') {
+        "" => "0",
+        kept => kept,
+    };
+    format!("{sign}{}.{fraction} s", abs / 1_000_000_000)
 }
 
 /// Text with what could act on a terminal, or hide what it shows, written out: `\n`, `\r`,
@@ -234,12 +259,14 @@ mod tests {
     const FULL: Format = Format {
         digits: None,
         radix: Radix::Decimal,
+        seconds: false,
     };
 
     fn digits(n: u8) -> Format {
         Format {
             digits: Some(n),
             radix: Radix::Decimal,
+            seconds: false,
         }
     }
 
@@ -247,6 +274,7 @@ mod tests {
         Format {
             digits: None,
             radix,
+            seconds: false,
         }
     }
 
@@ -323,6 +351,7 @@ mod tests {
             let f = Format {
                 digits: n,
                 radix: Radix::Decimal,
+                seconds: false,
             };
             let shown_now = value(&Value::Real(r), IecType::Lreal, &f);
             assert_eq!(shown_now, shown);
@@ -458,5 +487,30 @@ mod tests {
         // A CSV text cell's control characters were escaped by `value`.
         let shown = value(&text("a\nb\x1b"), IecType::String, &FULL);
         assert_eq!(csv_cell(&shown, true), "a\\nb\\x1b");
+    }
+
+    #[test]
+    fn times_read_as_seconds_for_a_person_and_as_literals_otherwise() {
+        use plc_core::Time;
+        let elapsed = Value::Time(Time::from_nanos(4_340_004_953));
+        let person = |digits| Format {
+            digits,
+            seconds: true,
+            ..FULL
+        };
+        assert_eq!(value(&elapsed, IecType::Ltime, &person(Some(4))), "4.34 s");
+        assert_eq!(value(&elapsed, IecType::Ltime, &person(Some(6))), "4.34 s");
+        assert_eq!(
+            value(&elapsed, IecType::Ltime, &person(None)),
+            "4.340004953 s"
+        );
+        let whole = Value::Time(Time::from_secs(90));
+        assert_eq!(value(&whole, IecType::Ltime, &person(None)), "90.0 s");
+        let before = Value::Time(Time::from_millis(-1500));
+        assert_eq!(value(&before, IecType::Ltime, &person(Some(3))), "-1.5 s");
+        assert_eq!(
+            value(&elapsed, IecType::Ltime, &FULL),
+            "LTIME#4s340ms4us953ns"
+        );
     }
 }

@@ -53,8 +53,8 @@ enum Command {
     Get {
         /// Segment name.
         segment: String,
-        /// Variable names (case-insensitive); `name[3]` for one array element.
-        #[arg(required = true)]
+        /// Variable names (case-insensitive); `name[3]` for one array element. None: every
+        /// variable.
         names: Vec<String>,
         #[command(flatten)]
         format: display::FormatArgs,

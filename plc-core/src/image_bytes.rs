@@ -5,7 +5,7 @@
 //! Why bytes rather than a `#[repr(C)]` struct with a field per variable: zerocopy's
 //! `derive(FromBytes)` emits several trait impls per field (field projections keyed by a
 //! const-evaluated name hash): `cargo check` after an edit of a 2,000-variable struct took
-//! 19-20 s that way, 4-5 s this way (BENCHMARKS.md). The layout is the same either way: every
+//! 19-20 s that way, 4-5 s this way (docs/benchmarks-history.md). The layout is the same either way: every
 //! `Repr` has alignment 1, so a struct of them has no padding and puts each field exactly where
 //! these offsets do.
 

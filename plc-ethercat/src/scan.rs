@@ -11,7 +11,7 @@
 //! name of its own): a drive's `x6040_00` becomes `controlword` (UINT), an EL3004's `x6000_11`
 //! `value_1` (INT). A device that refuses the service, does not answer it in time, or answers
 //! it in a way that breaks the protocol keeps the `xIIII_SS` names (a warning in the log says
-//! why); see `coe_info.rs` for the exchange.
+//! why); see `coe_info` for the exchange.
 //!
 //! Everything read is device data and is checked: the EEPROM is read category by category up
 //! to its end marker within the size it states (at most 128 KiB, [`MAX_CATEGORIES`]

@@ -2,27 +2,16 @@
 //! and at its end, as plain nanoseconds, and nothing more. The schedule's deadlines, the
 //! program's `Context::now`, the cycle time and the wall-clock time stamped on the published
 //! values are all worked out from those two readings: every clock read costs a cycle
-//! 15-25 ns, about what the rest of its bookkeeping costs together (the repository's BENCHMARKS.md, "The
-//! runtime's cycle"), and integer nanoseconds subtract without `Instant`'s normalising.
+//! 15-25 ns, about what the rest of its bookkeeping costs together (the repository's
+//! docs/benchmarks-history.md, "The runtime's cycle"), and integer nanoseconds subtract without `Instant`'s normalising.
 
+use plc_shm::clock_ns;
 #[cfg(feature = "cycle-probe")]
 use std::time::{Duration, Instant};
 
 /// CLOCK_MONOTONIC in nanoseconds: the clock `std::time::Instant` reads on Linux.
 pub(super) fn monotonic_ns() -> u64 {
     clock_ns(libc::CLOCK_MONOTONIC)
-}
-
-fn clock_ns(clock: libc::clockid_t) -> u64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: `ts` is a valid timespec to write; both clocks used here exist on Linux.
-    unsafe { libc::clock_gettime(clock, &mut ts) };
-    (ts.tv_sec as u64)
-        .saturating_mul(1_000_000_000)
-        .saturating_add(ts.tv_nsec as u64)
 }
 
 /// A reading of another clock and the monotonic nanoseconds it was taken at: read back to

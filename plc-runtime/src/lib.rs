@@ -108,13 +108,7 @@ impl StopHandle {
     /// once with exit code 1: the way out of a cycle that never returns (retained values keep
     /// their last save, which is always whole).
     pub fn stop_on_signals(&self) -> std::io::Result<()> {
-        for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-            // First the exit if a stop is already pending, then the flag: handlers of one
-            // signal run in the order they were registered.
-            signal_hook::flag::register_conditional_shutdown(sig, 1, self.0.clone())?;
-            signal_hook::flag::register(sig, self.0.clone())?;
-        }
-        Ok(())
+        plc_shm::stop_on_signals(&self.0)
     }
 }
 

@@ -24,7 +24,7 @@ pub(crate) fn add(stats: &mut CycleStats, took_ns: u64, count: u64, mean: &mut R
 /// time moves the quotient by at most one in nearly every cycle (a time within one mean of
 /// the mean), which an addition does; only a time far from the mean divides. A division per
 /// cycle cost the runtime's cycle 6-7 ns, more than all its other figures together
-/// (the repository's BENCHMARKS.md, "The runtime's cycle"); a floating-point mean drifts.
+/// (the repository's docs/benchmarks-history.md, "The runtime's cycle"); a floating-point mean drifts.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct RunningMean {
     quotient: u64,

@@ -63,6 +63,7 @@ pub mod protocol;
 mod rundir;
 mod segment;
 mod server;
+mod signals;
 mod status;
 pub mod trace;
 mod unix;
@@ -85,6 +86,8 @@ pub use policy::Sharing;
 pub use priority::normal_priority;
 pub use rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
 pub use server::{GREETING_GRACE, MAX_CONNECTIONS, MAX_PER_UID, RESERVED_FOR_WRITERS};
+pub use signals::stop_on_signals;
+pub use status::clock_ns;
 pub use status::{OwnerState, RunState, Status};
 
 /// A running (or left behind) segment, as `plc list` shows it.

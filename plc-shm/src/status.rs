@@ -136,8 +136,16 @@ pub(crate) fn utc_ns() -> u64 {
     clock_ns(libc::CLOCK_REALTIME)
 }
 
+/// `clock` (a `CLOCK_*` of `clock_gettime`) in nanoseconds, saturating; 0 if the system cannot
+/// read it (a clock this kernel lacks): the one reading of a clock in the workspace, so every
+/// caller gets the check of the call's result.
+///
+/// ```
+/// assert!(plc_shm::clock_ns(libc::CLOCK_MONOTONIC) > 0);
+/// assert_eq!(plc_shm::clock_ns(-1), 0, "no such clock: 0, not what the buffer held");
+/// ```
 #[inline]
-fn clock_ns(clock: libc::clockid_t) -> u64 {
+pub fn clock_ns(clock: libc::clockid_t) -> u64 {
     let mut ts = libc::timespec {
         tv_sec: 0,
         tv_nsec: 0,

@@ -4,7 +4,7 @@
 //! the blocks' inputs ([`command`]), and [`write()`] advances the set point and copies the
 //! drive's targets out.
 
-use super::{Gm, State};
+use super::vars::{Gm, State};
 use plc_core::motion::AxisState;
 
 /// Drive increments per mm of crosshead travel: the AKD's 2^20 increments per motor

@@ -1,5 +1,6 @@
-//! `plc get <segment> <name>...`: one consistent snapshot, every name from it, printed as
-//! the `--digits`, `--hex` and `--bin` flags ask (reals at full precision without them).
+//! `plc get <segment> [name...]`: one consistent snapshot, every name from it (every variable
+//! without names), printed as the `--digits`, `--hex` and `--bin` flags ask (reals at full
+//! precision without them; a TIME or LTIME as seconds).
 
 use super::{Error, is_path, leaves_of, resolve, show};
 use crate::display::{self, Format};
@@ -14,6 +15,19 @@ enum Wanted {
 
 pub fn run(segment: &str, names: &[String], format: &Format) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
+    // No names: every variable, as a newcomer who has not yet run `plc list` expects.
+    let every: Vec<String>;
+    let names = if names.is_empty() {
+        every = seg
+            .descriptor()
+            .variables
+            .iter()
+            .map(|v| v.name.clone())
+            .collect();
+        &every[..]
+    } else {
+        names
+    };
     let wanted: Vec<Wanted> = names
         .iter()
         .map(|n| {

@@ -65,10 +65,10 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         return Ok(());
     }
     println!(
-        "{:<28} {:<14} {:<9} {:<10} {:<36} DESCRIPTION",
+        "{:<28} {:<14} {:<9} {:<18} {:<36} DESCRIPTION",
         "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
     );
-    print_level(&seg.descriptor().variables, 0);
+    print_level(&seg.descriptor().variables, 0, None);
     let status = seg.status();
     if let Some(clocks) = &status.clocks {
         println!("\ndc: {clocks}");
@@ -94,9 +94,30 @@ fn clocks_json(c: &BusClocks) -> serde_json::Value {
     })
 }
 
+/// What a tool may do with `v`, as `plc set` decides it: `read-write`, or `read-only` with
+/// why where more than `read_only` decides it (`read-only (input)`: the hardware writes it;
+/// `read-only (status)`: the program reports it). A variable's direction decides; a
+/// member's is the interface of its block (an IN parameter is written from outside), so only
+/// its own `read_only` and its structure's access (`outer`, when tools may not write the
+/// structure) do.
+fn access(v: &plc_shm::VarDescriptor, member: bool, outer: Option<&'static str>) -> &'static str {
+    use plc_core::{Access, Direction};
+    if let Some(outer) = outer {
+        return outer;
+    }
+    match (v.access, v.direction) {
+        (Access::ReadOnly, _) => "read-only",
+        _ if member => "read-write",
+        (_, Direction::Input) => "read-only (input)",
+        _ if !v.writable_from_outside() => "read-only (status)",
+        _ => "read-write",
+    }
+}
+
 /// One line per variable of a level, a structure's members indented under it (bit-mapped
-/// bools under their source word, within the same level).
-fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize) {
+/// bools under their source word, within the same level). `outer`: the access of a
+/// structure tools may not write, which its members share.
+fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize, outer: Option<&'static str>) {
     let indent = "  ".repeat(depth);
     for v in vars {
         let (name, bit_of) = match v.bit {
@@ -107,10 +128,7 @@ fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize) {
             ),
             None => (format!("{indent}{}", v.name), None),
         };
-        let access = match v.access {
-            plc_core::Access::ReadOnly => "read-only",
-            plc_core::Access::ReadWrite => "read-write",
-        };
+        let access = access(v, depth > 0, outer);
         let place = v
             .link
             .clone()
@@ -118,7 +136,7 @@ fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize) {
             .or(bit_of)
             .unwrap_or_default();
         println!(
-            "{:<28} {:<14} {:<9} {:<10} {:<36} {}",
+            "{:<28} {:<14} {:<9} {:<18} {:<36} {}",
             name,
             type_text(v),
             v.direction.name(),
@@ -126,6 +144,7 @@ fn print_level(vars: &[plc_shm::VarDescriptor], depth: usize) {
             place,
             v.description
         );
-        print_level(&v.members, depth + 1);
+        let read_only = access != "read-write";
+        print_level(&v.members, depth + 1, read_only.then_some(access));
     }
 }

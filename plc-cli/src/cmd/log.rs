@@ -22,14 +22,10 @@ const FLUSH_EVERY: Duration = Duration::from_secs(1);
 
 /// A flag that SIGINT (Ctrl-C) and SIGTERM set instead of ending the process, so the rows
 /// still buffered are written; a second signal while the first is pending ends it at once.
-pub(super) fn stop_on_signals() -> std::io::Result<Arc<AtomicBool>> {
+pub(super) fn stop_on_signals() -> Result<Arc<AtomicBool>, String> {
     let stop = Arc::new(AtomicBool::new(false));
-    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
-        // First the exit if a stop is already pending, then the flag: handlers of one signal
-        // run in the order they were registered.
-        signal_hook::flag::register_conditional_shutdown(sig, 1, stop.clone())?;
-        signal_hook::flag::register(sig, stop.clone())?;
-    }
+    plc_shm::stop_on_signals(&stop)
+        .map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
     Ok(stop)
 }
 
@@ -49,7 +45,7 @@ pub fn run(
     seconds: Option<f64>,
 ) -> Result<(), Error> {
     let period = period_of(rate, 10_000.0, "samples")?;
-    let stop = stop_on_signals().map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
+    let stop = stop_on_signals()?;
     let seg = DynSegment::attach(segment)?;
     // One column per name: a variable or element as before, or each value a path reaches
     // inside structures (a whole structure gives a column per member).

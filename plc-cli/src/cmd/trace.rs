@@ -142,7 +142,7 @@ pub fn run(o: &Options) -> Result<(), Error> {
         })
         .collect();
     let post = o.post.unwrap_or(DEFAULT_POST);
-    let stop = stop_on_signals().map_err(|e| format!("cannot handle Ctrl-C and SIGTERM: {e}"))?;
+    let stop = stop_on_signals()?;
     let mut trace = seg.trace(&found, o.every)?;
     let capture = Capture::new(o.pre, post, trigger);
     let keep = o.plot.is_some();

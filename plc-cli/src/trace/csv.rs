@@ -6,11 +6,13 @@
 //! - Values at full precision: integers in decimal; a REAL as the shortest text that reads back
 //!   as the same f32 (`0.1`, not the `0.10000000149011612` its f64 widening prints), an LREAL
 //!   the shortest for its f64, both with an exponent outside 1e-5..1e16; BOOLs `1`/`0`;
-//!   STRINGs as text, quoted when needed.
+//!   STRINGs as text, quoted when needed, and text a spreadsheet would run as a formula kept
+//!   text: one quoting for every CSV the tool writes ([`csv_cell`]).
 //! - LTIME in seconds with nine decimals, like `time_s`: a number a spreadsheet or a script
 //!   plots and subtracts, where the IEC literal (`LTIME#1m30s`) would be text to parse.
 
 use super::{Column, Row};
+use crate::display::csv_cell;
 use plc_core::{IecType, Value};
 use std::fmt::{Display, LowerExp, Write as _};
 use std::io::{self, Write};
@@ -31,7 +33,7 @@ impl<W: Write> CsvWriter<W> {
         let mut line = String::from("cycle,time_s");
         for c in columns {
             line.push(',');
-            field(&mut line, &c.path);
+            line.push_str(&csv_cell(&c.path, false));
         }
         line.push('\n');
         out.write_all(line.as_bytes())?;
@@ -97,7 +99,7 @@ fn value(line: &mut String, v: &Value, ty: IecType) {
         }
         Value::Real(r) if ty == IecType::Real => shortest(line, *r as f32),
         Value::Real(r) => shortest(line, *r),
-        Value::Text(t) => field(line, t.as_str()),
+        Value::Text(t) => line.push_str(&csv_cell(t.as_str(), true)),
         Value::Time(t) => seconds(line, t.as_nanos() as i128),
     }
 }
@@ -111,17 +113,6 @@ fn shortest<F: Display + LowerExp + Into<f64> + Copy>(line: &mut String, v: F) {
     } else {
         write!(line, "{v:e}")
     };
-}
-
-/// A field, quoted per RFC 4180 when it holds a comma, a quote or a line break.
-fn field(line: &mut String, s: &str) {
-    if s.contains([',', '"', '\n', '\r']) {
-        line.push('"');
-        line.push_str(&s.replace('"', "\"\""));
-        line.push('"');
-    } else {
-        line.push_str(s);
-    }
 }
 
 #[cfg(test)]
@@ -233,6 +224,17 @@ mod tests {
         assert_eq!(
             csv(&cols, &rows, None).lines().nth(1),
             Some("0,0.000000000,-0.001500000,\"a,b\"")
+        );
+    }
+
+    #[test]
+    fn text_a_spreadsheet_would_run_stays_text_and_numbers_stay_numbers() {
+        let cols = [column("s", IecType::String), column("x", IecType::Lreal)];
+        let formula = FixedString::from_str_truncate("=HYPERLINK(\"x\")");
+        let rows = [row(0, 0, vec![Value::Text(formula), Value::Real(-1.5)])];
+        assert_eq!(
+            csv(&cols, &rows, None).lines().nth(1),
+            Some("0,0.000000000,\"'=HYPERLINK(\"\"x\"\")\",-1.5")
         );
     }
 

@@ -160,6 +160,29 @@ impl Axis {
             AxisState::Stopping => return Err(error::STOPPING),
             _ => {}
         }
+        let state = if motion == self::motion::VELOCITY {
+            AxisState::ContinuousMotion
+        } else {
+            AxisState::DiscreteMotion
+        };
+        Ok(self.take(motion, target, limits, state))
+    }
+
+    /// Starts a stop (`MC_Stop`) for a new command; its number. As PLCopen's state diagram
+    /// has it, a stop takes the axis into Stopping from any powered state, Stopping included
+    /// (a second stop takes over from the first); a disabled axis or one in ErrorStop refuses.
+    pub(crate) fn stop(&mut self, limits: Limits) -> Result<u32, u16> {
+        match self.state() {
+            AxisState::Disabled => Err(error::NOT_POWERED),
+            AxisState::ErrorStop => Err(error::ERROR_STOP),
+            _ if !limits.valid() => Err(error::INVALID_PARAMETER),
+            _ => Ok(self.take(motion::VELOCITY, 0.0, limits, AxisState::Stopping)),
+        }
+    }
+
+    /// Gives the axis to a new command running `motion` towards `target` within `limits`, in
+    /// `state`; the command's number.
+    fn take(&mut self, motion: u8, target: f64, limits: Limits, state: AxisState) -> u32 {
         self.command = self.command.wrapping_add(1);
         self.motion = motion;
         self.target = target;
@@ -167,12 +190,8 @@ impl Axis {
         self.acceleration = limits.acceleration;
         self.deceleration = limits.deceleration;
         self.arrived = false;
-        self.set_state(if motion == self::motion::VELOCITY {
-            AxisState::ContinuousMotion
-        } else {
-            AxisState::DiscreteMotion
-        });
-        Ok(self.command)
+        self.set_state(state);
+        self.command
     }
 
     /// Reads the drive's measured values into user units: call it first in the cycle, after

@@ -343,6 +343,67 @@ fn a_stop_brings_the_axis_to_rest_and_holds_it_until_released() {
 }
 
 #[test]
+fn a_stop_goes_straight_to_stopping_a_second_stop_takes_over_and_done_ends_busy() {
+    let mut m = Machine::powered();
+    // From Standstill: Stopping at once, never through another state.
+    m.cycle(|m| {
+        m.stop.call(&mut m.axis, true, 800.0);
+    });
+    assert_eq!(m.axis.state(), AxisState::Stopping);
+    m.cycle(|m| {
+        m.stop.call(&mut m.axis, true, 800.0);
+    });
+    // Done ends Busy (PLCopen: Busy while not finished); the axis stays held.
+    assert!(
+        m.stop.Done && !m.stop.Busy && !m.stop.Active,
+        "{:?}",
+        m.stop
+    );
+    assert_eq!(m.axis.state(), AxisState::Stopping);
+    // A second stop while Stopping takes the axis over.
+    let mut second = McStop::default();
+    m.cycle(|m| {
+        m.stop.call(&mut m.axis, true, 800.0);
+        second.call(&mut m.axis, true, 400.0);
+    });
+    assert!(second.Busy || second.Done, "{second:?}");
+    assert!(!second.Error, "{second:?}");
+    assert_eq!(m.axis.state(), AxisState::Stopping);
+    // The first one's release no longer frees the axis: the second holds it.
+    m.cycle(|m| {
+        m.stop.call(&mut m.axis, false, 800.0);
+        second.call(&mut m.axis, true, 400.0);
+    });
+    assert_eq!(m.axis.state(), AxisState::Stopping);
+    m.cycle(|m| {
+        second.call(&mut m.axis, false, 400.0);
+    });
+    assert_eq!(m.axis.state(), AxisState::Standstill);
+    assert!(!second.Done, "Done is reset on Execute's falling edge");
+}
+
+#[test]
+fn power_is_not_valid_while_it_reports_an_error() {
+    let mut m = Machine::powered();
+    assert!(m.power.Valid && !m.power.Error);
+    m.drive.window = 20;
+    m.until(
+        2_000,
+        |m| {
+            m.power.call(&mut m.axis, true);
+            m.run.call(&mut m.axis, true, 100.0, 5_000.0, 5_000.0, 1.0);
+        },
+        |m| m.power.Error,
+    );
+    assert!(!m.power.Valid, "Error and Valid never both: {:?}", m.power);
+    let mut read = McReadActualPosition::default();
+    read.call(&m.axis, true);
+    assert!(read.Error && !read.Valid && read.ErrorID == error::DRIVE_FAULT);
+    read.call(&m.axis, false);
+    assert!(!read.Error && !read.Valid && !read.Busy);
+}
+
+#[test]
 fn moves_with_bad_limits_or_of_an_unpowered_axis_are_refused() {
     let mut m = Machine::new();
     m.cycle(|m| {

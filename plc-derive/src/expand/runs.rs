@@ -3,7 +3,7 @@
 //!
 //! Straight-line conversions cost a few bytes of machine code per variable; a 10,000-variable
 //! struct's `load_image`, `store_image` and bit moves come to about 220 KB, run once per cycle
-//! against a 32 KiB instruction cache, and the cycle stops growing linearly (BENCHMARKS.md,
+//! against a 32 KiB instruction cache, and the cycle stops growing linearly (docs/benchmarks-history.md,
 //! "Linear growth"). A run is converted in a loop over its repetitions instead. Where the
 //! fields of a run are in the image is known (one after the other); where they are in the
 //! struct only the compiler knows (a plain struct's layout is its choice), so each run carries
@@ -17,7 +17,7 @@ use quote::ToTokens;
 
 /// Fields in a run below which straight-line code is kept: short runs are as fast either way
 /// and the straight-line code is what small structs have always had. Measured with
-/// `plc-bench` (BENCHMARKS.md, "Linear growth").
+/// `plc-bench` (docs/benchmarks-history.md, "Linear growth").
 pub const MIN_RUN_FIELDS: usize = 64;
 
 /// Mapped bools in a bit run below which straight-line bit moves are kept.

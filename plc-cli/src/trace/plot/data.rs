@@ -7,11 +7,12 @@ use plc_core::{IecType, Value};
 use std::ops::Range;
 
 /// A panel being grouped: its members, the union of their values, the smallest range among
-/// them that is not zero.
+/// them that is not zero, whether its members have units.
 struct Group {
     members: Vec<usize>,
     union: Option<(f64, f64)>,
     smallest: f64,
+    with_units: bool,
 }
 
 /// Groups numeric series into panels (see the [module documentation](self)), as indices.
@@ -20,7 +21,13 @@ pub fn panels(series: &[Series]) -> Vec<Vec<usize>> {
     for (i, s) in series.iter().enumerate() {
         let own = extent(s.points.iter().map(|p| p.1));
         let range = own.map_or(0.0, |(lo, hi)| hi - lo);
+        let with_units = s.unit.is_some();
         let fits = |g: &&mut Group| {
+            // The axis names its members' units: a value without one (a counter) on an axis
+            // that says "s" would read as seconds, so the two kinds never share a panel.
+            if g.with_units != with_units {
+                return false;
+            }
             let (lo, hi) = merge(g.union, own).unwrap_or((0.0, 0.0));
             let smallest = nonzero_min(g.smallest, range);
             smallest == 0.0 || hi - lo <= SHARED_SPAN * smallest
@@ -35,6 +42,7 @@ pub fn panels(series: &[Series]) -> Vec<Vec<usize>> {
                 members: vec![i],
                 union: own,
                 smallest: range,
+                with_units,
             }),
         }
     }

@@ -9,7 +9,9 @@
 //! if the panel's span stays within [`SHARED_SPAN`] times the range of each varying variable
 //! in it, and otherwise starts a panel of its own below. One axis for all would flatten a
 //! 0.5 mm position under a 50 kN force; a panel per variable would be 64 panels; grouping by
-//! range gives one panel in the common case and a few, each readable, otherwise.
+//! range gives one panel in the common case and a few, each readable, otherwise. A panel's
+//! axis names the units of its own variables ("kN, mm"); variables without a unit (counters,
+//! plain numbers) share panels only with each other, whose axis says "value".
 //!
 //! Each line keeps at most two points per pixel of width (the lowest and the highest), so
 //! peaks survive and a minute at 4 kHz of four variables makes a file of some 65 kB.

@@ -69,6 +69,12 @@ fn parts(svg: &str) -> (Vec<String>, Vec<(String, usize)>) {
     (texts, lines)
 }
 
+/// The texts of the picture of `rows` of `columns`, without a trigger.
+fn texts_of(columns: &[Column], rows: &[Row]) -> Vec<String> {
+    let samples = Samples::from_rows(columns.len(), rows);
+    parts(&svg("t", columns, &samples, None).unwrap()).0
+}
+
 fn hex(c: RGBColor) -> String {
     format!("#{:02x}{:02x}{:02x}", c.0, c.1, c.2)
 }
@@ -127,20 +133,42 @@ fn ranges_far_apart_get_panels_of_their_own() {
                 .to_vec(),
         })
         .collect();
-    let (texts, _) = parts(
-        &svg(
-            "t",
-            &columns,
-            &Samples::from_rows(columns.len(), &rows),
-            None,
-        )
-        .unwrap(),
-    );
+    let texts = texts_of(&columns, &rows);
     assert!(
         texts.iter().any(|t| t == "kN") && texts.iter().any(|t| t == "%"),
         "{texts:?}"
     );
     assert!(texts.iter().any(|t| t == "time from first row (s)"));
+}
+
+#[test]
+fn a_value_without_a_unit_never_shares_an_axis_that_names_one() {
+    // A running timer (seconds) and a counter of about the same range: one panel by range,
+    // but the counter is no number of seconds.
+    let columns = [
+        column("timer.ET", IecType::Ltime, None),
+        column("parts", IecType::Dint, None),
+    ];
+    let rows: Vec<Row> = (0..100u64)
+        .map(|i| Row {
+            cycle: i,
+            time_ns: i * 10_000_000,
+            values: vec![
+                Value::Time(plc_core::Time::from_millis(i as i64 * 10)),
+                Value::Int(i as i64 / 50),
+            ],
+        })
+        .collect();
+    let texts = texts_of(&columns, &rows);
+    assert!(texts.iter().any(|t| t == "timer.ET (s)"), "{texts:?}");
+    assert!(
+        texts.iter().any(|t| t == "s"),
+        "the timer's axis: {texts:?}"
+    );
+    assert!(
+        texts.iter().any(|t| t == "value"),
+        "the counter's own axis: {texts:?}"
+    );
 }
 
 #[test]
@@ -176,15 +204,7 @@ fn no_rows_one_row_constants_and_nans_still_draw() {
     .unwrap();
     assert!(!drawn.contains("NaN") && !drawn.contains("inf"));
     parts(&drawn);
-    let (texts, _) = parts(
-        &svg(
-            "t",
-            &columns[2..],
-            &Samples::from_rows(columns[2..].len(), &rows),
-            None,
-        )
-        .unwrap(),
-    );
+    let texts = texts_of(&columns[2..], &rows);
     assert!(
         !texts.iter().any(|t| t == "value"),
         "no numeric panel for bools only"
