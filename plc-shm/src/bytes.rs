@@ -14,7 +14,7 @@
 //! the owner's publish of a 4.5 KB image, once per cycle, takes about 30 ns against about 75 ns
 //! for the loop (the repository's BENCHMARKS.md, "The runtime's cycle"), and a tool's snapshot likewise.
 
-use super::layout::Base;
+use crate::sys::base::Base;
 use std::sync::atomic::{AtomicU8, AtomicU64, Ordering::Relaxed};
 
 /// The `n` words from `offset` (8-aligned) and the `tail` bytes after them, bounds checked once.

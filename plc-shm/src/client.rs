@@ -6,7 +6,7 @@ use super::ShmError;
 use super::error::Cause;
 use super::mailbox::{Outcome, Ticket};
 use super::protocol::{self, Code, Reply, WriteRequest};
-use super::unix;
+use crate::sys::unix;
 use plc_core::write::Checked;
 use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
@@ -37,7 +37,7 @@ impl Client {
             Some(libc::ENOENT) => ShmError::NotFound(name.to_string()),
             // A socket nobody listens on: its owner was killed and nobody removed it yet.
             Some(libc::ECONNREFUSED) => ShmError::OwnerGone(name.to_string()),
-            _ => super::rundir::open_error(name, path, "cannot connect to", e),
+            _ => crate::sys::rundir::open_error(name, path, "cannot connect to", e),
         })?;
         let os = |what: &str, e: std::io::Error| ShmError::Os {
             name: name.to_string(),
@@ -46,7 +46,7 @@ impl Client {
         };
         let peer = unix::peer(&fd).map_err(|e| os("cannot identify the owner at", e))?;
         if peer.uid != owner {
-            return Err(super::rundir::refuse(
+            return Err(crate::sys::rundir::refuse(
                 name,
                 path,
                 format!(

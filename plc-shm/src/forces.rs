@@ -4,8 +4,9 @@
 //! it in the segment for tools; the lines it logs go to the server's thread, which writes
 //! them, so a release of 256 forces costs the cycle no terminal output.
 
-use super::layout::{Base, MAX_FORCES, Offsets};
+use super::layout::{MAX_FORCES, Offsets};
 use super::protocol::Release;
+use crate::sys::base::Base;
 use plc_core::write::{self, Checked};
 use plc_core::{GlobalMemory, Value, VarInfo};
 use std::sync::atomic::{Ordering, fence};

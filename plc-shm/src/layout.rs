@@ -1,4 +1,4 @@
-//! Where everything is in a segment, and atomic access to the shared words.
+//! Where everything is in a segment.
 //!
 //! ```text
 //! 0     header   magic, format version, layout hash, image size, generation, seqlock
@@ -17,9 +17,8 @@
 //! ...   descriptor, JSON
 //! ```
 //! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
-//! Every shared word is a naturally aligned `u64` used only through `AtomicU64`.
-
-use std::sync::atomic::{AtomicU64, Ordering};
+//! Every shared word is a naturally aligned `u64` used only through `AtomicU64`
+//! ([`Base`](crate::sys::base::Base)).
 
 /// "PLCVARS2", little endian (the segment of the socket transport, without a mailbox).
 pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS2");
@@ -136,62 +135,5 @@ impl Offsets {
     /// Word `word` of the distributed clocks (period, difference, offset).
     pub const fn c_word(&self, word: usize) -> usize {
         self.clocks + 8 * word
-    }
-}
-
-/// A mapped segment's base address; all access goes through atomics.
-#[derive(Clone, Copy, Debug)]
-pub struct Base {
-    ptr: *mut u8,
-    len: usize,
-}
-
-// SAFETY: `Base` is an address into a shared mapping that every user touches only through
-// atomic operations; sending it to another thread is as safe as sharing the mapping itself.
-unsafe impl Send for Base {}
-// SAFETY: as above: no plain reads or writes are done through it.
-unsafe impl Sync for Base {}
-
-// Small and on every publish and snapshot, which are generic and so compiled in the user's
-// crate: without `#[inline]` each of these would be a call across crates.
-impl Base {
-    /// # Safety
-    /// `ptr` must point to a mapping of at least `len` bytes, 8-byte aligned, that stays mapped
-    /// while this `Base` is used.
-    pub unsafe fn new(ptr: *mut u8, len: usize) -> Self {
-        Base { ptr, len }
-    }
-
-    #[inline]
-    pub fn len(&self) -> usize {
-        self.len
-    }
-
-    #[inline]
-    pub fn ptr(&self) -> *mut u8 {
-        self.ptr
-    }
-
-    /// The `u64` at `offset` as an atomic.
-    #[inline]
-    pub fn word(&self, offset: usize) -> &AtomicU64 {
-        assert!(
-            offset.is_multiple_of(8) && offset + 8 <= self.len,
-            "word {offset} outside segment"
-        );
-        // SAFETY: in bounds and 8-aligned (checked above; the mapping is page aligned), and the
-        // mapping outlives `self` (contract of `new`). AtomicU64 has the layout of u64, and
-        // every process accesses these bytes only atomically.
-        unsafe { &*(self.ptr.add(offset) as *const AtomicU64) }
-    }
-
-    #[inline]
-    pub fn load(&self, offset: usize) -> u64 {
-        self.word(offset).load(Ordering::Acquire)
-    }
-
-    #[inline]
-    pub fn store(&self, offset: usize, v: u64) {
-        self.word(offset).store(v, Ordering::Release)
     }
 }

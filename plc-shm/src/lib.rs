@@ -48,24 +48,19 @@ mod descriptor;
 mod dynamic;
 mod error;
 mod forces;
-mod guard;
-mod ids;
 mod io_status;
 mod layout;
 mod log_limit;
 pub mod mailbox;
-mod memfd;
 mod owner;
 mod paths;
 mod policy;
-mod priority;
 pub mod protocol;
-mod rundir;
 mod segment;
 mod server;
 mod status;
+mod sys;
 pub mod trace;
-mod unix;
 mod view;
 
 pub use bus_clocks::BusClocks;
@@ -75,17 +70,17 @@ pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use dynamic::DynSegment;
 pub use error::{Cause, ShmError};
 pub use forces::{ForceInfo, path_of, shown_in_log, utc_text};
-pub use ids::euid;
 pub use io_status::IoStatus;
 pub use layout::MAX_FORCES;
 pub use log_limit::LogLimit;
 pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
 pub use paths::{PathLocation, PathTarget};
 pub use policy::Sharing;
-pub use priority::normal_priority;
-pub use rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
 pub use server::{GREETING_GRACE, MAX_CONNECTIONS, MAX_PER_UID, RESERVED_FOR_WRITERS};
 pub use status::{OwnerState, RunState, Status};
+pub use sys::ids::euid;
+pub use sys::priority::normal_priority;
+pub use sys::rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
 
 /// A running (or left behind) segment, as `plc list` shows it.
 #[derive(Clone, Debug)]

@@ -8,10 +8,11 @@
 //! earlier writes if `set` refuses a later one.
 
 use super::forces::ForceTable;
-use super::layout::{Base, Offsets, S_MB_APPLIED, S_MB_REJECTED};
+use super::layout::{Offsets, S_MB_APPLIED, S_MB_REJECTED};
 use super::protocol::{self, Code, Reply};
-use super::status::utc_ns;
 use super::trace::Recording;
+use crate::sys::base::Base;
+use crate::sys::clock::utc_ns;
 use plc_core::write::{self, Checked, Write};
 use plc_core::{GlobalMemory, SetError, Value, VarInfo};
 use std::cell::RefCell;
@@ -168,7 +169,7 @@ impl Conn {
             which: 0,
             reason: String::new(),
         };
-        let _ = super::unix::send(
+        let _ = crate::sys::unix::send(
             self.fd.as_raw_fd(),
             &protocol::encode_reply(&reply),
             Some(fd.as_raw_fd()),
@@ -185,7 +186,7 @@ impl Conn {
             which: u16::try_from(which).unwrap_or(u16::MAX),
             reason,
         };
-        let _ = super::unix::send(
+        let _ = crate::sys::unix::send(
             self.fd.as_raw_fd(),
             &protocol::encode_reply(&reply),
             None,

@@ -6,10 +6,9 @@
 //! from the credentials the kernel gives for its peer (`SO_PEERCRED`, `SO_PEERGROUPS`): the
 //! owner's own uid writes, and so does every member of the write group, if there is one.
 
-use super::ShmError;
-use super::error::Cause;
-use super::unix::Peer;
-use std::ffi::{CStr, CString};
+use crate::ShmError;
+use crate::sys::ids::{Group, group, group_name};
+use crate::sys::unix::Peer;
 
 /// The groups a program shares its variables with, by name (resolved when the segment is
 /// created). Without either, only the program's own user reads and writes.
@@ -61,69 +60,6 @@ impl Sharing {
     }
 }
 
-/// A group resolved to its id.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Group {
-    /// Its name.
-    pub name: String,
-    /// Its id.
-    pub gid: u32,
-}
-
-/// The id of group `name`, from the system's group database.
-fn resolve(segment: &str, name: &str, role: &str) -> Result<Group, ShmError> {
-    let unknown = |why: Cause| ShmError::Os {
-        name: segment.to_string(),
-        what: format!("cannot use group `{name}` as the {role} group"),
-        error: why,
-    };
-    let c = CString::new(name).map_err(|_| unknown("the name holds a NUL byte".into()))?;
-    // SAFETY: group is plain data; getgrnam_r fills it, with its strings in `buf`.
-    let mut group: libc::group = unsafe { std::mem::zeroed() };
-    let mut result: *mut libc::group = std::ptr::null_mut();
-    let mut buf = vec![0 as libc::c_char; 1 << 16];
-    // SAFETY: valid pointers and the buffer's true length.
-    let r = unsafe {
-        libc::getgrnam_r(
-            c.as_ptr(),
-            &mut group,
-            buf.as_mut_ptr(),
-            buf.len(),
-            &mut result,
-        )
-    };
-    if r != 0 {
-        return Err(unknown(Cause::system(std::io::Error::from_raw_os_error(r))));
-    }
-    if result.is_null() {
-        return Err(unknown(Cause::Reason(format!(
-            "there is no such group on this machine (`getent group {name}`); create it \
-             (`groupadd {name}`) or name another"
-        ))));
-    }
-    Ok(Group {
-        name: name.to_string(),
-        gid: group.gr_gid,
-    })
-}
-
-/// The name of group `gid`, or its number.
-fn group_name(gid: u32) -> String {
-    // SAFETY: as in `resolve`.
-    let mut group: libc::group = unsafe { std::mem::zeroed() };
-    let mut result: *mut libc::group = std::ptr::null_mut();
-    let mut buf = vec![0 as libc::c_char; 1 << 16];
-    // SAFETY: valid pointers and the buffer's true length.
-    let r = unsafe { libc::getgrgid_r(gid, &mut group, buf.as_mut_ptr(), buf.len(), &mut result) };
-    if r == 0 && !result.is_null() {
-        // SAFETY: getgrgid_r set gr_name to a NUL-terminated string inside `buf`.
-        return unsafe { CStr::from_ptr(group.gr_name) }
-            .to_string_lossy()
-            .into_owned();
-    }
-    gid.to_string()
-}
-
 /// A program's policy, resolved.
 #[derive(Clone, Debug)]
 pub struct Policy {
@@ -141,15 +77,15 @@ impl Policy {
         let read = sharing
             .read_group
             .as_deref()
-            .map(|g| resolve(segment, g, "read"))
+            .map(|g| group(segment, g, "read"))
             .transpose()?;
         let write = sharing
             .write_group
             .as_deref()
-            .map(|g| resolve(segment, g, "write"))
+            .map(|g| group(segment, g, "write"))
             .transpose()?;
         Ok(Policy {
-            owner_uid: super::ids::euid(),
+            owner_uid: crate::sys::ids::euid(),
             read,
             write,
         })

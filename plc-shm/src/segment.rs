@@ -4,18 +4,19 @@
 use super::ShmError;
 use super::client::Client;
 use super::error::Cause;
-use super::layout::{Base, H_MAGIC, MAGIC_CLOSED};
-use super::memfd::Mapping;
+use super::layout::{H_MAGIC, MAGIC_CLOSED};
 use super::policy::Policy;
-use super::rundir;
 use super::server::{Server, Setup};
+use crate::sys::base::Base;
+use crate::sys::memfd::Mapping;
+use crate::sys::rundir;
 use std::fs::File;
 use std::os::fd::AsRawFd;
 use std::os::unix::fs::PermissionsExt;
 use std::path::PathBuf;
 use std::time::Duration;
 
-pub use super::rundir::normalise;
+pub use crate::sys::rundir::normalise;
 
 /// The largest descriptor a reader reads. A program with thousands of variables has a
 /// descriptor of a few megabytes; a larger length is taken to be damage, not read, so another
@@ -61,7 +62,7 @@ impl Segment {
     pub fn create(name: &str, size: usize, policy: &Policy) -> Result<Segment, ShmError> {
         let dir = rundir::ensure_owner_dir(name, policy.access_group())?;
         let socket = rundir::socket_path(&dir, name);
-        let limit = super::unix::max_path();
+        let limit = crate::sys::unix::max_path();
         if socket.as_os_str().len() > limit {
             return Err(ShmError::Os {
                 name: name.to_string(),
@@ -123,7 +124,8 @@ impl Segment {
             what: format!("{what} {}", path.display()),
             error: Cause::system(e),
         };
-        let listener = super::unix::listen(&path, 64).map_err(|e| os("cannot listen on", e))?;
+        let listener =
+            crate::sys::unix::listen(&path, 64).map_err(|e| os("cannot listen on", e))?;
         // The directory is ours and closed to others: nobody can have replaced the socket
         // between its creation and these calls.
         let group = setup.policy.access_group().map(|g| g.gid);

@@ -13,13 +13,14 @@
 //! timeout or does not wait, so a tool that stops reading blocks nothing but its own
 //! connection. The accepting thread also writes the lines the cycle leaves for the log.
 
-use super::layout::{Base, Offsets};
+use super::layout::Offsets;
 use super::log_limit::LogLimit;
 use super::mailbox::{Batch, Conn, Count, Counters, Kind, MAX_WAITING_WRITES};
 use super::policy::Policy;
 use super::protocol::{self, Code};
 use super::trace::Recording;
-use super::unix::{self, Peer};
+use crate::sys::base::Base;
+use crate::sys::unix::{self, Peer};
 use plc_core::VarInfo;
 use plc_core::write::Checked;
 use std::collections::HashMap;
@@ -167,7 +168,7 @@ fn write_log(shared: &Shared) {
 }
 
 fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
-    crate::normal_priority();
+    crate::sys::priority::normal_priority();
     while !shared.stop.load(Relaxed) {
         write_log(shared);
         match unix::readable(listener.as_raw_fd(), STOP_POLL) {
@@ -249,7 +250,7 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
     let spawned = std::thread::Builder::new()
         .name(format!("plc-shm-conn-{}", peer.pid))
         .spawn(move || {
-            crate::normal_priority();
+            crate::sys::priority::normal_priority();
             serve(&s, &c, &peer);
             // However it ended, the tool sees the connection closed, never a silent one.
             unix::shutdown(c.fd.as_raw_fd());

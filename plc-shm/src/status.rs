@@ -1,6 +1,8 @@
 //! The status block: what the owner reports about its cycle, and the one owner state tools show.
 
 use super::layout::*;
+use crate::sys::base::Base;
+use crate::sys::clock::now_ns;
 use crate::{BusClocks, BusState, CycleStats, IoStatus};
 use std::fmt;
 use std::time::Duration;
@@ -116,39 +118,6 @@ pub struct Status {
     pub cycle_utc_ns: u64,
     /// Values forced now (`plc force`; at most [`MAX_FORCES`](crate::MAX_FORCES)).
     pub forces: u64,
-}
-
-/// The heartbeat clock, CLOCK_MONOTONIC_COARSE: one clock for every process on the machine
-/// (in one time namespace), unlike `Instant`, whose values cannot be shared; unlike the wall
-/// clock it does not jump when the time is set, which would make a live owner look stalled or
-/// a stalled one alive. The coarse variant is read from the vDSO in a few nanoseconds (the
-/// owner stamps it on every publish); its resolution, a few milliseconds, is far below the
-/// stall threshold.
-#[inline]
-pub(crate) fn now_ns() -> u64 {
-    clock_ns(libc::CLOCK_MONOTONIC_COARSE)
-}
-
-/// The wall clock, CLOCK_REALTIME, in nanoseconds since the Unix epoch: the time a cycle's
-/// values were produced, as other machines' clocks read it.
-#[inline]
-pub(crate) fn utc_ns() -> u64 {
-    clock_ns(libc::CLOCK_REALTIME)
-}
-
-#[inline]
-fn clock_ns(clock: libc::clockid_t) -> u64 {
-    let mut ts = libc::timespec {
-        tv_sec: 0,
-        tv_nsec: 0,
-    };
-    // SAFETY: clock_gettime writes one timespec into the valid one we pass.
-    if unsafe { libc::clock_gettime(clock, &mut ts) } != 0 {
-        return 0;
-    }
-    (ts.tv_sec as u64)
-        .saturating_mul(1_000_000_000)
-        .saturating_add(ts.tv_nsec as u64)
 }
 
 impl Status {

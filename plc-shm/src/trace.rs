@@ -17,9 +17,9 @@
 //! to be, never skipped in silence.
 
 use super::ShmError;
-use super::layout::Base;
-use super::memfd::Mapping;
 use super::paths::PathLocation;
+use crate::sys::base::Base;
+use crate::sys::memfd::Mapping;
 use plc_core::{IecType, TypeFamily, Value, VarInfo};
 use std::os::fd::OwnedFd;
 use std::sync::Arc;

@@ -10,6 +10,7 @@ use super::mailbox::{Outcome, Ticket};
 use super::segment::{self, MAX_DESCRIPTOR, MAX_IMAGE, Segment};
 use super::status::{OwnerState, RunState, Status};
 use super::{ShmError, bytes};
+use crate::sys::base::Base;
 use plc_core::Value;
 use plc_core::write::{self, Checked, Write};
 use std::cell::{Cell, OnceCell};

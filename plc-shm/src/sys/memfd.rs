@@ -6,8 +6,8 @@
 //! the descriptor over the segment's socket and map it read-only: the seals are the kernel's,
 //! so they hold against any process, the owner's own user's included.
 
+use super::base::Base;
 use super::guard::Guard;
-use super::layout::Base;
 use std::io;
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
 

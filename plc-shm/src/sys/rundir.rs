@@ -18,10 +18,10 @@
 //! leaves behind is removed by the next owner of this user that starts in the directory,
 //! whatever its name, once it holds that name's lock (so that owner is gone).
 
-use super::ShmError;
-use super::error::Cause;
+use super::ids::Group;
 use super::ids::euid;
-use super::policy::Group;
+use crate::ShmError;
+use crate::error::Cause;
 use std::fs::{File, OpenOptions};
 use std::io;
 use std::os::fd::AsRawFd;
