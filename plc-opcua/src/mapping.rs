@@ -312,7 +312,7 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
         // lock, not to change the value (BadOutOfRange), the user (BadUserAccessDenied) or the
         // node's access (BadNotWritable: its AccessLevel still allows writing, rightly).
         ShmError::Forced { .. } => StatusCode::BadLocked,
-        ShmError::MailboxFull(_) => StatusCode::BadTooManyOperations,
+        ShmError::QueueFull(_) => StatusCode::BadTooManyOperations,
         ShmError::OwnerGone(_) | ShmError::Replaced(_) | ShmError::Closed { .. } => {
             StatusCode::BadNoCommunication
         }

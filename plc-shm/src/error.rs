@@ -1,8 +1,6 @@
 //! Errors of shared memory, each naming the segment or variable and what to do.
 
-use crate::VarDescriptor;
 use plc_core::ValueError;
-use plc_core::write::Refusal;
 use std::fmt;
 use std::sync::Arc;
 
@@ -66,7 +64,8 @@ pub enum ShmError {
     },
     /// The owning program is gone (no live process holds the segment's lock).
     OwnerGone(String),
-    /// A new owner took the segment over since this handle attached.
+    /// The segment's header names another generation than the one this handle attached to:
+    /// the segment was replaced under it (as an online change with a changed layout will).
     Replaced(String),
     /// The owner stopped (cleanly, or after a fault) and removed the segment since this handle
     /// attached: nothing is published into it and no write is applied any more.
@@ -81,14 +80,14 @@ pub enum ShmError {
     /// No variable of this name.
     UnknownVariable {
         /// Segment.
-        segment: String,
+        name: String,
         /// The name asked for.
         variable: String,
     },
     /// A path that names no basic value of the segment.
     BadPath {
         /// Segment.
-        segment: String,
+        name: String,
         /// The path given.
         path: String,
         /// Why it names nothing.
@@ -117,8 +116,8 @@ pub enum ShmError {
         /// Elements of the variable.
         len: usize,
     },
-    /// Too many writes wait for the owner already (it has not applied earlier ones yet).
-    MailboxFull(String),
+    /// Too many requests wait for the owner already (it has not applied earlier ones yet).
+    QueueFull(String),
     /// Only the owner may do this.
     NotOwner(String),
     /// The operating system refused access to the segment's file.
@@ -174,6 +173,58 @@ pub enum ShmError {
         /// How long the tool waited.
         waited: std::time::Duration,
     },
+    /// The segment's socket would have a longer path than a Unix socket may.
+    SocketPathTooLong {
+        /// Segment.
+        name: String,
+        /// The socket's path.
+        path: std::path::PathBuf,
+        /// The longest path a Unix socket may have, in bytes.
+        most: usize,
+    },
+    /// The owner did not send its greeting in time.
+    NoGreeting {
+        /// Segment.
+        name: String,
+        /// The socket.
+        path: std::path::PathBuf,
+        /// How long the tool waited.
+        waited: std::time::Duration,
+    },
+    /// The owner turned the connection away (it has as many as it takes).
+    TurnedAway {
+        /// Segment.
+        name: String,
+        /// The owner's reason.
+        reason: String,
+    },
+    /// A request of no values, or of more than one request holds.
+    RequestCount {
+        /// Segment.
+        name: String,
+        /// What was counted: writes, forces, releases, traced values.
+        what: &'static str,
+        /// How many were given.
+        count: usize,
+        /// How many one request holds at most.
+        most: usize,
+    },
+    /// Writes whose texts take more bytes than one message holds.
+    RequestTooLarge {
+        /// Segment.
+        name: String,
+        /// The bytes the request would take.
+        bytes: usize,
+        /// The bytes a message holds at most.
+        most: usize,
+    },
+    /// A value a trace cannot record (a STRING).
+    NotTraceable {
+        /// Segment.
+        name: String,
+        /// The value's path.
+        path: String,
+    },
     /// The owner sent something that is not the segment protocol.
     Protocol {
         /// Segment.
@@ -181,24 +232,6 @@ pub enum ShmError {
         /// What was wrong.
         why: String,
     },
-}
-
-/// A refusal of the one write check, as a tool's error for segment `segment`.
-pub(crate) fn refusal(segment: &str, r: Refusal<'_, VarDescriptor>) -> ShmError {
-    let variable = r.label().to_string();
-    match r {
-        Refusal::NoVariable { index, .. } => ShmError::UnknownVariable {
-            segment: segment.to_string(),
-            variable: format!("number {index}"),
-        },
-        Refusal::NotWritable { reason, .. } => ShmError::NotWritable { variable, reason },
-        Refusal::NoElement { leaf, len, .. } => ShmError::ElementOutOfRange {
-            variable,
-            element: leaf,
-            len,
-        },
-        Refusal::Value { error, .. } => ShmError::Value { variable, error },
-    }
 }
 
 impl fmt::Display for ShmError {
@@ -250,7 +283,7 @@ impl fmt::Display for ShmError {
             ),
             ShmError::Replaced(n) => write!(
                 f,
-                "segment `{n}` was taken over by a new owner: attach again"
+                "segment `{n}` was replaced since this tool attached to it: attach again"
             ),
             ShmError::Closed {
                 name,
@@ -273,17 +306,13 @@ impl fmt::Display for ShmError {
                 "segment `{n}`: the owner stayed in the middle of a write (it may have died \
                  while publishing); attach again once it is restarted"
             ),
-            ShmError::UnknownVariable { segment, variable } => write!(
+            ShmError::UnknownVariable { name, variable } => write!(
                 f,
-                "segment `{segment}` has no variable `{variable}` (`plc list {segment}` shows them)"
+                "segment `{name}` has no variable `{variable}` (`plc list {name}` shows them)"
             ),
-            ShmError::BadPath {
-                segment,
-                path,
-                reason,
-            } => write!(
+            ShmError::BadPath { name, path, reason } => write!(
                 f,
-                "segment `{segment}`: `{path}`: {reason} (`plc list {segment}` shows the variables)"
+                "segment `{name}`: `{path}`: {reason} (`plc list {name}` shows the variables)"
             ),
             ShmError::NotWritable { variable, reason } => {
                 write!(f, "`{variable}` cannot be written: {reason}")
@@ -297,7 +326,7 @@ impl fmt::Display for ShmError {
                 f,
                 "`{variable}` has {len} elements: element {element} is out of range 0..{len}"
             ),
-            ShmError::MailboxFull(n) => write!(
+            ShmError::QueueFull(n) => write!(
                 f,
                 "segment `{n}`: too many writes wait for the program already (is it running? \
                  `plc list` shows its state); try again"
@@ -343,6 +372,49 @@ impl fmt::Display for ShmError {
                 "segment `{name}`: the program did not answer the write within {:.1} s (is it \
                  running? `plc list` shows its state); it may still apply it",
                 waited.as_secs_f64()
+            ),
+            ShmError::SocketPathTooLong { name, path, most } => write!(
+                f,
+                "segment `{name}`: cannot make the socket {}: a Unix socket's path has at most \
+                 {most} bytes: choose a shorter segment name, or a shorter directory ({})",
+                path.display(),
+                crate::env::RUNTIME_DIR_ENV
+            ),
+            ShmError::NoGreeting { name, path, waited } => write!(
+                f,
+                "segment `{name}`: no greeting from {} within {waited:?}: the program is stalled \
+                 or too busy (`plc list` shows its state); try again",
+                path.display()
+            ),
+            ShmError::TurnedAway { name, reason } => write!(
+                f,
+                "segment `{name}`: {reason}; close another tool of this program, or try again"
+            ),
+            ShmError::RequestCount {
+                name,
+                what,
+                count,
+                most,
+            } => {
+                write!(
+                    f,
+                    "segment `{name}`: cannot send {count} {what} as one request: a request \
+                     holds 1 to {most}"
+                )?;
+                if *count > *most {
+                    write!(f, "; send them in parts")?;
+                }
+                Ok(())
+            }
+            ShmError::RequestTooLarge { name, bytes, most } => write!(
+                f,
+                "segment `{name}`: the writes take {bytes} bytes and a request at most {most}: \
+                 send the texts in parts"
+            ),
+            ShmError::NotTraceable { name, path } => write!(
+                f,
+                "segment `{name}`: cannot trace `{path}`: it is a STRING, and a trace records \
+                 numbers, BOOLs and times; leave it out"
             ),
             ShmError::Protocol { name, why } => write!(
                 f,

@@ -105,7 +105,7 @@ pub fn list(segment: &str, format: &Format) -> Result<(), Error> {
             .locate(&path)
             .ok()
             .and_then(|at| {
-                let v = seg.value_at_location(&image, &at)?;
+                let v = at.var.value_in(&image, 0)?;
                 Some(display::value(&v, at.var.iec_type, format))
             })
             .unwrap_or_else(|| "?".into());

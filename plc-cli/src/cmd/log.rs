@@ -101,7 +101,8 @@ pub fn run(
                     seg.descriptor().variables[*i].iec_type == IecType::String,
                 ),
                 Column::Path(at) => csv_cell(
-                    &seg.value_at_location(&image, at)
+                    &at.var
+                        .value_in(&image, 0)
                         .map_or("?".to_string(), |v| value(&v, at.var.iec_type, &full)),
                     at.var.iec_type == IecType::String,
                 ),

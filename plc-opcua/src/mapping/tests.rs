@@ -248,7 +248,7 @@ fn refusals_map_to_the_status_codes_of_the_standard() {
         StatusCode::BadNoCommunication
     );
     assert_eq!(
-        write_refusal(&ShmError::MailboxFull("s".into())),
+        write_refusal(&ShmError::QueueFull("s".into())),
         StatusCode::BadTooManyOperations
     );
 }

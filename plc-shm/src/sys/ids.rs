@@ -2,8 +2,8 @@
 //! directory, its policy and the retained values' files), and the system's groups by name and
 //! by id.
 
-use crate::ShmError;
 use crate::error::Cause;
+use crate::error::ShmError;
 use std::ffi::{CStr, CString};
 
 /// This process's effective uid.

@@ -20,8 +20,8 @@
 
 use super::ids::Group;
 use super::ids::euid;
-use crate::ShmError;
 use crate::error::Cause;
+use crate::error::ShmError;
 use std::fs::{File, OpenOptions};
 use std::io;
 use std::os::fd::AsRawFd;
@@ -29,9 +29,7 @@ use std::os::unix::fs::{DirBuilderExt, FileTypeExt, MetadataExt, OpenOptionsExt,
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-/// The environment variable that names the runtime directory (tests, several instances,
-/// tools reading another user's programs).
-pub const RUNTIME_DIR_ENV: &str = "PLC_VARS_RUNTIME_DIR";
+use crate::env::RUNTIME_DIR_ENV;
 
 /// The program's segment name from what a user typed: `press`, `plc.press` or a path to its
 /// socket (`/run/plc-vars/press.sock`) all mean `press`.

@@ -3,6 +3,7 @@
 //! credentials (`SO_PEERCRED`, `SO_PEERGROUPS`). The standard library has no seqpacket sockets
 //! and no stable descriptor passing.
 
+use crate::limits::MAX_PEER_GROUPS;
 use std::io;
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd, RawFd};
 use std::os::unix::ffi::OsStrExt;
@@ -11,9 +12,6 @@ use std::time::Duration;
 
 /// `SO_PEERGROUPS` (Linux 4.13; the same number on x86-64 and arm64).
 const SO_PEERGROUPS: libc::c_int = 59;
-/// The most supplementary groups read from a peer (Linux allows 65536; a process in more than
-/// this many is checked against the first ones only).
-const MAX_PEER_GROUPS: usize = 1024;
 
 fn check(r: libc::c_int) -> io::Result<libc::c_int> {
     if r < 0 {

@@ -2,10 +2,9 @@
 //! resolved against the segment's descriptor the way the program's own
 //! `GlobalMemory::find` resolves them, so a tool without the Rust types reaches every member.
 
-use super::codec;
-use super::descriptor::VarDescriptor;
 use super::dynamic::DynSegment;
-use super::error::ShmError;
+use crate::error::ShmError;
+use crate::format::descriptor::VarDescriptor;
 use plc_core::Value;
 
 /// One basic value of a segment, found by its path.
@@ -84,7 +83,7 @@ impl DynSegment {
     pub fn locate(&self, path: &str) -> Result<PathLocation, ShmError> {
         let found = plc_rules::path::locate(&self.descriptor().variables, path).map_err(|e| {
             ShmError::BadPath {
-                segment: self.name().to_string(),
+                name: self.name().to_string(),
                 path: path.to_string(),
                 reason: e.to_string(),
             }
@@ -105,18 +104,6 @@ impl DynSegment {
             var,
             writable: found.writable,
         })
-    }
-
-    /// Element `element` of a variable or member described by `var` (its offset absolute in
-    /// the image, as tools that walk the structures hold it) in an image from
-    /// [`snapshot_bytes`](Self::snapshot_bytes).
-    pub fn value_of(&self, image: &[u8], var: &VarDescriptor, element: usize) -> Option<Value> {
-        codec::decode(image, var, element)
-    }
-
-    /// The value at a location in an image from [`snapshot_bytes`](Self::snapshot_bytes).
-    pub fn value_at_location(&self, image: &[u8], at: &PathLocation) -> Option<Value> {
-        codec::decode(image, &at.var, 0)
     }
 
     /// Writes a value found by its path, checked as [`check_location`](Self::check_location)

@@ -13,13 +13,18 @@
 //! timeout or does not wait, so a tool that stops reading blocks nothing but its own
 //! connection. The accepting thread also writes the lines the cycle leaves for the log.
 
-use super::layout::Offsets;
-use super::log_limit::LogLimit;
-use super::mailbox::{Batch, Conn, Count, Counters, Kind, MAX_WAITING_WRITES};
 use super::policy::Policy;
-use super::protocol::{self, Code};
-use super::trace::Recording;
+use super::recording::Recording;
+use super::requests::{self, Batch, Conn, Count, Counters, Kind};
+use crate::format::layout::{Offsets, S_PERIOD_NS};
+use crate::limits::{
+    GREETING_GRACE, MAX_CONNECTIONS, MAX_OUTSTANDING, MAX_PER_UID, MAX_QUEUED, MAX_TRACES,
+    MAX_WAITING_WRITES, RESERVED_FOR_WRITERS,
+};
+use crate::log_limit::LogLimit;
+use crate::protocol::{self, Code};
 use crate::sys::base::Base;
+use crate::sys::priority::normal_priority;
 use crate::sys::unix::{self, Peer};
 use plc_core::VarInfo;
 use plc_core::write::Checked;
@@ -31,24 +36,10 @@ use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
 use std::time::Duration;
 
-/// Connections at once.
-pub const MAX_CONNECTIONS: usize = 64;
-/// Of those, the places kept for tools that may write (the owner's uid, the write group):
-/// readers of other uids cannot lock out `plc set` or the OPC UA server.
-pub const RESERVED_FOR_WRITERS: usize = 8;
-/// Connections of one user at once: one user cannot take every place.
-pub const MAX_PER_UID: usize = 32;
-/// How long a tool has to take its greeting (and the segment with it): a connection that
-/// holds no segment after that is closed, so idle connections cannot keep places.
-pub const GREETING_GRACE: Duration = Duration::from_secs(5);
-/// Requests of one connection waiting for the cycle thread.
-pub const MAX_OUTSTANDING: usize = 64;
-/// Requests waiting for the cycle thread, from all connections.
-pub const QUEUE: usize = 1024;
-/// Traces recorded at once (each costs the cycle a row's copy).
-pub const MAX_TRACES: usize = 4;
 /// How long a send to a tool (the greeting, a refusal) may wait for room.
 const SEND_TIMEOUT: Duration = Duration::from_secs(1);
+/// Log lines the accepting thread writes per look at the channel (which is bounded too).
+const LOG_LINES_PER_CALL: usize = 4096;
 /// How often the accepting thread looks whether it should stop.
 const STOP_POLL: Duration = Duration::from_millis(50);
 
@@ -162,13 +153,13 @@ fn write_log(shared: &Shared) {
         return;
     };
     // Bounded per call; the channel is bounded too.
-    for line in rx.try_iter().take(4096) {
+    for line in rx.try_iter().take(LOG_LINES_PER_CALL) {
         log::info!(target: "plc_io::shm", "segment `{}`: {line}", shared.name);
     }
 }
 
 fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
-    crate::sys::priority::normal_priority();
+    normal_priority();
     while !shared.stop.load(Relaxed) {
         write_log(shared);
         match unix::readable(listener.as_raw_fd(), STOP_POLL) {
@@ -250,7 +241,7 @@ fn admit(shared: &Arc<Shared>, fd: OwnedFd) {
     let spawned = std::thread::Builder::new()
         .name(format!("plc-shm-conn-{}", peer.pid))
         .spawn(move || {
-            crate::sys::priority::normal_priority();
+            normal_priority();
             serve(&s, &c, &peer);
             // However it ended, the tool sees the connection closed, never a silent one.
             unix::shutdown(c.fd.as_raw_fd());
@@ -388,14 +379,14 @@ impl Session<'_> {
     /// refusal is answered here.
     fn validated(&self, request: &protocol::WriteRequest, force: bool) -> Option<Vec<Checked>> {
         let shared = self.shared;
-        match super::mailbox::validate(shared.vars, request, force) {
+        match requests::validate(shared.vars, request, force) {
             Ok(w) => Some(w),
-            Err((which, why)) => {
+            Err(refused) => {
                 let n = request.writes.len() as u64;
                 shared
                     .counters
                     .add(Count::Rejected, n, &shared.base, &shared.off);
-                self.conn.answer(request.id, Code::Rejected, which, why);
+                self.conn.refuse(request.id, refused);
                 None
             }
         }
@@ -405,7 +396,7 @@ impl Session<'_> {
     /// anyway), one per connection, [`MAX_TRACES`] at once, of which tools that may not write
     /// take half at most. The ring goes to the tool with the answer; the cycle records from
     /// the next cycle on.
-    fn trace(&mut self, trace: protocol::Trace) {
+    fn trace(&mut self, trace: protocol::TraceRequest) {
         let shared = self.shared;
         let busy = |why: String| self.conn.answer(trace.id, Code::Busy, 0, why);
         if self.trace.is_some() {
@@ -425,7 +416,7 @@ impl Session<'_> {
                  may write): end one first"
             ));
         }
-        let period_ns = shared.base.load(super::layout::S_PERIOD_NS);
+        let period_ns = shared.base.load(S_PERIOD_NS);
         let made = Recording::create(
             &shared.name,
             shared.vars,
@@ -435,13 +426,13 @@ impl Session<'_> {
         );
         let (recording, fd) = match made {
             Ok(r) => r,
-            Err((which, why)) => {
+            Err(refused) => {
                 shared.traces.fetch_sub(1, Relaxed);
-                return self.conn.answer(trace.id, Code::Rejected, which, why);
+                return self.conn.refuse(trace.id, refused);
             }
         };
         let left = recording.left.clone();
-        if self.queue(trace.id, Kind::Trace(Box::new(recording))) {
+        if self.queue(trace.id, Kind::Record(Box::new(recording))) {
             self.trace = Some(left);
             self.conn.answer_with(trace.id, Code::Applied, &fd);
         } else {
@@ -495,7 +486,7 @@ impl Session<'_> {
                     b.id,
                     Code::Busy,
                     0,
-                    format!("{QUEUE} requests wait for the program already"),
+                    format!("{MAX_QUEUED} requests wait for the program already"),
                 );
                 false
             }

@@ -1,5 +1,5 @@
-//! Writes from outside, on the owner's side: the requests its socket server accepted, queued
-//! (bounded) for the cycle thread, which applies them at the start of its next cycle in
+//! Requests from outside, on the owner's side: the writes, forces, releases and traces its
+//! socket server accepted, queued (bounded) for the cycle thread, which applies them at the start of its next cycle in
 //! order, each request all or none; and the counters tools see in the status block.
 //!
 //! The server thread checks each request against the program's own declaration (not the
@@ -8,11 +8,14 @@
 //! earlier writes if `set` refuses a later one.
 
 use super::forces::ForceTable;
-use super::layout::{Offsets, S_MB_APPLIED, S_MB_REJECTED};
-use super::protocol::{self, Code, Reply};
-use super::trace::Recording;
+use super::recording::Recording;
+use super::refused::Refused;
+use crate::format::layout::{Offsets, S_WRITES_APPLIED, S_WRITES_REJECTED};
+use crate::limits::{PER_CYCLE, PER_CYCLE_WRITES};
+use crate::protocol::{self, Code, Reply};
 use crate::sys::base::Base;
 use crate::sys::clock::utc_ns;
+use crate::sys::unix;
 use plc_core::write::{self, Checked, Write};
 use plc_core::{GlobalMemory, SetError, Value, VarInfo};
 use std::cell::RefCell;
@@ -21,40 +24,6 @@ use std::os::fd::{AsRawFd, OwnedFd};
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
 use std::sync::mpsc::{Receiver, TryRecvError};
 use std::sync::{Arc, Mutex};
-
-/// A posted request's number, to ask what became of it
-/// ([`DynSegment::outcome`](super::DynSegment::outcome)).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Ticket(pub(crate) u64);
-
-/// What became of a posted request.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Outcome {
-    /// Sent; the owner has not answered yet.
-    Pending,
-    /// The owner applied it.
-    Applied,
-    /// The owner refused it: the variable may not be written from outside, or the program's
-    /// `set` refused the value.
-    Rejected,
-    /// The program's policy does not let this process write.
-    Refused,
-    /// The owner did not take it (too many requests waiting, or it stopped first).
-    Discarded,
-    /// No answer can come any more (the connection to the owner is gone).
-    Unknown,
-}
-
-impl Outcome {
-    pub(crate) fn of(code: Code) -> Outcome {
-        match code {
-            Code::Applied => Outcome::Applied,
-            Code::Rejected | Code::Forced => Outcome::Rejected,
-            Code::Refused => Outcome::Refused,
-            Code::Malformed | Code::Busy | Code::Stopped => Outcome::Discarded,
-        }
-    }
-}
 
 /// Why the owner refused a write that reached it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -101,12 +70,10 @@ pub(crate) struct Counters {
     /// Requests queued for the cycle thread.
     pending: AtomicU64,
     /// Writes (and forces and releases) in the queued requests: what the queue holds is
-    /// bounded by these ([`MAX_WAITING_WRITES`]), as a request holds up to 1,024.
+    /// bounded by these ([`MAX_WAITING_WRITES`](crate::limits::MAX_WAITING_WRITES)), as a
+    /// request holds up to [`MAX_WRITES`](crate::limits::MAX_WRITES).
     pub waiting_writes: AtomicU64,
 }
-
-/// Writes that may wait for the cycle thread in all: about 4.5 MiB of queued values.
-pub const MAX_WAITING_WRITES: u64 = 16_384;
 
 /// Which counter to add to.
 #[derive(Clone, Copy, Debug)]
@@ -143,8 +110,8 @@ impl Counters {
 
     /// Stores every counter into the status block.
     pub fn publish(&self, base: &Base, off: &Offsets) {
-        base.store(S_MB_APPLIED, self.applied.load(Relaxed));
-        base.store(S_MB_REJECTED, self.rejected.load(Relaxed));
+        base.store(S_WRITES_APPLIED, self.applied.load(Relaxed));
+        base.store(S_WRITES_REJECTED, self.rejected.load(Relaxed));
         base.store(off.w_refused(), self.refused.load(Relaxed));
         base.store(off.w_malformed(), self.malformed.load(Relaxed));
         base.store(off.w_busy(), self.busy.load(Relaxed));
@@ -169,12 +136,17 @@ impl Conn {
             which: 0,
             reason: String::new(),
         };
-        let _ = crate::sys::unix::send(
+        let _ = unix::send(
             self.fd.as_raw_fd(),
             &protocol::encode_reply(&reply),
             Some(fd.as_raw_fd()),
             false,
         );
+    }
+
+    /// Answers a refused request, saying which of its values and why.
+    pub fn refuse(&self, id: u64, refused: Refused) {
+        self.answer(id, refused.code, refused.which, refused.why);
     }
 
     /// Sends `reply` without waiting: a tool that does not read its answers loses them
@@ -186,7 +158,7 @@ impl Conn {
             which: u16::try_from(which).unwrap_or(u16::MAX),
             reason,
         };
-        let _ = crate::sys::unix::send(
+        let _ = unix::send(
             self.fd.as_raw_fd(),
             &protocol::encode_reply(&reply),
             None,
@@ -213,7 +185,7 @@ pub(crate) enum Kind {
     /// Forces to end.
     Release(protocol::Release),
     /// A trace to record from now on (answered by the server already).
-    Trace(Box<Recording>),
+    Record(Box<Recording>),
 }
 
 impl Kind {
@@ -222,7 +194,7 @@ impl Kind {
         match self {
             Kind::Write(w) | Kind::Force(w) => w.len() as u64,
             Kind::Release(r) => r.values.len().max(1) as u64,
-            Kind::Trace(_) => 0,
+            Kind::Record(_) => 0,
         }
     }
 }
@@ -234,7 +206,7 @@ pub(crate) fn validate(
     vars: &'static [VarInfo],
     request: &protocol::WriteRequest,
     force: bool,
-) -> Result<Vec<Checked>, (usize, String)> {
+) -> Result<Vec<Checked>, Refused> {
     let check = if force {
         write::check_force
     } else {
@@ -244,7 +216,7 @@ pub(crate) fn validate(
         .writes
         .iter()
         .enumerate()
-        .map(|(k, &w)| check(vars, w).map_err(|refusal| (k, refusal.to_string())))
+        .map(|(k, &w)| check(vars, w).map_err(|refusal| Refused::rejected(k, refusal.to_string())))
         .collect()
 }
 
@@ -261,13 +233,6 @@ pub(crate) struct Inbox {
     /// The traces being recorded.
     pub recordings: RefCell<Vec<Recording>>,
 }
-
-/// How many requests one cycle applies at most; the rest wait for the next cycle.
-pub const PER_CYCLE: usize = 256;
-/// How many writes one cycle applies at most (a request is never split: one larger than the
-/// rest of this budget waits for the next cycle, and the first request of a cycle is always
-/// taken).
-pub const PER_CYCLE_WRITES: u64 = 4096;
 
 impl Inbox {
     /// Applies the queued requests to `gm`, in order, each all or none; answers each one.
@@ -317,14 +282,14 @@ impl Inbox {
                 Kind::Force(writes) => {
                     let done = forces.force(gm, &writes, batch.uid, utc_ns());
                     forces.publish(base, off);
-                    done.map_err(|(k, why)| (k, why, Code::Rejected))
+                    done
                 }
                 Kind::Release(release) => {
                     let done = forces.release(gm, &release, batch.uid);
                     forces.publish(base, off);
-                    done.map_err(|(k, why)| (k, why, Code::Rejected))
+                    done
                 }
-                Kind::Trace(recording) => {
+                Kind::Record(recording) => {
                     self.recordings.borrow_mut().push(*recording);
                     continue;
                 }
@@ -334,9 +299,9 @@ impl Inbox {
                     self.counters.add(Count::Applied, n, base, off);
                     self.unpublished.borrow_mut().push((batch.conn, batch.id));
                 }
-                Err((k, why, code)) => {
+                Err(refused) => {
                     self.counters.add(Count::Rejected, n, base, off);
-                    batch.conn.answer(batch.id, code, k, why);
+                    batch.conn.refuse(batch.id, refused);
                 }
             }
         }
@@ -379,11 +344,11 @@ fn apply_batch<T: GlobalMemory>(
     writes: &[Checked],
     forces: &ForceTable,
     audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
-) -> Result<(), (usize, String, Code)> {
+) -> Result<(), Refused> {
     if forces.len() > 0 {
         for (k, w) in writes.iter().map(Checked::write).enumerate() {
             if let Some(why) = forces.refusal(w.index, w.leaf) {
-                return Err((k, why, Code::Forced));
+                return Err(Refused::forced(k, why));
             }
         }
     }
@@ -399,7 +364,7 @@ fn apply_batch<T: GlobalMemory>(
             let rejection = Rejection::Set(e);
             audit(w, &Err(rejection));
             let name = T::VARIABLES.get(w.index).map_or("?", |v| v.name);
-            return Err((k, format!("`{name}`: {rejection}"), Code::Rejected));
+            return Err(Refused::rejected(k, format!("`{name}`: {rejection}")));
         }
         undo.push((w.index, w.leaf, before));
     }

@@ -1,9 +1,12 @@
 //! The status block: what the owner reports about its cycle, and the one owner state tools show.
 
+use super::bus_clocks::BusClocks;
+use super::bus_state::BusState;
+use super::cycle_stats::CycleStats;
+use super::io_status::IoStatus;
 use super::layout::*;
 use crate::sys::base::Base;
 use crate::sys::clock::now_ns;
-use crate::{BusClocks, BusState, CycleStats, IoStatus};
 use std::fmt;
 use std::time::Duration;
 
@@ -145,8 +148,8 @@ impl Status {
             inputs_valid: flags & INPUTS_VALID != 0,
             clocks: BusClocks::from_words([0, 1, 2].map(|w| base.load(off.c_word(w)))),
             heartbeat_age: Duration::from_nanos(now_ns().saturating_sub(base.load(S_HEARTBEAT_NS))),
-            writes_applied: base.load(S_MB_APPLIED),
-            writes_rejected: base.load(S_MB_REJECTED),
+            writes_applied: base.load(S_WRITES_APPLIED),
+            writes_rejected: base.load(S_WRITES_REJECTED),
             writes_reclaimed: base.load(off.w_busy()),
             writes_discarded: base.load(off.w_malformed()),
             writes_pending: base.load(off.w_pending()),

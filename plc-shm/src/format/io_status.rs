@@ -1,7 +1,8 @@
 //! What one exchange of the I/O achieved: handed by the backend to the cycle, published in the
 //! status block.
 
-use crate::{BusClocks, BusState};
+use super::bus_clocks::BusClocks;
+use super::bus_state::BusState;
 
 /// What one exchange achieved.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

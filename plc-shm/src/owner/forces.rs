@@ -4,12 +4,16 @@
 //! it in the segment for tools; the lines it logs go to the server's thread, which writes
 //! them, so a release of 256 forces costs the cycle no terminal output.
 
-use super::layout::{MAX_FORCES, Offsets};
-use super::protocol::Release;
+use super::refused::Refused;
+use crate::calendar::utc_text;
+use crate::format::force_table::{self, ForceInfo};
+use crate::format::layout::Offsets;
+use crate::limits::MAX_FORCES;
+use crate::naming::{path_of, shown_in_log};
+use crate::protocol::Release;
 use crate::sys::base::Base;
-use plc_core::write::{self, Checked};
+use plc_core::write::Checked;
 use plc_core::{GlobalMemory, Value, VarInfo};
-use std::sync::atomic::{Ordering, fence};
 use std::sync::mpsc::SyncSender;
 
 /// One force held.
@@ -22,19 +26,6 @@ struct Force {
     before: Option<Value>,
 }
 
-/// A force as tools read it from the segment; its value is the image's, which holds it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct ForceInfo {
-    /// Index of the top-level variable.
-    pub index: usize,
-    /// The basic value within it.
-    pub leaf: usize,
-    /// Who forced it.
-    pub uid: u32,
-    /// When, in nanoseconds since the Unix epoch (UTC).
-    pub since_utc_ns: u64,
-}
-
 /// The forces the cycle thread holds.
 pub(crate) struct ForceTable {
     held: Vec<Force>,
@@ -42,9 +33,6 @@ pub(crate) struct ForceTable {
     /// Lines for the log, written by the server's accepting thread.
     log: SyncSender<String>,
 }
-
-/// Why a force or release was refused: which value of the request, and why.
-pub(crate) type Refused = (usize, String);
 
 impl ForceTable {
     pub fn new(vars: &'static [VarInfo], log: SyncSender<String>) -> Self {
@@ -93,7 +81,7 @@ impl ForceTable {
         path_of(self.vars, index, leaf)
     }
 
-    /// Forces `writes` (checked by [`write::check_force`]) for `uid`, all or none: each is set
+    /// Forces `writes` (checked by [`plc_core::write::check_force`]) for `uid`, all or none: each is set
     /// in `gm` now, and held from then on; a value forced already takes the new value and
     /// keeps the one from before its first force.
     pub fn force<T: GlobalMemory>(
@@ -108,7 +96,7 @@ impl ForceTable {
             .filter(|w| self.find(w.write().index, w.write().leaf).is_none())
             .count();
         if self.held.len() + new > MAX_FORCES {
-            return Err((
+            return Err(Refused::rejected(
                 0,
                 format!(
                     "{} forces are held and this request adds {new}: at most {MAX_FORCES} are \
@@ -127,7 +115,10 @@ impl ForceTable {
                         let _ = gm.set(index, leaf, old);
                     }
                 }
-                return Err((k, format!("`{}`: {e}", self.path(w.index, w.leaf))));
+                return Err(Refused::rejected(
+                    k,
+                    format!("`{}`: {e}", self.path(w.index, w.leaf)),
+                ));
             }
             undo.push((w.index, w.leaf, before));
         }
@@ -175,7 +166,7 @@ impl ForceTable {
                     Some(at) if !ended.contains(&at) => ended.push(at),
                     Some(_) => {}
                     None => {
-                        return Err((
+                        return Err(Refused::rejected(
                             k,
                             format!(
                                 "`{}` is not forced (`plc forces` lists what is)",
@@ -229,136 +220,25 @@ impl ForceTable {
             .collect()
     }
 
-    /// Stores the table in the segment under its own sequence word (odd while it changes).
+    /// Stores the table in the segment for tools.
     pub fn publish(&self, base: &Base, off: &Offsets) {
-        let seq = base.word(off.f_seq());
-        let s = seq.load(Ordering::Relaxed);
-        seq.store(s.wrapping_add(1), Ordering::Relaxed);
-        fence(Ordering::Release);
-        base.store(off.f_count(), self.held.len() as u64);
-        for (n, f) in self.held.iter().enumerate() {
-            let w = f.write.write();
-            let words = [
-                w.index as u64,
-                w.leaf as u64,
-                u64::from(f.uid),
-                f.since_utc_ns,
-            ];
-            for (k, v) in words.into_iter().enumerate() {
-                base.store(off.f_entry(n, k), v);
-            }
-        }
-        seq.store(s.wrapping_add(2), Ordering::Release);
+        force_table::store(
+            base,
+            off,
+            self.held.iter().map(|f| {
+                let w = f.write.write();
+                ForceInfo {
+                    index: w.index,
+                    leaf: w.leaf,
+                    uid: f.uid,
+                    since_utc_ns: f.since_utc_ns,
+                }
+            }),
+        );
     }
 
     fn say(&self, line: String) {
         // Full only if thousands of lines wait: the log then misses some, the table not.
         let _ = self.log.try_send(line);
-    }
-}
-
-/// Reads the table of forces a segment holds, retrying while its owner changes it. The words
-/// come from another process: the count is bounded and a table still changing after many tries
-/// is reported as none rather than waited for.
-pub(crate) fn read(base: &Base, off: &Offsets) -> Option<Vec<ForceInfo>> {
-    let seq = base.word(off.f_seq());
-    for _ in 0..1000 {
-        let s1 = seq.load(Ordering::Acquire);
-        if s1 % 2 == 1 {
-            std::hint::spin_loop();
-            continue;
-        }
-        let count = (base.load(off.f_count()) as usize).min(MAX_FORCES);
-        let mut out = Vec::with_capacity(count);
-        for n in 0..count {
-            let w = |k| base.load(off.f_entry(n, k));
-            out.push(ForceInfo {
-                index: usize::try_from(w(0)).unwrap_or(usize::MAX),
-                leaf: usize::try_from(w(1)).unwrap_or(usize::MAX),
-                uid: u32::try_from(w(2)).unwrap_or(u32::MAX),
-                since_utc_ns: w(3),
-            });
-        }
-        fence(Ordering::Acquire);
-        if seq.load(Ordering::Relaxed) == s1 {
-            return Some(out);
-        }
-    }
-    None
-}
-
-/// The path of basic value `leaf` of variable `index`: the variable or member's path, with
-/// the element of an array of basic values (`speeds[2]`, `axes[1].pos`).
-pub fn path_of<N: plc_rules::path::Node>(vars: &[N], index: usize, leaf: usize) -> String {
-    let mut text = write::label(vars, index, leaf).to_string();
-    if let Some(found) = plc_rules::path::leaf(vars, index, leaf)
-        && !found.node.dims().is_empty()
-    {
-        let coords = plc_rules::path::coordinates(found.element, found.node.dims());
-        text.push_str(&format!("[{coords}]"));
-    }
-    text
-}
-
-/// A value in a log line: text quoted with its control characters escaped, so a value cannot
-/// forge lines or drive a terminal.
-///
-/// ```
-/// use plc_core::{FixedString, Value};
-/// let text = Value::Text(FixedString::from_str_truncate("ok\n\u{1b}[2J"));
-/// assert_eq!(plc_shm::shown_in_log(&text), r#""ok\n\u{1b}[2J""#);
-/// assert_eq!(plc_shm::shown_in_log(&Value::Int(-3)), "-3");
-/// ```
-pub fn shown_in_log(value: &Value) -> String {
-    match value {
-        Value::Text(t) => format!("{:?}", t.as_str()),
-        other => other.to_string(),
-    }
-}
-
-/// `2026-12-03 21:14:03 UTC` for nanoseconds since the Unix epoch.
-pub fn utc_text(ns: u64) -> String {
-    let secs = ns / 1_000_000_000;
-    let (days, rest) = (secs / 86_400, secs % 86_400);
-    let (y, m, d) = civil_from_days(days as i64);
-    format!(
-        "{y:04}-{m:02}-{d:02} {:02}:{:02}:{:02} UTC",
-        rest / 3600,
-        rest / 60 % 60,
-        rest % 60
-    )
-}
-
-/// The proleptic Gregorian date of a day count since 1970-01-01 (the era arithmetic of
-/// Howard Hinnant's `civil_from_days`, written out here).
-fn civil_from_days(z: i64) -> (i64, u32, u32) {
-    let z = z + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    (y, m, d)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn utc_times_read_as_calendar_dates() {
-        assert_eq!(utc_text(0), "1970-01-01 00:00:00 UTC");
-        // 2026-12-03 21:14:03 UTC
-        assert_eq!(
-            utc_text(1_796_332_443 * 1_000_000_000),
-            "2026-12-03 21:14:03 UTC"
-        );
-        assert_eq!(
-            utc_text(951_782_400 * 1_000_000_000),
-            "2000-02-29 00:00:00 UTC"
-        );
     }
 }

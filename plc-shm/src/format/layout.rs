@@ -20,7 +20,9 @@
 //! Every shared word is a naturally aligned `u64` used only through `AtomicU64`
 //! ([`Base`](crate::sys::base::Base)).
 
-/// "PLCVARS2", little endian (the segment of the socket transport, without a mailbox).
+use crate::limits::MAX_FORCES;
+
+/// "PLCVARS2", little endian (the segment whose writes travel over its socket).
 pub const MAGIC: u64 = u64::from_le_bytes(*b"PLCVARS2");
 /// Written over the magic when the owner stops, before it closes its socket: readers still
 /// mapping it learn that nobody publishes into it or applies writes any more, even after a
@@ -49,8 +51,8 @@ pub const S_OVERRUNS: usize = STATUS + 64;
 pub const S_BUS_STATE: usize = STATUS + 72;
 pub const S_BUS_FLAGS: usize = STATUS + 80;
 pub const S_HEARTBEAT_NS: usize = STATUS + 88;
-pub const S_MB_APPLIED: usize = STATUS + 96;
-pub const S_MB_REJECTED: usize = STATUS + 104;
+pub const S_WRITES_APPLIED: usize = STATUS + 96;
+pub const S_WRITES_REJECTED: usize = STATUS + 104;
 pub const S_RETAIN_FAILED: usize = STATUS + 112;
 pub const S_CYCLE_UTC_NS: usize = STATUS + 120;
 
@@ -58,8 +60,6 @@ pub const IMAGE: usize = 192;
 
 /// Bytes of the write counters after the image.
 const WRITES: usize = 32;
-/// Forces held at once, at most.
-pub const MAX_FORCES: usize = 256;
 /// Words of one force in the table.
 pub const FORCE_WORDS: usize = 4;
 /// Bytes of the table of forces after the write counters.

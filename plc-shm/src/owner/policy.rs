@@ -6,7 +6,7 @@
 //! from the credentials the kernel gives for its peer (`SO_PEERCRED`, `SO_PEERGROUPS`): the
 //! owner's own uid writes, and so does every member of the write group, if there is one.
 
-use crate::ShmError;
+use crate::error::ShmError;
 use crate::sys::ids::{Group, group, group_name};
 use crate::sys::unix::Peer;
 

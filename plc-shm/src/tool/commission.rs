@@ -3,23 +3,25 @@
 //! as the owner checks it again.
 
 use super::dynamic::DynSegment;
-use super::error::ShmError;
-use super::forces::{self, ForceInfo};
 use super::paths::PathLocation;
-use super::protocol::{self, MAX_TRACED, MAX_WRITES, Release, WriteRequest};
 use super::trace::Trace;
+use super::view::refusal;
+use crate::error::ShmError;
+use crate::format::force_table::{self, ForceInfo};
+use crate::limits::{MAX_TRACED, MAX_WRITES};
+use crate::naming::path_of;
+use crate::protocol::{self, Release, TraceRequest, WriteRequest};
 use plc_core::write::{self, Checked, Write};
 
 impl DynSegment {
     /// Checks a force as the owner will ([`plc_core::write::check_force`]: any basic value,
     /// inputs and status included; the value must fit).
     pub fn check_force(&self, force: Write) -> Result<Checked, ShmError> {
-        write::check_force(&self.descriptor().variables, force)
-            .map_err(|r| super::error::refusal(self.name(), r))
+        write::check_force(&self.descriptor().variables, force).map_err(|r| refusal(self.name(), r))
     }
 
-    /// Forces values (checked by [`check_force`](Self::check_force); at most 256 held at
-    /// once): the owner holds each at both of its cycle's boundaries
+    /// Forces values (checked by [`check_force`](Self::check_force); at most
+    /// [`MAX_WRITES`] per call and [`MAX_FORCES`](crate::limits::MAX_FORCES) held at once): the owner holds each at both of its cycle's boundaries
     /// until it is released or the program stops, and refuses writes to it. Who may force is
     /// who may write. Returns once the owner holds them, or with its refusal.
     ///
@@ -33,7 +35,7 @@ impl DynSegment {
     /// # Ok::<(), plc_shm::ShmError>(())
     /// ```
     pub fn force(&self, forces: &[Checked]) -> Result<(), ShmError> {
-        self.count_ok(forces.len(), MAX_WRITES, "forces")?;
+        self.view.count_ok(forces.len(), MAX_WRITES, "forces")?;
         let request = |id| WriteRequest {
             id,
             writes: forces.iter().map(|f| *f.write()).collect(),
@@ -46,10 +48,10 @@ impl DynSegment {
     }
 
     /// Ends the forces of these values ((variable index, leaf); each must be forced, at most
-    /// 64): with `restore` each value is set back to what it was before its force, else the
+    /// [`MAX_WRITES`] per call): with `restore` each value is set back to what it was before its force, else the
     /// program's next value stands.
     pub fn release(&self, values: &[(usize, usize)], restore: bool) -> Result<(), ShmError> {
-        self.count_ok(values.len(), MAX_WRITES, "releases")?;
+        self.view.count_ok(values.len(), MAX_WRITES, "releases")?;
         self.send_release(values, restore, false)
     }
 
@@ -74,7 +76,7 @@ impl DynSegment {
         })?;
         let names: Vec<String> = values
             .iter()
-            .map(|&(index, leaf)| forces::path_of(&self.descriptor().variables, index, leaf))
+            .map(|&(index, leaf)| path_of(&self.descriptor().variables, index, leaf))
             .collect();
         self.view.wait_answer(ticket, &names)
     }
@@ -82,12 +84,12 @@ impl DynSegment {
     /// The forces held now, as the owner published them (their values are in the image).
     pub fn forces(&self) -> Result<Vec<ForceInfo>, ShmError> {
         self.view.check_owner()?;
-        forces::read(&self.view.base, &self.view.off)
+        force_table::read(&self.view.base, &self.view.off)
             .ok_or_else(|| ShmError::Stuck(self.name().into()))
     }
 
     /// Starts a trace of `values` (basic values found by [`locate`](Self::locate), no STRING,
-    /// at most 64), recorded by the owner every `every`th cycle from its next cycle on, for
+    /// at most [`MAX_TRACED`]), recorded by the owner every `every`th cycle from its next cycle on, for
     /// as long as this segment handle stays attached. Drain it with [`Trace::drain`].
     ///
     /// ```no_run
@@ -100,19 +102,19 @@ impl DynSegment {
     /// # Ok::<(), plc_shm::ShmError>(())
     /// ```
     pub fn trace(&self, values: &[PathLocation], every: u32) -> Result<Trace, ShmError> {
-        self.count_ok(values.len(), MAX_TRACED, "traced values")?;
+        self.view
+            .count_ok(values.len(), MAX_TRACED, "traced values")?;
         if let Some(s) = values
             .iter()
             .find(|v| v.var.iec_type == plc_core::IecType::String)
         {
-            return Err(ShmError::Os {
+            return Err(ShmError::NotTraceable {
                 name: self.name().to_string(),
-                what: format!("cannot trace `{}`", s.path),
-                error: "it is a STRING: a trace records numbers, BOOLs and times".into(),
+                path: s.path.clone(),
             });
         }
         let ticket = self.view.post_with(|id| {
-            protocol::encode_trace(&protocol::Trace {
+            protocol::encode_trace(&TraceRequest {
                 id,
                 every: every.max(1),
                 values: values.iter().map(|v| (v.index, v.leaf)).collect(),
@@ -128,16 +130,5 @@ impl DynSegment {
                 why: "its answer to the trace came without the trace's memory".into(),
             })?;
         Trace::receive(self.name(), fd, values)
-    }
-
-    fn count_ok(&self, n: usize, max: usize, what: &str) -> Result<(), ShmError> {
-        if (1..=max).contains(&n) {
-            return Ok(());
-        }
-        Err(ShmError::Os {
-            name: self.name().to_string(),
-            what: format!("cannot send {n} {what} as one request"),
-            error: format!("a request holds 1 to {max}").into(),
-        })
     }
 }

@@ -2,11 +2,11 @@
 //! requests sent and their answers collected, and the owner's liveness (the connection hangs
 //! up when the owner's process ends, however it ends).
 
-use super::ShmError;
-use super::error::Cause;
-use super::mailbox::{Outcome, Ticket};
-use super::protocol::{self, Code, Reply, WriteRequest};
-use crate::sys::unix;
+use crate::error::Cause;
+use crate::error::ShmError;
+use crate::limits::MAX_MESSAGE;
+use crate::protocol::{self, Code, Reply, Ticket, WriteOutcome, WriteRequest};
+use crate::sys::{rundir, unix};
 use plc_core::write::Checked;
 use std::cell::{Cell, RefCell};
 use std::collections::HashMap;
@@ -37,7 +37,7 @@ impl Client {
             Some(libc::ENOENT) => ShmError::NotFound(name.to_string()),
             // A socket nobody listens on: its owner was killed and nobody removed it yet.
             Some(libc::ECONNREFUSED) => ShmError::OwnerGone(name.to_string()),
-            _ => crate::sys::rundir::open_error(name, path, "cannot connect to", e),
+            _ => rundir::open_error(name, path, "cannot connect to", e),
         })?;
         let os = |what: &str, e: std::io::Error| ShmError::Os {
             name: name.to_string(),
@@ -46,7 +46,7 @@ impl Client {
         };
         let peer = unix::peer(&fd).map_err(|e| os("cannot identify the owner at", e))?;
         if peer.uid != owner {
-            return Err(crate::sys::rundir::refuse(
+            return Err(rundir::refuse(
                 name,
                 path,
                 format!(
@@ -57,13 +57,13 @@ impl Client {
             ));
         }
         if !unix::readable(fd.as_raw_fd(), GREETING_PATIENCE).unwrap_or(false) {
-            return Err(ShmError::Os {
+            return Err(ShmError::NoGreeting {
                 name: name.to_string(),
-                what: format!("no greeting from {}", path.display()),
-                error: format!("the owner did not answer within {GREETING_PATIENCE:?}").into(),
+                path: path.to_path_buf(),
+                waited: GREETING_PATIENCE,
             });
         }
-        let mut buf = vec![0u8; protocol::MAX_MESSAGE];
+        let mut buf = vec![0u8; MAX_MESSAGE];
         let got = unix::receive(fd.as_raw_fd(), &mut buf, false)
             .map_err(|e| os("cannot receive the greeting from", e))?;
         let message = &buf[..got.len];
@@ -72,10 +72,9 @@ impl Client {
             Err(e) => {
                 // A connection turned away says why in a reply.
                 if let Ok(reply) = protocol::decode_reply(message) {
-                    return Err(ShmError::Os {
+                    return Err(ShmError::TurnedAway {
                         name: name.to_string(),
-                        what: format!("connecting to {}", path.display()),
-                        error: reply.reason.into(),
+                        reason: reply.reason,
                     });
                 }
                 if got.len == 0 {
@@ -162,7 +161,7 @@ impl Client {
 
     /// Takes every answer that has arrived, without waiting.
     fn collect(&self) {
-        let mut buf = vec![0u8; protocol::MAX_MESSAGE];
+        let mut buf = vec![0u8; MAX_MESSAGE];
         // Bounded: at most one answer per request sent, and a few unasked ones.
         let bound = self.sent.borrow().len() + 16;
         for _ in 0..bound {
@@ -185,18 +184,18 @@ impl Client {
     }
 
     /// What became of request `ticket`; a final answer is forgotten once asked for.
-    pub fn outcome(&self, ticket: Ticket) -> Outcome {
+    pub fn outcome(&self, ticket: Ticket) -> WriteOutcome {
         self.collect();
         let mut sent = self.sent.borrow_mut();
         match sent.get(&ticket.0) {
-            None => Outcome::Unknown,
+            None => WriteOutcome::Unknown,
             Some(None) if self.hung_up() => {
                 sent.remove(&ticket.0);
-                Outcome::Unknown
+                WriteOutcome::Unknown
             }
-            Some(None) => Outcome::Pending,
+            Some(None) => WriteOutcome::Pending,
             Some(Some(reply)) => {
-                let o = Outcome::of(reply.code);
+                let o = WriteOutcome::of(reply.code);
                 sent.remove(&ticket.0);
                 o
             }
@@ -261,7 +260,7 @@ pub(crate) fn answer_result(
             name: name.to_string(),
             rule: reply.reason,
         },
-        Code::Busy => ShmError::MailboxFull(name.to_string()),
+        Code::Busy => ShmError::QueueFull(name.to_string()),
         Code::Stopped => ShmError::Closed {
             name: name.to_string(),
             faulted: false,

@@ -1,11 +1,10 @@
 //! `DynSegment`: a running program's variables for tools that do not have its Rust type.
 
-use super::ShmError;
-use super::codec;
-use super::descriptor::{LayoutDescriptor, VarDescriptor};
-use super::mailbox::{Outcome, Ticket};
-use super::status::{OwnerState, Status};
 use super::view::View;
+use crate::error::ShmError;
+use crate::format::descriptor::LayoutDescriptor;
+use crate::format::status::{OwnerState, Status};
+use crate::protocol::{Ticket, WriteOutcome};
 use plc_core::Value;
 use plc_core::write::{Checked, Write};
 
@@ -66,15 +65,10 @@ impl DynSegment {
         self.view.index_of(name)
     }
 
-    /// A consistent copy of the whole image.
+    /// A consistent copy of the whole image; a value in it is
+    /// [`VarDescriptor::value_in`](crate::VarDescriptor::value_in).
     pub fn snapshot_bytes(&self) -> Result<Vec<u8>, ShmError> {
         self.view.snapshot_bytes()
-    }
-
-    /// Element `element` of variable `index` in an image from [`snapshot_bytes`](Self::snapshot_bytes).
-    pub fn value_at(&self, image: &[u8], index: usize, element: usize) -> Option<Value> {
-        let var: &VarDescriptor = self.view.desc.variables.get(index)?;
-        codec::decode(image, var, element)
     }
 
     /// One variable's value (element 0 of an array).
@@ -169,7 +163,7 @@ impl DynSegment {
 
     /// What became of a posted write: pending, applied, rejected or refused by the owner, not
     /// taken, or unknown (no answer can come any more).
-    pub fn outcome(&self, ticket: Ticket) -> Outcome {
+    pub fn outcome(&self, ticket: Ticket) -> WriteOutcome {
         self.view.outcome(ticket)
     }
 
