@@ -382,8 +382,9 @@ impl fmt::Display for ShmError {
             ),
             ShmError::NoGreeting { name, path, waited } => write!(
                 f,
-                "segment `{name}`: no greeting from {} within {waited:?}: the program is stalled \
-                 or too busy (`plc list` shows its state); try again",
+                "segment `{name}`: the program did not answer at {} within {waited:?} (no \
+                 greeting): it is stopped, stalled or too busy (`plc list` shows its state); \
+                 try again",
                 path.display()
             ),
             ShmError::TurnedAway { name, reason } => write!(
