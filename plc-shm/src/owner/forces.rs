@@ -2,7 +2,7 @@
 //! boundaries until they are released or the program stops. The cycle thread keeps the table
 //! (it applies forces and refuses writes to forced values, so nothing races it) and publishes
 //! it in the segment for tools; the lines it logs go to the server's thread, which writes
-//! them, so a release of 256 forces costs the cycle no terminal output.
+//! them, so a release of every force costs the cycle no terminal output.
 
 use super::refused::Refused;
 use crate::calendar::utc_text;

@@ -201,7 +201,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// tick (so the program reads forced values), and after the tick, before the outputs are
     /// packed and published (so the bus and the tools get them, whatever the program wrote).
     /// A program that drives its own cycle does the same. Forces arrive with the writes (at
-    /// most 256 held); a cycle that holds none pays one length check.
+    /// most [`MAX_FORCES`](crate::limits::MAX_FORCES) held); a cycle that holds none pays one
+    /// length check.
     #[inline]
     pub fn apply_forces(&self, gm: &mut T) {
         self.inbox.forces.borrow().apply(gm);

@@ -60,7 +60,8 @@ pub enum DecodeError {
         /// The most allowed.
         max: usize,
     },
-    /// A reply's reason longer than the protocol carries (1,024 bytes).
+    /// A reply's reason longer than the protocol carries
+    /// ([`MAX_REASON`](crate::limits::MAX_REASON) bytes).
     ReasonTooLong {
         /// The length it gives.
         len: usize,

@@ -92,17 +92,21 @@ extern "C" fn on_sigbus(sig: libc::c_int, info: *mut libc::siginfo_t, ctx: *mut 
 
 fn install() {
     INSTALL.call_once(|| {
-        // SAFETY: sigaction with valid structs; PREVIOUS is written here, once, before our
-        // handler can run.
+        // SAFETY: sigaction with valid structs. PREVIOUS is written here, once, from the action
+        // read first, and only then is our handler installed: the handler can never run and
+        // find PREVIOUS unwritten. (A handler installed by another thread between the two calls
+        // would be replaced without being chained; nothing of this process does that.)
         unsafe {
             let mut old: libc::sigaction = std::mem::zeroed();
+            if libc::sigaction(libc::SIGBUS, std::ptr::null(), &mut old) != 0 {
+                return;
+            }
+            *std::ptr::addr_of_mut!(PREVIOUS) = Some(old);
             let mut new: libc::sigaction = std::mem::zeroed();
             new.sa_sigaction = on_sigbus as *const () as libc::sighandler_t;
             new.sa_flags = libc::SA_SIGINFO | libc::SA_ONSTACK;
             libc::sigemptyset(&mut new.sa_mask);
-            if libc::sigaction(libc::SIGBUS, &new, &mut old) == 0 {
-                *std::ptr::addr_of_mut!(PREVIOUS) = Some(old);
-            }
+            libc::sigaction(libc::SIGBUS, &new, std::ptr::null_mut());
         }
     });
 }

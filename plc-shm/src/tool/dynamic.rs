@@ -114,7 +114,9 @@ impl DynSegment {
     }
 
     /// Sends writes checked by [`check_write`](Self::check_write) as one request (at most
-    /// 1,024, and 64 KiB: [`protocol::request_len`](crate::protocol::request_len)), applied by the owner in one cycle, all or none; returns once it answered.
+    /// [`MAX_WRITES`](crate::limits::MAX_WRITES), and [`MAX_MESSAGE`](crate::limits::MAX_MESSAGE)
+    /// bytes: [`protocol::request_len`](crate::protocol::request_len)), applied by the owner in
+    /// one cycle, all or none; returns once it answered.
     pub fn write_checked(&self, writes: &[Checked]) -> Result<(), ShmError> {
         self.view.send_and_wait(writes)
     }
@@ -125,8 +127,9 @@ impl DynSegment {
     }
 
     /// Writes several basic values as one request: checked whole before anything is sent,
-    /// applied by the owner in one cycle, all or none. At most 1,024 writes (an array of up to
-    /// 1,024 elements written whole), and 64 KiB of them.
+    /// applied by the owner in one cycle, all or none. At most
+    /// [`MAX_WRITES`](crate::limits::MAX_WRITES) writes (an array of as many elements written
+    /// whole), and [`MAX_MESSAGE`](crate::limits::MAX_MESSAGE) bytes of them.
     ///
     /// ```no_run
     /// use plc_core::{Value, write::Write};

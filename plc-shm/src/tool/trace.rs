@@ -33,7 +33,7 @@ pub struct TraceRow {
     pub values: Vec<Value>,
 }
 
-/// A trace as a tool reads it: from [`DynSegment::trace`](super::DynSegment::trace). The owner
+/// A trace as a tool reads it: from [`DynSegment::trace`](crate::DynSegment::trace). The owner
 /// records while the segment's connection is open.
 pub struct Trace {
     _mapping: Mapping,
