@@ -5,9 +5,11 @@
 use super::dynamic::DynSegment;
 use crate::error::ShmError;
 use crate::format::descriptor::VarDescriptor;
-use plc_core::Value;
 
-/// One basic value of a segment, found by its path.
+/// One basic value of a segment, found by its path: read it with
+/// [`var.value_in`](VarDescriptor::value_in), write it as the
+/// [`Write`](plc_core::write::Write) of its `index` and `leaf`
+/// ([`DynSegment::check_write`], [`DynSegment::write_checked`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathLocation {
     /// The path, as given.
@@ -104,26 +106,5 @@ impl DynSegment {
             var,
             writable: found.writable,
         })
-    }
-
-    /// Writes a value found by its path, checked as [`check_location`](Self::check_location)
-    /// checks it and then by the program; returns once the program applied it (or refused it).
-    pub fn write_location(&self, at: &PathLocation, value: Value) -> Result<(), ShmError> {
-        self.write_all(&[plc_core::write::Write {
-            index: at.index,
-            leaf: at.leaf,
-            value,
-        }])
-    }
-
-    /// Checks a write to a location as the owner would (writable, kind, range, capacity),
-    /// without sending it; the value as it would be sent.
-    pub fn check_location(&self, at: &PathLocation, value: Value) -> Result<Value, ShmError> {
-        let checked = self.check_write(plc_core::write::Write {
-            index: at.index,
-            leaf: at.leaf,
-            value,
-        })?;
-        Ok(checked.write().value)
     }
 }
