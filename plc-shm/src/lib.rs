@@ -39,7 +39,7 @@
 
 // Layers, bottom to top: `error`, `limits` and the texts of messages; `sys` (system calls);
 // `format` (the segment's format); `protocol` (the socket's messages and their answers); then
-// `owner` and `tool`, which never import each other; `shared` above both.
+// `owner` and `tool`, which never import each other; `shared_global_memory` above both.
 mod calendar;
 mod env;
 mod error;
@@ -56,7 +56,7 @@ pub mod protocol;
 mod owner;
 mod tool;
 
-mod shared;
+mod shared_global_memory;
 
 pub use calendar::utc_text;
 pub use env::RUNTIME_DIR_ENV;
@@ -74,7 +74,7 @@ pub use naming::{path_of, shown_in_log};
 pub use owner::policy::Sharing;
 pub use owner::{Rejection, ShmOwner};
 pub use protocol::{Ticket, WriteOutcome};
-pub use shared::SharedGlobalMemory;
+pub use shared_global_memory::SharedGlobalMemory;
 pub use sys::ids::euid;
 pub use sys::priority::normal_priority;
 pub use sys::rundir::{normalise as normalise_name, owner_dir as runtime_dir};

@@ -251,6 +251,13 @@ fn refusals_map_to_the_status_codes_of_the_standard() {
         write_refusal(&ShmError::QueueFull("s".into())),
         StatusCode::BadTooManyOperations
     );
+    let too_many = ShmError::RequestCount {
+        name: "s".into(),
+        what: "writes",
+        count: 2000,
+        most: 1024,
+    };
+    assert_eq!(write_refusal(&too_many), StatusCode::BadTooManyOperations);
 }
 
 #[test]
