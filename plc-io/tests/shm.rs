@@ -320,7 +320,24 @@ fn requests_of_a_thousand_writes_wait_up_to_a_bound_of_writes_not_only_of_reques
     assert_eq!(seg.status().writes_pending, 16);
     // Larger than a request may be: refused before anything is sent.
     let too_many = vec![one; plc_io::shm::protocol::MAX_WRITES + 1];
-    assert!(seg.post_checked(&too_many).is_err());
+    let refused = seg.post_checked(&too_many).unwrap_err();
+    assert!(
+        matches!(
+            refused,
+            ShmError::RequestCount {
+                count: 1025,
+                most: 1024,
+                ..
+            }
+        ),
+        "{refused:?}"
+    );
+    assert!(
+        refused
+            .to_string()
+            .contains("a request holds 1 to 1024; send them in parts"),
+        "{refused}"
+    );
 }
 
 /// A write to element `leaf` of the variable called `name` in `seg`.

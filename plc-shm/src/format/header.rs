@@ -163,3 +163,32 @@ pub fn closed(base: &Base, name: String) -> ShmError {
     let faulted = Status::read_run_state(base) == RunState::Faulted;
     ShmError::Closed { name, faulted }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_changed_generation_is_a_replaced_segment_and_a_stop_a_closed_one() {
+        let mut words = vec![0u64; STATUS / 8 + 16];
+        // SAFETY: the vector's u64s are 8-byte aligned, `len` bytes long, and outlive `base`.
+        let base = unsafe { Base::new(words.as_mut_ptr().cast(), words.len() * 8) };
+        base.store(H_MAGIC, MAGIC);
+        base.store(H_GENERATION, 7);
+        assert_eq!(check_current(&base, 7, "press"), Ok(()));
+        assert_eq!(
+            check_current(&base, 6, "press"),
+            Err(ShmError::Replaced("press".into()))
+        );
+        base.store(H_MAGIC, MAGIC_CLOSED);
+        assert!(matches!(
+            check_current(&base, 7, "press"),
+            Err(ShmError::Closed { faulted: false, .. })
+        ));
+        base.store(H_MAGIC, 1);
+        assert!(matches!(
+            check_current(&base, 7, "press"),
+            Err(ShmError::Corrupt { .. })
+        ));
+    }
+}
