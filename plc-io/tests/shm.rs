@@ -181,12 +181,14 @@ fn a_killed_owner_is_reported_gone_and_a_new_owner_takes_over() {
     wait_for(Duration::from_secs(5), || {
         (reader.snapshot().ok()?.seq > 0).then_some(())
     });
-    assert!(
-        matches!(
-            SharedGlobalMemory::<Pattern>::create(&name),
-            Err(ShmError::OwnerAlive { .. })
-        ),
-        "a second live owner is refused"
+    let second = SharedGlobalMemory::<Pattern>::create(&name).map(|_| ());
+    assert_eq!(
+        second,
+        Err(ShmError::OwnerAlive {
+            name: name.clone(),
+            pid: u64::from(child.id()),
+        }),
+        "a second live owner is refused, naming the live one"
     );
     kill9(&mut child);
     std::thread::sleep(Duration::from_millis(30));
