@@ -357,8 +357,9 @@ fn forces_of(seg: &DynSegment, paths: &[String]) -> Result<Vec<Checked>, String>
     spread(&all, FORCED)
         .map(|p| {
             let at = seg.locate(p).map_err(|e| e.to_string())?;
-            let value = seg
-                .value_at_location(&image, &at)
+            let value = at
+                .var
+                .value_in(&image, 0)
                 .ok_or_else(|| format!("`{p}` has no value"))?;
             seg.check_force(Write {
                 index: at.index,
@@ -491,7 +492,7 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
     // The owner's side of the tool's requests: applied, published, answered.
     let end = Instant::now() + Duration::from_secs(30);
     let told = loop {
-        owner.apply_mailbox(&mut gm);
+        owner.apply_requests(&mut gm);
         gm.store_image(&mut image);
         owner.publish_image(&image).map_err(shm)?;
         if let Ok(told) = tool_rx.try_recv() {
@@ -503,7 +504,7 @@ fn steps(name: &str, batches: usize, out: &mut String) -> Result<(), String> {
         std::thread::sleep(Duration::from_micros(100));
     };
     // The trace's recording was queued before its answer: this takes it in.
-    owner.apply_mailbox(&mut gm);
+    owner.apply_requests(&mut gm);
     let timed = told.and_then(|places| {
         if owner.forces_held() != FORCED {
             return Err(format!("{} forces held, not {FORCED}", owner.forces_held()));

@@ -81,7 +81,7 @@ fn read_by_name(
         let image = seg.snapshot_bytes().map_err(|e| e.to_string())?;
         let values = indexes
             .iter()
-            .filter_map(|&i| seg.value_at(&image, i, 0))
+            .filter_map(|&i| seg.descriptor().variables.get(i)?.value_in(&image, 0))
             .count();
         Ok(black_box(values))
     };

@@ -141,7 +141,7 @@ fn a_setpoint_written_by_the_hmi_reader_is_applied_retained_and_restored_after_s
     let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
     loop {
         let image = seg.snapshot_bytes().unwrap();
-        let value = |path: &str| seg.value_at_location(&image, &seg.locate(path).unwrap());
+        let value = |path: &str| seg.locate(path).unwrap().var.value_in(&image, 0);
         let running = value("test_timeout.IN") == Some(plc_core::Value::Bool(true));
         let elapsed = matches!(value("test_timeout.ET"), Some(plc_core::Value::Time(t)) if t > plc_core::Time::ZERO);
         if running && elapsed {
@@ -210,7 +210,10 @@ fn the_crosshead_pulls_during_a_test_and_stops_when_the_specimen_breaks() {
     let look = || {
         let image = seg.snapshot_bytes().unwrap();
         move |path: &str| {
-            seg.value_at_location(&image, &seg.locate(path).unwrap())
+            seg.locate(path)
+                .unwrap()
+                .var
+                .value_in(&image, 0)
                 .unwrap_or_else(|| panic!("{path} has no value"))
         }
     };
@@ -314,8 +317,7 @@ fn a_drive_fault_faults_the_machine_and_cmd_reset_resets_the_drive() {
     };
     wait("the crosshead powered", &|| {
         let image = seg.snapshot_bytes().unwrap();
-        seg.value_at_location(&image, &seg.locate("power.Status").unwrap())
-            == Some(Value::Bool(true))
+        seg.locate("power.Status").unwrap().var.value_in(&image, 0) == Some(Value::Bool(true))
     });
     // The drive's target forced 190 mm away: the drive lags it by more than its following
     // error window and faults (16#8611), the program stops the machine.

@@ -253,7 +253,7 @@ fn run_owner<T: plc_core::GlobalMemory + Default + Clone + Send + 'static>(
         let mut owner = plc_io::shm::SharedGlobalMemory::<T>::create(&segment).expect("owner");
         let mut gm = T::default();
         while !stop.load(std::sync::atomic::Ordering::Relaxed) {
-            owner.apply_mailbox(&mut gm);
+            owner.apply_requests(&mut gm);
             owner.publish(&gm).expect("publish");
             std::thread::sleep(Duration::from_millis(1));
         }

@@ -2,7 +2,7 @@
 //!
 //! - `shm`: the variables in a named shared-memory segment for HMIs and tools.
 //! - `retain`: nonvolatile variables that survive restarts and edits of the declaration.
-//! - `Runtime`: the cycle: I/O exchange, bit unpacking, mailbox writes, the program's tick,
+//! - `Runtime`: the cycle: I/O exchange, bit unpacking, tools' writes, the program's tick,
 //!   bit packing, publishing, retaining.
 //! - `ethercat` (feature `ethercat`, default): EtherCAT I/O through ethercrab, on real
 //!   hardware or the simulated bus of `ethercat-sim`.

@@ -266,7 +266,7 @@ fn the_owner_refuses_hostile_forces_and_traces() {
         }
         seg.send_raw(&bytes).unwrap();
     }
-    let trace = protocol::encode_trace(&protocol::Trace {
+    let trace = protocol::encode_trace(&protocol::TraceRequest {
         id: 7,
         every: 1,
         values: vec![(99, 0)],

@@ -366,7 +366,7 @@ fn another_uid_is_refused_naming_the_rule_and_a_write_group_member_writes() {
             let mut gm = Plain::default();
             let start = Instant::now();
             while !gm.valve && start.elapsed() < Duration::from_secs(30) {
-                owner.apply_mailbox(&mut gm);
+                owner.apply_requests(&mut gm);
                 gm.count += 1;
                 gm.valve = gm.setpoint == 99;
                 owner.publish(&gm).unwrap();
@@ -662,7 +662,7 @@ proptest::proptest! {
             }
             proptest::prop_assert!(start.elapsed() < Duration::from_secs(5));
             let mut applied = Vec::new();
-            owner.apply_mailbox_with(&mut gm, |r, outcome| {
+            owner.apply_requests_with(&mut gm, |r, outcome| {
                 if outcome.is_ok() {
                     applied.push(*r);
                 }
@@ -678,7 +678,7 @@ proptest::proptest! {
         let done = std::sync::atomic::AtomicBool::new(false);
         std::thread::scope(|s| {
             s.spawn(|| while !done.load(std::sync::atomic::Ordering::Relaxed) {
-                owner.apply_mailbox(&mut gm);
+                owner.apply_requests(&mut gm);
             });
             let r = seg.write("speed", Value::UInt(3));
             done.store(true, std::sync::atomic::Ordering::Relaxed);
@@ -850,7 +850,7 @@ fn a_hostile_process_neither_stops_the_owner_nor_the_tools_for_longer_than_the_a
     let seg = wait_for(Duration::from_secs(3), || {
         let seg = DynSegment::attach(&name).ok()?;
         let image = seg.snapshot_bytes().ok()?;
-        let at = |i| seg.value_at(&image, i, 0);
+        let at = |i: usize| seg.descriptor().variables[i].value_in(&image, 0);
         let (Some(Value::UInt(count)), Some(Value::UInt(doubled))) = (at(0), at(1)) else {
             return None;
         };

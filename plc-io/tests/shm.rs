@@ -30,7 +30,7 @@ fn a_reader_never_sees_a_torn_image_in_a_million_snapshots() {
             gm.seq += 1;
             gm.data = [gm.seq; 64];
             owner.publish(&gm).unwrap();
-            owner.apply_mailbox(&mut gm);
+            owner.apply_requests(&mut gm);
         }
         return;
     }
@@ -95,7 +95,7 @@ fn four_processes_times_ten_thousand_writes_arrive_once_and_in_order() {
             loop {
                 match seg.write(&var, Value::UInt(v as u64)) {
                     Ok(()) => break,
-                    Err(ShmError::MailboxFull(_)) => std::thread::sleep(Duration::from_micros(50)),
+                    Err(ShmError::QueueFull(_)) => std::thread::sleep(Duration::from_micros(50)),
                     Err(e) => panic!("{e}"),
                 }
             }
@@ -125,7 +125,7 @@ fn four_processes_times_ten_thousand_writes_arrive_once_and_in_order() {
             start.elapsed() < Duration::from_secs(60),
             "writes stopped arriving: {next:?}"
         );
-        owner.apply_mailbox_with(&mut gm, |r, result| {
+        owner.apply_requests_with(&mut gm, |r, result| {
             assert!(result.is_ok());
             let Value::UInt(v) = r.value else {
                 panic!("kind")
@@ -181,12 +181,14 @@ fn a_killed_owner_is_reported_gone_and_a_new_owner_takes_over() {
     wait_for(Duration::from_secs(5), || {
         (reader.snapshot().ok()?.seq > 0).then_some(())
     });
-    assert!(
-        matches!(
-            SharedGlobalMemory::<Pattern>::create(&name),
-            Err(ShmError::OwnerAlive { .. })
-        ),
-        "a second live owner is refused"
+    let second = SharedGlobalMemory::<Pattern>::create(&name).map(|_| ());
+    assert_eq!(
+        second,
+        Err(ShmError::OwnerAlive {
+            name: name.clone(),
+            pid: u64::from(child.id()),
+        }),
+        "a second live owner is refused, naming the live one"
     );
     kill9(&mut child);
     std::thread::sleep(Duration::from_millis(30));
@@ -293,7 +295,7 @@ fn writes_are_refused_up_front_with_the_reason() {
     }
     assert_eq!(
         seg.write("speed", Value::UInt(1)),
-        Err(ShmError::MailboxFull(name.clone())),
+        Err(ShmError::QueueFull(name.clone())),
         "too many waiting is an error, never a silent drop"
     );
 }
@@ -314,13 +316,30 @@ fn requests_of_a_thousand_writes_wait_up_to_a_bound_of_writes_not_only_of_reques
     }
     assert_eq!(
         seg.write_checked(&request),
-        Err(ShmError::MailboxFull(name.clone())),
+        Err(ShmError::QueueFull(name.clone())),
         "16,384 writes wait: the next request is turned away"
     );
     assert_eq!(seg.status().writes_pending, 16);
     // Larger than a request may be: refused before anything is sent.
     let too_many = vec![one; plc_io::shm::protocol::MAX_WRITES + 1];
-    assert!(seg.post_checked(&too_many).is_err());
+    let refused = seg.post_checked(&too_many).unwrap_err();
+    assert!(
+        matches!(
+            refused,
+            ShmError::RequestCount {
+                count: 1025,
+                most: 1024,
+                ..
+            }
+        ),
+        "{refused:?}"
+    );
+    assert!(
+        refused
+            .to_string()
+            .contains("a request holds 1 to 1024; send them in parts"),
+        "{refused}"
+    );
 }
 
 /// A write to element `leaf` of the variable called `name` in `seg`.
@@ -364,7 +383,7 @@ fn external_writes_reach_the_program_and_are_not_overwritten() {
         matches!(refused, Err(ShmError::NotWritable { .. })),
         "{refused:?}"
     );
-    owner.apply_mailbox(&mut gm);
+    owner.apply_requests(&mut gm);
     assert_eq!(gm.speed, 9, "nothing of a refused request is written");
 }
 
@@ -434,7 +453,7 @@ fn invalid_utf8_written_from_outside_reads_as_the_valid_prefix() {
     let mut gm = Machine::default();
     gm.note.set("ok");
     owner.publish(&gm).unwrap();
-    owner.apply_mailbox(&mut gm);
+    owner.apply_requests(&mut gm);
     // The string's bytes are not UTF-8 (an owner built from other code, or damaged).
     let note = &Machine::VARIABLES[4];
     owner.scribble(192 + note.offset, &[b'o', b'k', 0xFF, 0xFE, b'x']);
@@ -452,7 +471,7 @@ fn after_a_clean_stop_readers_still_attached_get_an_error_even_once_a_new_owner_
         while !gm.stop {
             gm.seq += 1;
             owner.publish(&gm).unwrap();
-            owner.apply_mailbox(&mut gm);
+            owner.apply_requests(&mut gm);
             std::thread::sleep(Duration::from_millis(1));
         }
         return; // dropping `owner` stops it cleanly
@@ -512,7 +531,7 @@ fn after_a_clean_stop_readers_still_attached_get_an_error_even_once_a_new_owner_
 
 #[test]
 fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_post() {
-    use plc_io::shm::mailbox::Outcome;
+    use plc_io::shm::WriteOutcome as Outcome;
     let name = unique("distrust");
     let mut owner = SharedGlobalMemory::<Machine>::create(&name).unwrap();
     let mut gm = Machine::default();
@@ -540,7 +559,7 @@ fn the_owner_checks_every_request_again_and_rejects_what_a_writer_should_not_pos
             })
         })
         .collect();
-    assert_eq!(owner.apply_mailbox(&mut gm), 0);
+    assert_eq!(owner.apply_requests(&mut gm), 0);
     assert!(
         outcomes.iter().all(|o| *o == Outcome::Rejected),
         "{outcomes:?}"

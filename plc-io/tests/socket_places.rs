@@ -41,7 +41,7 @@ fn owner_role() {
     let mut gm = Plain::default();
     let start = Instant::now();
     while gm.setpoint != 7 && start.elapsed() < Duration::from_secs(60) {
-        owner.apply_mailbox(&mut gm);
+        owner.apply_requests(&mut gm);
         gm.count += 1;
         owner.publish(&gm).unwrap();
         std::thread::sleep(Duration::from_millis(1));

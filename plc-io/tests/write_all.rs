@@ -33,7 +33,7 @@ fn run_owner(name: &str) -> (Arc<AtomicBool>, std::thread::JoinHandle<()>) {
         let mut owner = SharedGlobalMemory::<Recipe>::create(&name).unwrap();
         let mut gm = Recipe::default();
         while !flag.load(Ordering::Relaxed) {
-            owner.apply_mailbox(&mut gm);
+            owner.apply_requests(&mut gm);
             owner.publish(&gm).unwrap();
             std::thread::sleep(Duration::from_micros(200));
         }
@@ -57,7 +57,7 @@ fn an_array_written_whole_is_applied_whole_and_a_batch_with_a_refused_write_not_
         let image = seg.snapshot_bytes().unwrap();
         for e in 0..8 {
             assert_eq!(
-                seg.value_at(&image, 0, e),
+                seg.descriptor().variables[0].value_in(&image, e),
                 Some(Value::Int(round)),
                 "step {e}"
             );

@@ -312,7 +312,9 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
         // lock, not to change the value (BadOutOfRange), the user (BadUserAccessDenied) or the
         // node's access (BadNotWritable: its AccessLevel still allows writing, rightly).
         ShmError::Forced { .. } => StatusCode::BadLocked,
-        ShmError::MailboxFull(_) => StatusCode::BadTooManyOperations,
+        ShmError::QueueFull(_)
+        | ShmError::RequestCount { .. }
+        | ShmError::RequestTooLarge { .. } => StatusCode::BadTooManyOperations,
         ShmError::OwnerGone(_) | ShmError::Replaced(_) | ShmError::Closed { .. } => {
             StatusCode::BadNoCommunication
         }

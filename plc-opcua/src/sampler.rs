@@ -48,7 +48,6 @@ pub struct Sampler {
 
 /// One snapshot's values with their status and source time.
 struct Snapshot<'a> {
-    seg: &'a DynSegment,
     image: &'a [u8],
     status: StatusCode,
     source: Option<DateTime>,
@@ -139,7 +138,6 @@ impl Sampler {
         };
         let forced = forced(seg, status.forces);
         let snap = Snapshot {
-            seg,
             image: &image,
             status: mapping::value_status(state),
             source: mapping::source_time(status.cycle_utc_ns),
@@ -240,7 +238,6 @@ impl Sampler {
             (Some((image, status, source)), Some(seg)) => {
                 let forced = forced(seg, seg.status().forces);
                 let snap = Snapshot {
-                    seg,
                     image: &image,
                     status,
                     source,
@@ -293,7 +290,7 @@ impl Snapshot<'_> {
         };
         let var = &node.var;
         let elements: Option<Vec<_>> = (0..var.elements())
-            .map(|e| self.seg.value_of(self.image, var, e))
+            .map(|e| var.value_in(self.image, e))
             .collect();
         let Some(elements) = elements else {
             return mapping::status_only(StatusCode::BadInternalError);

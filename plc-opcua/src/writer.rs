@@ -68,10 +68,7 @@ impl Writer {
                 Err(e) => return refused(&job.user, &target, &e),
             };
             let old = seg.snapshot_bytes().ok().map(|image| {
-                let values = job
-                    .elements
-                    .iter()
-                    .map(|&(e, _)| seg.value_of(&image, var, e));
+                let values = job.elements.iter().map(|&(e, _)| var.value_in(&image, e));
                 show(values)
             });
             match seg.write_all(&batch) {

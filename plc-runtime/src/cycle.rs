@@ -172,7 +172,7 @@ where
             // Forces after the writes: a forced value is what the program reads, whatever
             // the bus or a tool gave it.
             if let Some(shm) = shm.as_mut() {
-                shm.apply_mailbox(&mut ctx.gm);
+                shm.apply_requests(&mut ctx.gm);
                 shm.apply_forces(&mut ctx.gm);
             }
             #[cfg(feature = "cycle-probe")]

@@ -129,9 +129,9 @@ pub struct RuntimeBuilder<T> {
     probe: Option<probe::Probe>,
 }
 
-/// Runs a program's cycle: exchange I/O, unpack bits, apply mailbox writes, the program's
-/// tick, pack bits, publish to shared memory, hand changed nonvolatile values to the retain
-/// writer.
+/// Runs a program's cycle: exchange I/O, unpack bits, apply the requests tools sent, the
+/// program's tick, pack bits, publish to shared memory, hand changed nonvolatile values to the
+/// retain writer.
 ///
 /// ```no_run
 /// use plc_core::GlobalMemory;

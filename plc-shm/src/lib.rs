@@ -37,122 +37,51 @@
 
 #![deny(missing_docs)]
 
-mod bus_clocks;
-mod bus_state;
-mod bytes;
-mod client;
-mod codec;
-mod commission;
-mod cycle_stats;
-mod descriptor;
-mod dynamic;
+// Layers, bottom to top: `error`, `limits` and the texts of messages; `sys` (system calls);
+// `format` (the segment's format); `protocol` (the socket's messages and their answers); then
+// `owner` and `tool`, which never import each other; `shared_global_memory` above both.
+mod calendar;
+mod env;
 mod error;
-mod forces;
-mod guard;
-mod ids;
-mod io_status;
-mod layout;
+pub mod limits;
 mod log_limit;
-pub mod mailbox;
-mod memfd;
-mod owner;
-mod paths;
-mod policy;
-mod priority;
+mod naming;
+
+mod sys;
+
+mod format;
+
 pub mod protocol;
-mod rundir;
-mod segment;
-mod server;
-mod signals;
-mod status;
-pub mod trace;
-mod unix;
-mod view;
 
-pub use bus_clocks::BusClocks;
-pub use bus_state::BusState;
-pub use cycle_stats::CycleStats;
-pub use descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
-pub use dynamic::DynSegment;
+mod owner;
+mod tool;
+
+mod shared_global_memory;
+
+pub use calendar::utc_text;
+pub use env::RUNTIME_DIR_ENV;
 pub use error::{Cause, ShmError};
-pub use forces::{ForceInfo, path_of, shown_in_log, utc_text};
-pub use ids::euid;
-pub use io_status::IoStatus;
-pub use layout::MAX_FORCES;
+pub use format::bus_clocks::BusClocks;
+pub use format::bus_state::BusState;
+pub use format::cycle_stats::CycleStats;
+pub use format::descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
+pub use format::force_table::ForceInfo;
+pub use format::io_status::IoStatus;
+pub use format::status::{OwnerState, RunState, Status};
+pub use limits::{GREETING_GRACE, MAX_CONNECTIONS, MAX_FORCES, MAX_PER_UID, RESERVED_FOR_WRITERS};
 pub use log_limit::LogLimit;
-pub use owner::{SharedGlobalMemory, ShmOwner, ShmReader};
-pub use paths::{PathLocation, PathTarget};
-pub use policy::Sharing;
-pub use priority::normal_priority;
-pub use rundir::{RUNTIME_DIR_ENV, normalise as normalise_name, owner_dir as runtime_dir};
-pub use server::{GREETING_GRACE, MAX_CONNECTIONS, MAX_PER_UID, RESERVED_FOR_WRITERS};
-pub use signals::stop_on_signals;
-pub use status::clock_ns;
-pub use status::{OwnerState, RunState, Status};
-
-/// A running (or left behind) segment, as `plc list` shows it.
-#[derive(Clone, Debug)]
-#[non_exhaustive]
-pub struct SegmentInfo {
-    /// Segment name.
-    pub name: String,
-    /// Owner pid (0 if the segment cannot be read).
-    pub pid: u64,
-    /// Owner state.
-    pub state: OwnerState,
-    /// Cycles done.
-    pub cycle_count: u64,
-    /// Number of variables.
-    pub variables: usize,
-    /// Saves of retained values that failed so far.
-    pub retain_failures: u64,
-    /// Values forced now.
-    pub forces: u64,
-    /// The bus's distributed clocks, on a bus that runs them.
-    pub clocks: Option<BusClocks>,
-    /// Why the segment cannot be read (damaged, refused, permission denied), if it cannot:
-    /// such a segment is listed, not hidden, so its owner can be found and restarted.
-    pub problem: Option<ShmError>,
-}
-
-/// Every running plc-vars program this process can see: the sockets in the runtime
-/// directories ([`runtime_dir`], and root's `/run/plc-vars`). One that cannot be read is
-/// listed with its [`problem`](SegmentInfo::problem); one that disappears while being listed
-/// (its program stopped) is left out.
-pub fn list_segments() -> Vec<SegmentInfo> {
-    segment::names()
-        .into_iter()
-        .filter_map(|(name, dir)| match DynSegment::attach(&name) {
-            Ok(seg) => {
-                let status = seg.status();
-                Some(SegmentInfo {
-                    pid: status.pid,
-                    state: seg.owner_state(),
-                    cycle_count: status.cycle_count,
-                    variables: seg.descriptor().variables.len(),
-                    retain_failures: status.retain_failures,
-                    forces: status.forces,
-                    clocks: status.clocks,
-                    problem: None,
-                    name,
-                })
-            }
-            Err(ShmError::NotFound(_) | ShmError::Closed { .. } | ShmError::Replaced(_)) => None,
-            Err(problem) => Some(SegmentInfo {
-                pid: 0,
-                state: if segment::owner_alive(&dir, &name) {
-                    OwnerState::Running
-                } else {
-                    OwnerState::Gone
-                },
-                cycle_count: 0,
-                variables: 0,
-                retain_failures: 0,
-                forces: 0,
-                clocks: None,
-                problem: Some(problem),
-                name,
-            }),
-        })
-        .collect()
-}
+pub use naming::{path_of, shown_in_log};
+pub use owner::policy::Sharing;
+pub use owner::{Rejection, ShmOwner};
+pub use protocol::{Ticket, WriteOutcome};
+pub use shared_global_memory::SharedGlobalMemory;
+pub use sys::clock::clock_ns;
+pub use sys::ids::euid;
+pub use sys::priority::normal_priority;
+pub use sys::rundir::{normalise as normalise_name, owner_dir as runtime_dir};
+pub use sys::signals::stop_on_signals;
+pub use tool::dynamic::DynSegment;
+pub use tool::list::{SegmentInfo, list_segments};
+pub use tool::paths::{PathLocation, PathTarget};
+pub use tool::reader::ShmReader;
+pub use tool::trace;

@@ -65,12 +65,9 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             .descriptor()
             .variables
             .iter()
-            .enumerate()
-            .filter(|(_, v)| v.dims.is_empty())
-            .map(|(i, v)| {
-                let value = seg
-                    .value_at(&image, i, 0)
-                    .map_or("?".into(), |x| x.to_string());
+            .filter(|v| v.dims.is_empty())
+            .map(|v| {
+                let value = v.value_in(&image, 0).map_or("?".into(), |x| x.to_string());
                 format!("{}={value}", v.name)
             })
             .collect();

@@ -237,7 +237,7 @@ fn status_line(
             let Ok(image) = s.snapshot_bytes() else { break };
             let read = |n: &str| {
                 let i = s.descriptor().index_of(n);
-                match i.and_then(|i| s.value_at(&image, i, 0)) {
+                match i.and_then(|i| s.descriptor().variables[i].value_in(&image, 0)) {
                     Some(plc_core::Value::Real(r)) => format!("{r:.1}"),
                     Some(v) => v.to_string(),
                     None => "?".into(),
@@ -246,7 +246,7 @@ fn status_line(
             let member = |path: &str| {
                 s.locate(path)
                     .ok()
-                    .and_then(|at| s.value_at_location(&image, &at))
+                    .and_then(|at| at.var.value_in(&image, 0))
             };
             let position = match member("crosshead.actual_position") {
                 Some(plc_core::Value::Real(mm)) => format!("{mm:.2} mm"),

@@ -8,6 +8,7 @@ use super::Error;
 use crate::display::{self, Format};
 use plc_core::Value;
 use plc_core::write::{Checked, Write};
+use plc_shm::limits::MAX_WRITES;
 use plc_shm::{DynSegment, PathLocation};
 
 /// `path=value`, checked as the program checks a force.
@@ -25,18 +26,18 @@ fn check(seg: &DynSegment, assignment: &str) -> Result<(PathLocation, Checked), 
     Ok((at, checked))
 }
 
-/// Forces every assignment: all are checked first, then sent in requests of 64, each held
-/// whole or refused whole.
+/// Forces every assignment: all are checked first, then sent in requests of at most
+/// [`MAX_WRITES`] (one request for as many as the owner holds), each held whole or refused whole.
 pub fn force(segment: &str, assignments: &[String]) -> Result<(), Error> {
     let seg = DynSegment::attach(segment)?;
     let checked: Vec<(PathLocation, Checked)> = assignments
         .iter()
         .map(|a| check(&seg, a))
         .collect::<Result<_, _>>()?;
-    for (n, part) in checked.chunks(64).enumerate() {
+    for (n, part) in checked.chunks(MAX_WRITES).enumerate() {
         let forces: Vec<Checked> = part.iter().map(|(_, c)| *c).collect();
         if let Err(e) = seg.force(&forces) {
-            return Err(match n * 64 {
+            return Err(match n * MAX_WRITES {
                 0 => e.to_string(),
                 done => format!("{e}\nthe first {done} forces are held"),
             }
@@ -71,7 +72,7 @@ pub fn unforce(segment: &str, paths: &[String], all: bool, restore: bool) -> Res
         .iter()
         .map(|p| seg.locate(p.trim()))
         .collect::<Result<_, _>>()?;
-    for part in found.chunks(64) {
+    for part in found.chunks(MAX_WRITES) {
         let values: Vec<(usize, usize)> = part.iter().map(|at| (at.index, at.leaf)).collect();
         seg.release(&values, restore)?;
         for at in part {
@@ -105,7 +106,7 @@ pub fn list(segment: &str, format: &Format) -> Result<(), Error> {
             .locate(&path)
             .ok()
             .and_then(|at| {
-                let v = seg.value_at_location(&image, &at)?;
+                let v = at.var.value_in(&image, 0)?;
                 Some(display::value(&v, at.var.iec_type, format))
             })
             .unwrap_or_else(|| "?".into());

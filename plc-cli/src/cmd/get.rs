@@ -46,11 +46,9 @@ pub fn run(segment: &str, names: &[String], format: &Format) -> Result<(), Error
             }
             Wanted::Paths(paths) => {
                 for at in paths {
-                    let value = seg
-                        .value_at_location(&image, &at)
-                        .map_or("?".to_string(), |v| {
-                            display::value(&v, at.var.iec_type, format)
-                        });
+                    let value = at.var.value_in(&image, 0).map_or("?".to_string(), |v| {
+                        display::value(&v, at.var.iec_type, format)
+                    });
                     println!("{} = {value}", at.path);
                 }
             }

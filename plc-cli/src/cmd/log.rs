@@ -30,7 +30,7 @@ pub(super) fn stop_on_signals() -> Result<Arc<AtomicBool>, String> {
 }
 
 /// What one column of the log holds.
-enum Column {
+enum LogColumn {
     /// A variable (an array whole) or one element, by index.
     Flat(usize, Option<usize>),
     /// A value inside a structure, by path.
@@ -49,15 +49,15 @@ pub fn run(
     let seg = DynSegment::attach(segment)?;
     // One column per name: a variable or element as before, or each value a path reaches
     // inside structures (a whole structure gives a column per member).
-    let mut columns: Vec<(String, Column)> = Vec::new();
+    let mut columns: Vec<(String, LogColumn)> = Vec::new();
     for n in names {
         if is_path(&seg, n) {
             for at in leaves_of(&seg, n)? {
-                columns.push((at.path.clone(), Column::Path(Box::new(at))));
+                columns.push((at.path.clone(), LogColumn::Path(Box::new(at))));
             }
         } else {
             let (i, _, e) = resolve(&seg, n)?;
-            columns.push((n.clone(), Column::Flat(i, e)));
+            columns.push((n.clone(), LogColumn::Flat(i, e)));
         }
     }
     let mut out = std::io::BufWriter::new(
@@ -92,12 +92,13 @@ pub fn run(
         ];
         row.extend(columns.iter().map(|(_, c)| {
             match c {
-                Column::Flat(i, e) => csv_cell(
+                LogColumn::Flat(i, e) => csv_cell(
                     &show(&seg, &image, *i, *e, &full),
                     seg.descriptor().variables[*i].iec_type == IecType::String,
                 ),
-                Column::Path(at) => csv_cell(
-                    &seg.value_at_location(&image, at)
+                LogColumn::Path(at) => csv_cell(
+                    &at.var
+                        .value_in(&image, 0)
                         .map_or("?".to_string(), |v| value(&v, at.var.iec_type, &full)),
                     at.var.iec_type == IecType::String,
                 ),

@@ -101,7 +101,7 @@ pub fn show(
 ) -> String {
     let var = &seg.descriptor().variables[index];
     let listed = element.is_none() && !var.dims.is_empty();
-    let one = |e: usize| match seg.value_at(image, index, e) {
+    let one = |e: usize| match var.value_in(image, e) {
         None => "?".to_string(),
         // In a list each string is quoted, so a comma or quote in it is not read as the list's.
         Some(v @ plc_core::Value::Text(_)) if listed => {

@@ -188,12 +188,9 @@ impl Watch {
             let value = match e {
                 Entry::Var(i) => show(&self.seg, &image, *i, None, &self.format),
                 Entry::Group { .. } => String::new(),
-                Entry::Leaf { at, .. } => self
-                    .seg
-                    .value_at_location(&image, at)
-                    .map_or("?".into(), |v| {
-                        display::value(&v, at.var.iec_type, &self.format)
-                    }),
+                Entry::Leaf { at, .. } => at.var.value_in(&image, 0).map_or("?".into(), |v| {
+                    display::value(&v, at.var.iec_type, &self.format)
+                }),
             };
             fresh.push((e.key(self).to_string(), value));
         }

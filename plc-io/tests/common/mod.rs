@@ -62,7 +62,7 @@ pub fn with_cycles<T: plc_core::GlobalMemory + Send, R>(
     std::thread::scope(|s| {
         s.spawn(|| {
             while !done.load(Relaxed) {
-                owner.apply_mailbox(gm);
+                owner.apply_requests(gm);
                 std::thread::sleep(Duration::from_micros(200));
             }
         });

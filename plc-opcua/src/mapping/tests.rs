@@ -248,9 +248,16 @@ fn refusals_map_to_the_status_codes_of_the_standard() {
         StatusCode::BadNoCommunication
     );
     assert_eq!(
-        write_refusal(&ShmError::MailboxFull("s".into())),
+        write_refusal(&ShmError::QueueFull("s".into())),
         StatusCode::BadTooManyOperations
     );
+    let too_many = ShmError::RequestCount {
+        name: "s".into(),
+        what: "writes",
+        count: 2000,
+        most: 1024,
+    };
+    assert_eq!(write_refusal(&too_many), StatusCode::BadTooManyOperations);
 }
 
 #[test]

@@ -1,13 +1,11 @@
 //! The messages a tool sends besides writes: forces, their release, and traces. Decoded with
 //! the same checked reader; [`decode`] reads any tool-to-owner message.
 
-use super::{
-    DecodeError, MAX_WRITES, Reader, TAG_FORCE, TAG_RELEASE, TAG_TRACE, TAG_WRITE, WriteRequest,
-    decode_writes, start,
-};
-
-/// Values a trace records at most (a row of the ring holds this many words at most).
-pub const MAX_TRACED: usize = 64;
+use super::decode_error::DecodeError;
+use super::reader::{Reader, start};
+use super::tags::{TAG_FORCE, TAG_RELEASE, TAG_TRACE, TAG_WRITE};
+use super::writes::{WriteRequest, decode_writes};
+use crate::limits::{MAX_TRACED, MAX_WRITES};
 
 /// Release flag: put back the value from before the force.
 const RESTORE: u8 = 1;
@@ -24,7 +22,7 @@ pub enum Request {
     /// Forces to end.
     Release(Release),
     /// A trace to start on this connection.
-    Trace(Trace),
+    Trace(TraceRequest),
 }
 
 impl Request {
@@ -54,7 +52,7 @@ pub struct Release {
 
 /// A trace: values recorded every `every`th cycle into a ring the tool reads.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Trace {
+pub struct TraceRequest {
     /// The writer's number for it.
     pub id: u64,
     /// Record every this many cycles (1: every cycle).
@@ -87,7 +85,7 @@ pub fn encode_release(release: &Release) -> Vec<u8> {
 }
 
 /// A trace's bytes. The caller keeps to [`MAX_TRACED`] values.
-pub fn encode_trace(trace: &Trace) -> Vec<u8> {
+pub fn encode_trace(trace: &TraceRequest) -> Vec<u8> {
     let mut out = vec![TAG_TRACE];
     out.extend_from_slice(&trace.id.to_le_bytes());
     out.extend_from_slice(&trace.every.to_le_bytes());
@@ -160,7 +158,7 @@ pub fn decode(bytes: &[u8]) -> Result<Request, DecodeError> {
                 });
             }
             let values = decode_values(&mut r, "the values a trace records", 1, MAX_TRACED)?;
-            Request::Trace(Trace { id, every, values })
+            Request::Trace(TraceRequest { id, every, values })
         }
         byte => {
             return Err(DecodeError::Unknown {
@@ -173,9 +171,20 @@ pub fn decode(bytes: &[u8]) -> Result<Request, DecodeError> {
     Ok(request)
 }
 
+/// Decodes a write request.
+pub fn decode_request(bytes: &[u8]) -> Result<WriteRequest, DecodeError> {
+    match decode(bytes)? {
+        Request::Write(w) => Ok(w),
+        _ => Err(DecodeError::Unknown {
+            what: "unknown message tag",
+            byte: bytes[0],
+        }),
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::super::{encode_force, encode_request};
+    use super::super::writes::{encode_force, encode_request};
     use super::*;
     use proptest::prelude::*;
 
@@ -216,7 +225,7 @@ mod tests {
         ) {
             let values: Vec<(usize, usize)> =
                 values.into_iter().map(|(i, l)| (i as usize, l as usize)).collect();
-            let trace = Request::Trace(Trace { id, every, values: values.clone() });
+            let trace = Request::Trace(TraceRequest { id, every, values: values.clone() });
             let release = Request::Release(Release {
                 id,
                 restore,
@@ -251,13 +260,13 @@ mod tests {
             decode(&encode_release(&mixed)),
             Err(DecodeError::Count { count: 1, .. })
         ));
-        let empty = Trace {
+        let empty = TraceRequest {
             id: 1,
             every: 1,
             values: vec![],
         };
         assert!(decode(&encode_trace(&empty)).is_err());
-        let zero = Trace {
+        let zero = TraceRequest {
             every: 0,
             values: vec![(0, 0)],
             ..empty
