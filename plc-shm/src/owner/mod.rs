@@ -23,7 +23,7 @@ use crate::format::layout::{
 };
 use crate::format::status::{OwnerState, RunState, Status, write_report};
 use crate::format::{bytes, header, seqlock};
-use crate::limits::{FORCE_LOG_LINES, MAX_QUEUED};
+use crate::limits::{FORCE_LOG_LINES, MAX_QUEUED, MAX_TRACES};
 use crate::protocol::Code;
 use crate::sys::base::Base;
 use crate::sys::clock::{now_ns, utc_ns};
@@ -83,6 +83,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         counters.publish(&base, &off);
         let (queue, rx) = std::sync::mpsc::sync_channel(MAX_QUEUED);
         let (log, log_rx) = std::sync::mpsc::sync_channel(FORCE_LOG_LINES);
+        let (retired, retired_rx) = std::sync::mpsc::sync_channel(2 * MAX_TRACES);
         // Last: tools connect only to a complete segment.
         seg.serve(Setup {
             name: name.clone(),
@@ -92,6 +93,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
             counters: counters.clone(),
             queue,
             log: log_rx,
+            retired: retired_rx,
         })?;
         Ok(ShmOwner {
             seg,
@@ -105,6 +107,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
                 unpublished: Default::default(),
                 forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
                 recordings: Default::default(),
+                retired,
             },
             seq: Cell::new(0),
             run_state: Cell::new(RunState::Starting),

@@ -8,7 +8,7 @@
 //! earlier writes if `set` refuses a later one.
 
 use super::forces::ForceTable;
-use super::recording::Recording;
+use super::recording::{Recording, retire_departed};
 use super::refused::Refused;
 use crate::format::layout::{Offsets, S_WRITES_APPLIED, S_WRITES_REJECTED};
 use crate::limits::{PER_CYCLE, PER_CYCLE_WRITES};
@@ -22,7 +22,7 @@ use std::cell::RefCell;
 use std::fmt;
 use std::os::fd::{AsRawFd, OwnedFd};
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
-use std::sync::mpsc::{Receiver, TryRecvError};
+use std::sync::mpsc::{Receiver, SyncSender, TryRecvError};
 use std::sync::{Arc, Mutex};
 
 /// Why the owner refused a write that reached it.
@@ -232,6 +232,8 @@ pub(crate) struct Inbox {
     pub forces: RefCell<ForceTable>,
     /// The traces being recorded.
     pub recordings: RefCell<Vec<Recording>>,
+    /// Where the traces whose tools left go to be freed, off the cycle thread.
+    pub retired: SyncSender<Recording>,
 }
 
 impl Inbox {
@@ -308,7 +310,8 @@ impl Inbox {
         applied
     }
 
-    /// Writes this cycle's row of every trace, dropping those whose tool left.
+    /// Writes this cycle's row of every trace, after handing those whose tool left to the
+    /// server to be freed.
     #[inline]
     pub fn record(&self, image: &[u8], cycle: u64, time_ns: u64) {
         let mut recordings = self.recordings.borrow_mut();
@@ -316,7 +319,7 @@ impl Inbox {
         if recordings.is_empty() {
             return;
         }
-        recordings.retain(|r| !r.left.load(Relaxed));
+        retire_departed(&mut recordings, &self.retired);
         for r in recordings.iter_mut() {
             r.record(image, cycle, time_ns);
         }

@@ -59,6 +59,9 @@ struct Shared {
     traces: AtomicUsize,
     /// Lines the cycle thread logs (forces), written here.
     log: Mutex<Receiver<String>>,
+    /// Traces whose tools left, freed here: unmapping a ring costs milliseconds the cycle
+    /// thread must not spend.
+    retired: Mutex<Receiver<Recording>>,
     /// Refusals and closed connections, logged at a bounded rate.
     refusals: LogLimit,
 }
@@ -85,6 +88,7 @@ pub(crate) struct Setup {
     pub counters: Arc<Counters>,
     pub queue: SyncSender<Batch>,
     pub log: Receiver<String>,
+    pub retired: Receiver<Recording>,
 }
 
 impl Server {
@@ -109,6 +113,7 @@ impl Server {
             conns: Mutex::new(Registry::default()),
             traces: AtomicUsize::new(0),
             log: Mutex::new(setup.log),
+            retired: Mutex::new(setup.retired),
             refusals: LogLimit::default(),
         });
         let listener = Arc::new(listener);
@@ -147,8 +152,15 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// Writes the lines the cycle thread left for the log.
+/// Does what the cycle thread left to this one: writes its lines for the log and frees the
+/// traces whose tools left.
 fn write_log(shared: &Shared) {
+    if let Ok(retired) = shared.retired.try_lock() {
+        // At most MAX_TRACES exist at once, and the channel holds twice as many.
+        for ring in retired.try_iter() {
+            drop(ring);
+        }
+    }
     let Ok(rx) = shared.log.try_lock() else {
         return;
     };
