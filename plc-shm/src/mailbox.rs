@@ -247,8 +247,8 @@ pub(crate) fn validate(
         .collect()
 }
 
-/// The cycle thread's end of the queue.
-pub(crate) struct Inbox {
+/// The cycle thread's end of the queue, for a program of type `T`.
+pub(crate) struct Inbox<T: GlobalMemory> {
     pub rx: Mutex<Receiver<Batch>>,
     pub counters: Arc<Counters>,
     /// Requests applied and not yet published: their writers hear "applied" once a reader
@@ -256,7 +256,7 @@ pub(crate) struct Inbox {
     /// owner that does not publish answers them at its next apply.
     pub unpublished: RefCell<Vec<(Arc<Conn>, u64)>>,
     /// The forces held.
-    pub forces: RefCell<ForceTable>,
+    pub forces: RefCell<ForceTable<T>>,
     /// The traces being recorded.
     pub recordings: RefCell<Vec<Recording>>,
 }
@@ -268,10 +268,10 @@ pub const PER_CYCLE: usize = 256;
 /// taken).
 pub const PER_CYCLE_WRITES: u64 = 4096;
 
-impl Inbox {
+impl<T: GlobalMemory> Inbox<T> {
     /// Applies the queued requests to `gm`, in order, each all or none; answers each one.
     /// Returns how many writes were applied.
-    pub fn apply<T: GlobalMemory>(
+    pub fn apply(
         &self,
         gm: &mut T,
         base: &Base,
@@ -376,7 +376,7 @@ impl Inbox {
 fn apply_batch<T: GlobalMemory>(
     gm: &mut T,
     writes: &[Checked],
-    forces: &ForceTable,
+    forces: &ForceTable<T>,
     audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
 ) -> Result<(), (usize, String, Code)> {
     if forces.len() > 0 {

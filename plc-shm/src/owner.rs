@@ -186,7 +186,7 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
 /// The owner of a segment (the control program): publishes, applies writes, reports.
 /// From [`SharedGlobalMemory::create`].
 pub struct ShmOwner<T: GlobalMemory> {
-    inbox: Inbox,
+    inbox: Inbox<T>,
     view: View,
     /// The owner's seqlock counter, in its own memory: the shared word is only ever written
     /// from it, never read back.
