@@ -12,8 +12,11 @@ use core::mem::size_of;
 pub struct FieldPlaces<S> {
     offset: usize,
     leaves: usize,
-    places: fn(usize, usize, &mut dyn FnMut(StructPlace<S>)) -> bool,
+    places: PlacesFn<S>,
 }
+
+/// What gives the places of a field's leaf: `(offset, leaf, each)`, as [`places_of`].
+type PlacesFn<S> = fn(usize, usize, &mut dyn FnMut(StructPlace<S>)) -> bool;
 
 impl<S> FieldPlaces<S> {
     /// The field of type `F` at `offset` of `S`. In a `const` (as the derive builds its
