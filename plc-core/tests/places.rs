@@ -2,7 +2,7 @@
 //! captured there from a struct that holds a value, written into another, give exactly what a
 //! `set` of that value gives, for every leaf of a struct of every shape.
 
-use plc_core::place::{self, PlacedBytes};
+use plc_core::place::{self, HeldBytes, PlacedBytes};
 use plc_core::rules::path;
 use plc_core::{FixedString, GlobalMemory, IecType, PlcStruct, Time, Value};
 use proptest::prelude::*;
@@ -163,10 +163,40 @@ fn each_leaf_written_at_its_place_is_a_set(seed: u64) {
     }
 }
 
+/// Captures a third of the leaves, in a shuffled order, each right after a `set` of a new
+/// value into one struct (as the force table does), and checks that writing all their bytes
+/// at once ([`HeldBytes`]) into another struct gives what `set`s in that order would.
+fn many_values_held_at_once_are_sets_in_order(seed: u64) {
+    let mut rng = Rng(seed | 1);
+    let mut holder = random_shapes(&mut rng);
+    let into = random_shapes(&mut rng);
+    let mut chosen: Vec<(usize, usize)> = leaves()
+        .into_iter()
+        .filter(|_| rng.next().is_multiple_of(3))
+        .collect();
+    for k in (1..chosen.len()).rev() {
+        chosen.swap(k, (rng.next() % (k as u64 + 1)) as usize);
+    }
+    let mut stores = Vec::new();
+    let mut expected = into.clone();
+    for &(i, l) in &chosen {
+        let v = rng.value(i, l);
+        holder.set(i, l, v).unwrap();
+        assert!(place::capture(&holder, i, l, |p| stores.push(p)));
+        expected.set(i, l, v).unwrap();
+    }
+    let held = HeldBytes::new(stores.iter().copied());
+    assert!(held.stores() <= stores.len());
+    let mut written = into.clone();
+    held.write(&mut written);
+    assert_eq!(written, expected, "{} values (seed {seed})", chosen.len());
+}
+
 #[test]
 fn every_leaf_written_at_its_place_reads_back_as_set() {
     for seed in [1, 0x9e37_79b9_7f4a_7c15, 42] {
         each_leaf_written_at_its_place_is_a_set(seed);
+        many_values_held_at_once_are_sets_in_order(seed);
     }
 }
 
@@ -175,6 +205,7 @@ proptest! {
     #[test]
     fn any_values_written_at_their_places_read_back_as_set(seed in any::<u64>()) {
         each_leaf_written_at_its_place_is_a_set(seed);
+        many_values_held_at_once_are_sets_in_order(seed);
     }
 }
 

@@ -6,10 +6,9 @@
 
 mod common;
 
-use common::{unique, wait_for};
+use common::{run_program, unique, wait_for};
 use plc_core::write::Write;
 use plc_core::{FixedString, GlobalMemory, PlcStruct, Value};
-use plc_io::Runtime;
 use plc_io::shm::{DynSegment, SharedGlobalMemory};
 use std::time::Duration;
 
@@ -45,32 +44,21 @@ pub struct Gm {
 
 /// A program that records what it reads, then writes every forced value over.
 fn program(name: &str) -> (plc_io::StopHandle, std::thread::JoinHandle<Gm>) {
-    let rt = Runtime::<Gm>::builder()
-        .period(Duration::from_millis(1))
-        .segment(name)
-        .handle_signals(false)
-        .build()
-        .unwrap();
-    let stop = rt.stop_handle();
-    let thread = std::thread::spawn(move || {
-        rt.run(|ctx| {
-            let gm = &mut ctx.gm;
-            gm.seen_ready = gm.ready;
-            gm.seen_lights = gm.lights;
-            gm.seen_position = gm.axes[1].position;
-            gm.seen_label = gm.label;
-            gm.flags = 0;
-            gm.ready = false;
-            gm.lights = 0x7e;
-            gm.red = false;
-            gm.green = false;
-            gm.axes[1].position = -1.0;
-            gm.axes[1].tag.set("program");
-            gm.label.set("the program's");
-        })
-        .unwrap()
-    });
-    (stop, thread)
+    run_program(name, |ctx: &mut plc_io::Context<Gm>| {
+        let gm = &mut ctx.gm;
+        gm.seen_ready = gm.ready;
+        gm.seen_lights = gm.lights;
+        gm.seen_position = gm.axes[1].position;
+        gm.seen_label = gm.label;
+        gm.flags = 0;
+        gm.ready = false;
+        gm.lights = 0x7e;
+        gm.red = false;
+        gm.green = false;
+        gm.axes[1].position = -1.0;
+        gm.axes[1].tag.set("program");
+        gm.label.set("the program's");
+    })
 }
 
 fn force(seg: &DynSegment, path: &str, value: Value) {

@@ -6,7 +6,7 @@
 
 use super::layout::{Base, MAX_FORCES, Offsets};
 use super::protocol::Release;
-use plc_core::place::{self, PlacedBytes};
+use plc_core::place::{self, HeldBytes, PlacedBytes};
 use plc_core::write::{self, Checked};
 use plc_core::{GlobalMemory, Value, VarInfo};
 use std::sync::atomic::{Ordering, fence};
@@ -41,9 +41,9 @@ pub struct ForceInfo {
 /// The forces the cycle thread holds.
 pub(crate) struct ForceTable<T> {
     held: Vec<Force<T>>,
-    /// What applying them writes, rebuilt when they change: every force's placed bytes in
-    /// the order held, neighbours joined ...
-    stores: Vec<PlacedBytes<T>>,
+    /// What applying them writes, rebuilt when they change: every force's placed bytes, in
+    /// the order held (a later force wins where two write the same bytes) ...
+    stores: HeldBytes<T>,
     /// ... and the forces `T` does not place, set through `set` after the stores (a type
     /// places all its values or, written by hand, none: the two never hold the same bytes).
     unplaced: Vec<Checked>,
@@ -59,7 +59,7 @@ impl<T: GlobalMemory> ForceTable<T> {
     pub fn new(vars: &'static [VarInfo], log: SyncSender<String>) -> Self {
         ForceTable {
             held: Vec::new(),
-            stores: Vec::new(),
+            stores: HeldBytes::default(),
             unplaced: Vec::new(),
             vars,
             log,
@@ -71,14 +71,12 @@ impl<T: GlobalMemory> ForceTable<T> {
         self.held.len()
     }
 
-    /// Sets every forced value in `gm`: a store per value where it lies (see
-    /// [`plc_core::place`]), as `set` wrote it when it was forced. Nearly every cycle holds
-    /// none: two length checks.
+    /// Sets every forced value in `gm`: its bytes where it lies (see [`plc_core::place`]),
+    /// as `set` wrote them when it was forced. Nearly every cycle holds none: a few length
+    /// checks.
     #[inline]
     pub fn apply(&self, gm: &mut T) {
-        for s in &self.stores {
-            s.write(gm);
-        }
+        self.stores.write(gm);
         for checked in &self.unplaced {
             let w = checked.write();
             // The value was set once when it was forced: `set` accepts it.
@@ -88,20 +86,12 @@ impl<T: GlobalMemory> ForceTable<T> {
 
     /// The stores and the unplaced forces from the forces held, in their order.
     fn rebuild(&mut self) {
-        self.stores.clear();
-        self.unplaced.clear();
-        for f in &self.held {
-            let Some(placed) = &f.placed else {
-                self.unplaced.push(f.write);
-                continue;
-            };
-            for &s in placed {
-                match self.stores.last().and_then(|last| last.join(s)) {
-                    Some(joined) => *self.stores.last_mut().expect("joined to it") = joined,
-                    None => self.stores.push(s),
-                }
-            }
-        }
+        let placed = self.held.iter().filter_map(|f| f.placed.as_deref());
+        self.stores = HeldBytes::new(placed.flatten().copied());
+        self.unplaced = (self.held.iter())
+            .filter(|f| f.placed.is_none())
+            .map(|f| f.write)
+            .collect();
     }
 
     /// Why a write to `index`/`leaf` is refused, if that value is forced.

@@ -277,7 +277,9 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// tick (so the program reads forced values), and after the tick, before the outputs are
     /// packed and published (so the bus and the tools get them, whatever the program wrote).
     /// A program that drives its own cycle does the same. Forces arrive with the writes (at
-    /// most 256 held); a cycle that holds none pays one length check.
+    /// most 256 held); each is a store or a few where its value lies in `T` (its bytes as
+    /// `set` wrote them when it was forced: [`plc_core::place`]). A cycle that holds none
+    /// pays two length checks.
     #[inline]
     pub fn apply_forces(&self, gm: &mut T) {
         self.inbox.forces.borrow().apply(gm);

@@ -130,16 +130,16 @@ impl Recording {
         let k = self.next;
         let at = ROWS + (k % self.capacity) as usize * stride(self.slots.len());
         let b = &self.base;
-        let stamp = b.word(at);
-        stamp.store(2 * k + 1, Ordering::Relaxed);
+        let row = b.words(at, ROW_HEAD + self.slots.len());
+        let (head, values) = row.split_at(ROW_HEAD);
+        head[0].store(2 * k + 1, Ordering::Relaxed);
         fence(Ordering::Release);
-        b.word(at + 8).store(cycle, Ordering::Relaxed);
-        b.word(at + 16).store(time_ns, Ordering::Relaxed);
-        for (j, slot) in self.slots.iter().enumerate() {
-            b.word(at + 24 + 8 * j)
-                .store(slot.read(image), Ordering::Relaxed);
+        head[1].store(cycle, Ordering::Relaxed);
+        head[2].store(time_ns, Ordering::Relaxed);
+        for (word, slot) in values.iter().zip(&self.slots) {
+            word.store(slot.read(image), Ordering::Relaxed);
         }
-        stamp.store(2 * k + 2, Ordering::Release);
+        head[0].store(2 * k + 2, Ordering::Release);
         self.next = k + 1;
         b.store(T_HEAD, k + 1);
     }

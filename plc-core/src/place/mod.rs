@@ -236,16 +236,6 @@ impl Width {
             Width::Eight => 8,
         }
     }
-
-    /// Twice as wide, for two whole pieces side by side.
-    const fn doubled(self) -> Option<Width> {
-        match self {
-            Width::One => Some(Width::Two),
-            Width::Two => Some(Width::Four),
-            Width::Four => Some(Width::Eight),
-            Width::Eight | Width::Masked(_) => None,
-        }
-    }
 }
 
 /// Bytes of a struct `S` captured at a [`StructPlace`] (by [`StructPlace::capture`]), to write
@@ -310,8 +300,8 @@ impl<S> PlacedBytes<S> {
         // written lie inside `to`; they were read from the same offsets of another `S`, in the
         // field the place's maker proved to be there, so they are a valid value of it (or of
         // some of its bytes: any bytes are but a bool's, which is one byte and written whole);
-        // a masked byte changes bits of an integer, any of whose values is valid. `join`
-        // keeps each byte at its offset. The `&mut S` makes the write exclusive.
+        // a masked byte changes bits of an integer, any of whose values is valid. The `&mut S`
+        // makes the write exclusive.
         unsafe {
             let p = (to as *mut S).cast::<u8>().add(self.offset as usize);
             match self.width {
@@ -324,30 +314,34 @@ impl<S> PlacedBytes<S> {
         }
     }
 
-    /// `self` and `next` as one store, when they are whole pieces of the same width side by
-    /// side in memory (`next` just after `self`) and twice their width is a store: the bools
-    /// of a source word, the pieces of a string. Writing the joined store writes exactly the
-    /// bytes the two write, so a list of stores writes the same with neighbours joined.
-    pub fn join(self, next: Self) -> Option<Self> {
-        if self.width != next.width
-            || u64::from(next.offset) != u64::from(self.offset) + self.width.bytes() as u64
-        {
-            return None;
+    /// Each byte it writes: its offset in `S`, the bits of it written (all for a whole
+    /// piece) and their values.
+    fn each_byte(&self, mut f: impl FnMut(usize, u8, u8)) {
+        let at = self.offset as usize;
+        match self.width {
+            Width::Masked(mask) => f(at, mask, self.bits as u8),
+            whole => {
+                let n = whole.bytes();
+                // The integer of width `n` holding the bytes, as `capture` read them.
+                let bytes = match n {
+                    8 => self.bits.to_ne_bytes(),
+                    4 => widen((self.bits as u32).to_ne_bytes()),
+                    2 => widen((self.bits as u16).to_ne_bytes()),
+                    _ => widen([self.bits as u8]),
+                };
+                for (k, &byte) in bytes[..n].iter().enumerate() {
+                    f(at + k, 0xff, byte);
+                }
+            }
         }
-        let width = self.width.doubled()?;
-        let shift = 8 * self.width.bytes() as u32;
-        let bits = if cfg!(target_endian = "little") {
-            self.bits | next.bits << shift
-        } else {
-            self.bits << shift | next.bits
-        };
-        Some(PlacedBytes {
-            offset: self.offset,
-            width,
-            bits,
-            _in: PhantomData,
-        })
     }
+}
+
+/// `bytes` at the start of eight.
+fn widen<const N: usize>(bytes: [u8; N]) -> [u8; 8] {
+    let mut out = [0; 8];
+    out[..N].copy_from_slice(&bytes);
+    out
 }
 
 /// Captures value `element` of variable `index` as `gm` holds it: every store that writes it
@@ -369,5 +363,10 @@ pub fn capture<T: GlobalMemory>(
 }
 
 pub(crate) mod fields;
+#[cfg(feature = "std")]
+mod held;
 #[cfg(test)]
 mod tests;
+
+#[cfg(feature = "std")]
+pub use held::HeldBytes;

@@ -37,41 +37,63 @@ fn a_bit_is_one_masked_byte_and_leaves_the_others() {
 }
 
 #[test]
-fn neighbours_of_one_width_join_and_write_the_same_bytes() {
+fn held_bytes_write_each_byte_once_the_last_store_winning() {
     let from = Plain {
         word: 0x1234,
         flags: [true, false, true, true, false, true],
         wide: u64::MAX - 5,
     };
-    let at = core::mem::offset_of!(Plain, flags);
-    // SAFETY: each is one of `flags`' bools, at its offset in the `#[repr(C)]` struct.
+    let (word, flags, wide) = (
+        core::mem::offset_of!(Plain, word),
+        core::mem::offset_of!(Plain, flags),
+        core::mem::offset_of!(Plain, wide),
+    );
+    // SAFETY (all): each is a field of `Plain` at its offset (`flags` one bool each), or a bit
+    // of its `u16`.
     let bools: Vec<PlacedBytes<Plain>> = (0..6)
-        .flat_map(|k| stores(unsafe { StructPlace::whole(at + k, 1) }, &from))
+        .flat_map(|k| stores(unsafe { StructPlace::whole(flags + k, 1) }, &from))
         .collect();
-    let two = bools[0]
-        .join(bools[1])
-        .expect("side by side, one byte each");
-    let four = two
-        .join(bools[2].join(bools[3]).unwrap())
-        .expect("two and two");
-    assert_eq!((four.offset(), four.len()), (at, 4));
-    assert!(bools[1].join(bools[0]).is_none(), "not in memory order");
-    assert!(bools[0].join(bools[2]).is_none(), "not side by side");
-    assert!(four.join(bools[4]).is_none(), "not of one width");
+    let held = HeldBytes::new(bools.iter().copied());
+    assert_eq!(
+        held.stores(),
+        2,
+        "six bools side by side: four and two bytes"
+    );
     let mut into = Plain::default();
-    four.write(&mut into);
-    bools[4].join(bools[5]).unwrap().write(&mut into);
+    held.write(&mut into);
     assert_eq!(into.flags, from.flags);
     assert_eq!((into.word, into.wide), (0, 0), "nothing beside the bools");
-    // SAFETY: `wide` is a `u64` at its offset.
-    let wide = unsafe { StructPlace::whole(core::mem::offset_of!(Plain, wide), 8) };
-    let eight = stores(wide, &from);
-    assert!(
-        eight[0].join(eight[0]).is_none(),
-        "eight bytes is the widest"
-    );
-    eight[0].write(&mut into);
-    assert_eq!(into.wide, from.wide);
+
+    // A whole word, then a bit of it from another value: the bit wins; the other way round,
+    // the word does. Bits of one byte from two stores make one masked store.
+    let whole = stores(unsafe { StructPlace::whole(word, 2) }, &from);
+    let bit = |b, v: &Plain| stores(unsafe { StructPlace::bit_of(word, 2, b) }, v);
+    let zero = Plain::default();
+    let bit_last = HeldBytes::new(whole.iter().chain(&bit(4, &zero)).copied());
+    let word_last = HeldBytes::new(bit(4, &zero).iter().chain(&whole).copied());
+    let (mut a, mut b) = (Plain::default(), Plain::default());
+    bit_last.write(&mut a);
+    word_last.write(&mut b);
+    assert_eq!((a.word, b.word), (0x1224, 0x1234));
+    let two_bits = HeldBytes::new(bit(0, &from).into_iter().chain(bit(1, &from)));
+    assert_eq!(two_bits.stores(), 1);
+    let mut c = Plain {
+        word: 0xffff,
+        ..Plain::default()
+    };
+    two_bits.write(&mut c);
+    assert_eq!(c.word, 0xfffc, "bits 0 and 1 of 0x1234, no other touched");
+
+    // Eight bytes in one store; a run of seven in three.
+    let eight = stores(unsafe { StructPlace::whole(wide, 8) }, &from);
+    let seven: Vec<_> = (0..7)
+        .flat_map(|k| stores(unsafe { StructPlace::whole(wide + k, 1) }, &from))
+        .collect();
+    assert_eq!(HeldBytes::new(eight.iter().copied()).stores(), 1);
+    assert_eq!(HeldBytes::new(seven.iter().copied()).stores(), 3);
+    let mut d = Plain::default();
+    HeldBytes::new(seven).write(&mut d);
+    assert_eq!(d.wide, from.wide & 0x00ff_ffff_ffff_ffff_u64.to_le());
 }
 
 #[test]
