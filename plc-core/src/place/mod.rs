@@ -13,8 +13,8 @@
 //! use plc_core::{GlobalMemory, Value, place};
 //! #[derive(GlobalMemory, Debug, Clone)]
 //! struct Gm {
-//!     word: u16,
-//!     #[plc(source = "word", bit = 3)]
+//!     status: u16,
+//!     #[plc(source = "status", bit = 3)]
 //!     flag: bool,
 //!     speeds: [f32; 4],
 //! }
@@ -29,7 +29,7 @@
 //!     p.write(&mut other);
 //! }
 //! assert!(other.flag);
-//! assert_eq!(other.word, 0b1000);
+//! assert_eq!(other.status, 0b1000);
 //! ```
 
 use crate::GlobalMemory;
