@@ -380,6 +380,48 @@ pub trait GlobalMemory: Sized {
     /// writes come from outside (the mailbox, `plc set`).
     fn set(&mut self, index: usize, element: usize, value: Value) -> Result<(), SetError>;
 
+    /// Gives `each` every place in this struct that a [`set`](Self::set) of element
+    /// `element` of variable `index` writes: where the value lies (found through
+    /// `core::mem::offset_of!` by the derive, through structures and arrays), and for a
+    /// bit-mapped bool its bit of the source word, for a source word its bools. A force
+    /// captures the bytes there once ([`place::capture`](crate::place::capture)) and writes
+    /// them at each of the cycle's boundaries instead of calling `set`.
+    ///
+    /// `false` if there is no such value or the type does not say where it lies: what an impl
+    /// written by hand answers unless it overrides this, which it cannot do without `unsafe`
+    /// (a [`StructPlace`](crate::place::StructPlace) is made only through `unsafe`
+    /// constructors); callers then use `set`.
+    ///
+    /// ```
+    /// use plc_core::{GlobalMemory, PlcStruct};
+    /// #[derive(PlcStruct, Debug, Clone)]
+    /// struct Axis {
+    ///     enable: bool,
+    ///     position: f64,
+    /// }
+    /// #[derive(GlobalMemory, Debug, Clone)]
+    /// struct Gm {
+    ///     count: u16,
+    ///     axes: [Axis; 2],
+    /// }
+    /// let mut places = Vec::new();
+    /// // `axes[1].position`: leaf 3 of `axes`.
+    /// assert!(Gm::struct_places(1, 3, &mut |p| places.push(p)));
+    /// let at = core::mem::offset_of!(Gm, axes)
+    ///     + core::mem::size_of::<Axis>()
+    ///     + core::mem::offset_of!(Axis, position);
+    /// assert_eq!((places[0].offset(), places[0].len()), (at, 8));
+    /// assert!(!Gm::struct_places(1, 4, &mut |_| {}), "`axes` has 4 basic values");
+    /// ```
+    fn struct_places(
+        index: usize,
+        element: usize,
+        each: &mut dyn FnMut(crate::place::StructPlace<Self>),
+    ) -> bool {
+        let _ = (index, element, each);
+        false
+    }
+
     /// Reads every `at = "%I.."` variable from an input process image.
     fn read_inputs<B: AsRef<[u8]>>(
         &mut self,

@@ -43,6 +43,7 @@ mod fixed_string;
 mod global_memory;
 mod image_bytes;
 pub mod motion;
+pub mod place;
 mod plc_type;
 mod process_image;
 mod raw_bits;

@@ -9,6 +9,8 @@ pub use crate::global_memory::{hash_range, layout_hash};
 pub use crate::image_bytes::{
     field_at, field_at_mut, image_size, offsets, repr_at, repr_at_mut, run_steps,
 };
+pub use crate::place::StructPlace;
+pub use crate::place::fields::{FieldPlaces, bit_places};
 pub use crate::plc_type::sealed::Sealed;
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;

@@ -5,10 +5,9 @@
 
 mod common;
 
-use common::{unique, wait_for};
+use common::{run_program, unique, wait_for};
 use plc_core::write::Write;
 use plc_core::{GlobalMemory, Value};
-use plc_io::Runtime;
 use plc_io::shm::trace::TraceEvent;
 use plc_io::shm::{DynSegment, ShmError};
 use std::time::Duration;
@@ -32,22 +31,11 @@ pub struct Gm {
 /// The program: the motor follows the start button, the lamp is always written off, the
 /// counter counts cycles.
 fn program(name: &str) -> (plc_io::StopHandle, std::thread::JoinHandle<Gm>) {
-    let rt = Runtime::<Gm>::builder()
-        .period(Duration::from_millis(1))
-        .segment(name)
-        .handle_signals(false)
-        .build()
-        .unwrap();
-    let stop = rt.stop_handle();
-    let thread = std::thread::spawn(move || {
-        rt.run(|ctx| {
-            ctx.gm.motor_on = ctx.gm.start_button;
-            ctx.gm.lamp = false;
-            ctx.gm.counter += 1;
-        })
-        .unwrap()
-    });
-    (stop, thread)
+    run_program(name, |ctx: &mut plc_io::Context<Gm>| {
+        ctx.gm.motor_on = ctx.gm.start_button;
+        ctx.gm.lamp = false;
+        ctx.gm.counter += 1;
+    })
 }
 
 fn force(seg: &DynSegment, name: &str, leaf: usize, value: Value) -> Result<(), ShmError> {

@@ -2,7 +2,9 @@
 //! row-major order.
 
 use super::{ElementError, PlcType, sealed};
+use crate::place::StructPlace;
 use crate::{IecType, Value};
+use core::mem::size_of;
 
 impl<T: PlcType, const N: usize> sealed::Sealed for [T; N] {}
 impl<T: PlcType, const N: usize> PlcType for [T; N] {
@@ -56,6 +58,18 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
                 ElementError::OutOfRange { .. } => ElementError::OutOfRange { len },
                 other => other,
             })
+    }
+    fn __places(leaf: usize, each: &mut dyn FnMut(StructPlace<Self>)) -> bool {
+        let inner = T::LEAVES;
+        if inner == 0 || leaf / inner >= N {
+            return false;
+        }
+        let at = leaf / inner * size_of::<T>();
+        T::__places(leaf % inner, &mut |place: StructPlace<T>| {
+            // SAFETY: an array's items lie one after the other from its start, `size_of::<T>()`
+            // apart (the layout Rust gives `[T; N]`), and item `leaf / inner` is below `N`.
+            each(unsafe { place.within::<Self>(at) })
+        })
     }
     #[inline(always)]
     fn __unpack_bits(&mut self) {

@@ -132,6 +132,17 @@ pub trait PlcType: Clone + sealed::Sealed + 'static {
     #[doc(hidden)]
     #[inline(always)]
     fn __init(&mut self) {}
+    /// Gives `each` every place of leaf `leaf` in a `Self` that a `set_element` of it writes
+    /// (see [`place`](crate::place)): a basic value's whole bytes, an array item's leaf
+    /// moved to the item, a structure member's leaf moved to the member (and a bit-mapped
+    /// bool's bit of its source word). `false` if there is no such leaf or the type does not
+    /// say where it lies, as a type written by hand does not: its values are set through
+    /// `set_element`.
+    #[doc(hidden)]
+    fn __places(leaf: usize, each: &mut dyn FnMut(crate::place::StructPlace<Self>)) -> bool {
+        let _ = (leaf, each);
+        false
+    }
 
     /// Bit `n` of an integer; `false` for other types.
     #[doc(hidden)]

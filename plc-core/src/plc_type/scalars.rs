@@ -2,7 +2,9 @@
 //! `FixedString<N>` and `Time`, with their located access; and the integers as [`BitSource`]s.
 
 use super::{BitSource, ElementError, PlcScalar, PlcType, sealed};
+use crate::place::StructPlace;
 use crate::{FixedString, IecType, Time, Value};
+use core::mem::size_of;
 use zerocopy::byteorder::little_endian as le;
 
 /// Located access for the scalars that a process image address can hold.
@@ -46,6 +48,19 @@ fn set_scalar<T: PlcScalar>(
     Ok(())
 }
 
+/// The place of a basic value's only leaf: all of it. Called only from this file's impls, of
+/// the basic types.
+fn whole_place<T: PlcType>(leaf: usize, each: &mut dyn FnMut(StructPlace<T>)) -> bool {
+    if leaf != 0 {
+        return false;
+    }
+    // SAFETY: `T` is one of this file's basic types: a bool, an integer, a float,
+    // `FixedString<N>` (`[u8; N]`, transparent) or `Time` (an `i64`, transparent). None has
+    // padding, and any bytes are a value of each but `bool`, which is one byte.
+    each(unsafe { StructPlace::whole(0, size_of::<T>()) });
+    true
+}
+
 macro_rules! scalar {
     ($($kind:ident $t:ty => $iec:ident, $repr:ty, $variant:ident, $as:ty;)*) => {$(
         impl sealed::Sealed for $t {}
@@ -71,6 +86,9 @@ macro_rules! scalar {
             fn set_element(&mut self, element: usize, value: Value, ty: IecType)
                 -> Result<(), ElementError> {
                 set_scalar(self, element, value, ty, 0)
+            }
+            fn __places(leaf: usize, each: &mut dyn FnMut(StructPlace<Self>)) -> bool {
+                whole_place(leaf, each)
             }
             located!();
             bits!($kind $t);
@@ -157,6 +175,9 @@ impl PlcType for bool {
     ) -> Result<(), ElementError> {
         set_scalar(self, element, value, ty, 0)
     }
+    fn __places(leaf: usize, each: &mut dyn FnMut(StructPlace<Self>)) -> bool {
+        whole_place(leaf, each)
+    }
     #[inline(always)]
     fn __to_bit(self) -> bool {
         self
@@ -204,6 +225,9 @@ impl<const N: usize> PlcType for FixedString<N> {
     ) -> Result<(), ElementError> {
         set_scalar(self, element, value, ty, N)
     }
+    fn __places(leaf: usize, each: &mut dyn FnMut(StructPlace<Self>)) -> bool {
+        whole_place(leaf, each)
+    }
 }
 impl<const N: usize> PlcScalar for FixedString<N> {
     fn to_value(&self) -> Value {
@@ -245,6 +269,9 @@ impl PlcType for Time {
         ty: IecType,
     ) -> Result<(), ElementError> {
         set_scalar(self, element, value, ty, 0)
+    }
+    fn __places(leaf: usize, each: &mut dyn FnMut(StructPlace<Self>)) -> bool {
+        whole_place(leaf, each)
     }
     located!();
 }

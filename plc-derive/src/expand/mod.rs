@@ -10,6 +10,7 @@ mod fallback;
 mod image;
 mod located;
 mod metadata;
+mod places;
 mod runs;
 mod structure;
 
@@ -67,11 +68,13 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
         bits::expand(&c),
         access,
         located::expand(&c),
+        places::expand(&c),
     ];
     let ident = c.ident;
     let krate = &c.krate;
     let image_ident = image_ident();
     let default = default::expand(&c, &bounds);
+    let places_table = places::table(&c);
     quote! {
         const _: () = {
             #tracked
@@ -88,6 +91,7 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
             #[doc(hidden)]
             impl #ident #bounds {
                 #zero
+                #places_table
                 #hash_parts
                 #access_chunks
             }

@@ -32,6 +32,8 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
     let (unpack, pack) = super::bits::moves(c);
     let get = leaf_get(c);
     let set = leaf_set(c);
+    let places = super::places::expand_struct(c);
+    let places_table = super::places::table(c);
     let initials = super::default::initials(
         c,
         quote!(<Self as #p::PlcType>::__unpack_bits(gm);),
@@ -110,6 +112,14 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
                 #(<#nested as #p::PlcType>::__init(&mut gm.#nested_idents);)*
                 #initials
             }
+
+            #places
+        }
+
+        #[automatically_derived]
+        #[doc(hidden)]
+        impl #ident #bounds {
+            #places_table
         }
 
         #[automatically_derived]

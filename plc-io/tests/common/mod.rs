@@ -77,3 +77,24 @@ pub fn with_cycles<T: plc_core::GlobalMemory + Send, R>(
 pub fn runtime_file(file: &str) -> std::path::PathBuf {
     plc_io::shm::runtime_dir().join(file)
 }
+
+/// Runs `tick` at 1 kHz in a `Runtime` on segment `name`, on a thread of its own: its stop
+/// handle, and the thread, which gives the variables as they were at the end.
+pub fn run_program<T>(
+    name: &str,
+    mut tick: impl FnMut(&mut plc_io::Context<T>) + Send + 'static,
+) -> (plc_io::StopHandle, std::thread::JoinHandle<T>)
+where
+    T: plc_core::GlobalMemory + Default + Clone + Send + 'static,
+    T::Image: Send,
+{
+    let rt = plc_io::Runtime::<T>::builder()
+        .period(Duration::from_millis(1))
+        .segment(name)
+        .handle_signals(false)
+        .build()
+        .unwrap();
+    let stop = rt.stop_handle();
+    let thread = std::thread::spawn(move || rt.run(|ctx| tick(ctx)).unwrap());
+    (stop, thread)
+}

@@ -12,32 +12,44 @@ use crate::limits::MAX_FORCES;
 use crate::naming::{path_of, shown_in_log};
 use crate::protocol::Release;
 use crate::sys::base::Base;
+use plc_core::place::{self, HeldBytes, PlacedBytes};
 use plc_core::write::Checked;
 use plc_core::{GlobalMemory, Value, VarInfo};
 use std::sync::mpsc::SyncSender;
 
 /// One force held.
 #[derive(Clone, Debug)]
-struct Force {
+struct Force<T> {
     write: Checked,
     uid: u32,
     since_utc_ns: u64,
     /// The value before the force, for a release with restore.
     before: Option<Value>,
+    /// The bytes that hold the value where it lies in `T`, captured when it was forced;
+    /// `None` if `T` does not say where it lies (then `set` holds it).
+    placed: Option<Vec<PlacedBytes<T>>>,
 }
 
 /// The forces the cycle thread holds.
-pub(crate) struct ForceTable {
-    held: Vec<Force>,
+pub(crate) struct ForceTable<T> {
+    held: Vec<Force<T>>,
+    /// What applying them writes, rebuilt when they change: every force's placed bytes, in
+    /// the order held (a later force wins where two write the same bytes) ...
+    stores: HeldBytes<T>,
+    /// ... and the forces `T` does not place, set through `set` after the stores (a type
+    /// places all its values or, written by hand, none: the two never hold the same bytes).
+    unplaced: Vec<Checked>,
     vars: &'static [VarInfo],
     /// Lines for the log, written by the server's accepting thread.
     log: SyncSender<String>,
 }
 
-impl ForceTable {
+impl<T: GlobalMemory> ForceTable<T> {
     pub fn new(vars: &'static [VarInfo], log: SyncSender<String>) -> Self {
         ForceTable {
             held: Vec::new(),
+            stores: HeldBytes::default(),
+            unplaced: Vec::new(),
             vars,
             log,
         }
@@ -48,14 +60,27 @@ impl ForceTable {
         self.held.len()
     }
 
-    /// Sets every forced value in `gm`. Nearly every cycle holds none: one length check.
+    /// Sets every forced value in `gm`: its bytes where it lies (see [`plc_core::place`]),
+    /// as `set` wrote them when it was forced. Nearly every cycle holds none: a few length
+    /// checks.
     #[inline]
-    pub fn apply<T: GlobalMemory>(&self, gm: &mut T) {
-        for f in &self.held {
-            let w = f.write.write();
+    pub fn apply(&self, gm: &mut T) {
+        self.stores.write(gm);
+        for checked in &self.unplaced {
+            let w = checked.write();
             // The value was set once when it was forced: `set` accepts it.
             let _ = gm.set(w.index, w.leaf, w.value);
         }
+    }
+
+    /// The stores and the unplaced forces from the forces held, in their order.
+    fn rebuild(&mut self) {
+        let placed = self.held.iter().filter_map(|f| f.placed.as_deref());
+        self.stores = HeldBytes::new(placed.flatten().copied());
+        self.unplaced = (self.held.iter())
+            .filter(|f| f.placed.is_none())
+            .map(|f| f.write)
+            .collect();
     }
 
     /// Why a write to `index`/`leaf` is refused, if that value is forced.
@@ -84,7 +109,7 @@ impl ForceTable {
     /// Forces `writes` (checked by [`plc_core::write::check_force`]) for `uid`, all or none: each is set
     /// in `gm` now, and held from then on; a value forced already takes the new value and
     /// keeps the one from before its first force.
-    pub fn force<T: GlobalMemory>(
+    pub fn force(
         &mut self,
         gm: &mut T,
         writes: &[Checked],
@@ -133,6 +158,7 @@ impl ForceTable {
                 uid,
                 since_utc_ns: now_utc_ns,
                 before,
+                placed: placed(gm, index, leaf),
             };
             match self.find(index, leaf) {
                 Some(k) => {
@@ -146,17 +172,13 @@ impl ForceTable {
             }
             self.say(line);
         }
+        self.rebuild();
         Ok(())
     }
 
     /// Ends the forces `release` names (each must be held: all or none), or all of them;
     /// with `restore`, each value is set back to what it was before its force.
-    pub fn release<T: GlobalMemory>(
-        &mut self,
-        gm: &mut T,
-        release: &Release,
-        uid: u32,
-    ) -> Result<(), Refused> {
+    pub fn release(&mut self, gm: &mut T, release: &Release, uid: u32) -> Result<(), Refused> {
         let ended: Vec<usize> = if release.all {
             (0..self.held.len()).collect()
         } else {
@@ -200,6 +222,7 @@ impl ForceTable {
             at += 1;
             !ended.contains(&(at - 1))
         });
+        self.rebuild();
         Ok(())
     }
 
@@ -241,4 +264,11 @@ impl ForceTable {
         // Full only if thousands of lines wait: the log then misses some, the table not.
         let _ = self.log.try_send(line);
     }
+}
+
+/// The bytes that hold value `leaf` of variable `index` where it lies in `gm`, which holds
+/// its forced value; `None` if `T` does not say where it lies.
+fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Option<Vec<PlacedBytes<T>>> {
+    let mut stores = Vec::new();
+    place::capture(gm, index, leaf, |s| stores.push(s)).then_some(stores)
 }

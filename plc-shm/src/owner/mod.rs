@@ -45,7 +45,7 @@ use zerocopy::IntoBytes;
 /// The owner of a segment (the control program): publishes, applies writes, reports.
 /// From [`SharedGlobalMemory::create`](crate::SharedGlobalMemory::create).
 pub struct ShmOwner<T: GlobalMemory> {
-    inbox: Inbox,
+    inbox: Inbox<T>,
     seg: OwnedSegment,
     /// The mapping (the segment's, kept here for the cycle's stores).
     base: Base,
@@ -204,8 +204,9 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// tick (so the program reads forced values), and after the tick, before the outputs are
     /// packed and published (so the bus and the tools get them, whatever the program wrote).
     /// A program that drives its own cycle does the same. Forces arrive with the writes (at
-    /// most [`MAX_FORCES`](crate::limits::MAX_FORCES) held); a cycle that holds none pays one
-    /// length check.
+    /// most [`MAX_FORCES`](crate::limits::MAX_FORCES) held); each is a store or a few where its
+    /// value lies in `T` (its bytes as `set` wrote them when it was forced:
+    /// [`plc_core::place`]). A cycle that holds none pays two length checks.
     #[inline]
     pub fn apply_forces(&self, gm: &mut T) {
         self.inbox.forces.borrow().apply(gm);

@@ -3,7 +3,7 @@
 
 use super::refused::Refused;
 use crate::format::trace_ring::{
-    self, MAGIC, ROWS, T_CAPACITY, T_COLUMNS, T_ENDED, T_EVERY, T_HEAD,
+    self, MAGIC, ROW_HEAD, ROWS, T_CAPACITY, T_COLUMNS, T_ENDED, T_EVERY, T_HEAD,
 };
 use crate::naming::path_of;
 use crate::sys::base::Base;
@@ -100,16 +100,17 @@ impl Recording {
         let k = self.next;
         let at = trace_ring::row_at(k, self.capacity, self.slots.len());
         let b = &self.base;
-        let stamp = b.word(at);
-        stamp.store(2 * k + 1, Ordering::Relaxed);
+        // One bounds check for the row, not one per value.
+        let row = b.words(at, ROW_HEAD + self.slots.len());
+        let (head, values) = row.split_at(ROW_HEAD);
+        head[0].store(2 * k + 1, Ordering::Relaxed);
         fence(Ordering::Release);
-        b.word(at + 8).store(cycle, Ordering::Relaxed);
-        b.word(at + 16).store(time_ns, Ordering::Relaxed);
-        for (j, slot) in self.slots.iter().enumerate() {
-            b.word(at + 24 + 8 * j)
-                .store(slot.read(image), Ordering::Relaxed);
+        head[1].store(cycle, Ordering::Relaxed);
+        head[2].store(time_ns, Ordering::Relaxed);
+        for (word, slot) in values.iter().zip(&self.slots) {
+            word.store(slot.read(image), Ordering::Relaxed);
         }
-        stamp.store(2 * k + 2, Ordering::Release);
+        head[0].store(2 * k + 2, Ordering::Release);
         self.next = k + 1;
         b.store(T_HEAD, k + 1);
     }

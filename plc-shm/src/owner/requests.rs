@@ -220,8 +220,8 @@ pub(crate) fn validate(
         .collect()
 }
 
-/// The cycle thread's end of the queue.
-pub(crate) struct Inbox {
+/// The cycle thread's end of the queue, for a program of type `T`.
+pub(crate) struct Inbox<T: GlobalMemory> {
     pub rx: Mutex<Receiver<Batch>>,
     pub counters: Arc<Counters>,
     /// Requests applied and not yet published: their writers hear "applied" once a reader
@@ -229,17 +229,17 @@ pub(crate) struct Inbox {
     /// owner that does not publish answers them at its next apply.
     pub unpublished: RefCell<Vec<(Arc<Conn>, u64)>>,
     /// The forces held.
-    pub forces: RefCell<ForceTable>,
+    pub forces: RefCell<ForceTable<T>>,
     /// The traces being recorded.
     pub recordings: RefCell<Vec<Recording>>,
     /// Where the traces whose tools left go to be freed, off the cycle thread.
     pub retired: SyncSender<Recording>,
 }
 
-impl Inbox {
+impl<T: GlobalMemory> Inbox<T> {
     /// Applies the queued requests to `gm`, in order, each all or none; answers each one.
     /// Returns how many writes were applied.
-    pub fn apply<T: GlobalMemory>(
+    pub fn apply(
         &self,
         gm: &mut T,
         base: &Base,
@@ -345,7 +345,7 @@ impl Inbox {
 fn apply_batch<T: GlobalMemory>(
     gm: &mut T,
     writes: &[Checked],
-    forces: &ForceTable,
+    forces: &ForceTable<T>,
     audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
 ) -> Result<(), Refused> {
     if forces.len() > 0 {

@@ -49,6 +49,23 @@ impl Base {
         unsafe { &*(self.ptr.add(offset) as *const AtomicU64) }
     }
 
+    /// The `count` words from `offset` as atomics: one bounds check for a whole row of a
+    /// trace, where [`word`](Self::word) would check each.
+    #[inline]
+    pub fn words(&self, offset: usize, count: usize) -> &[AtomicU64] {
+        assert!(
+            offset.is_multiple_of(8)
+                && count
+                    .checked_mul(8)
+                    .and_then(|n| n.checked_add(offset))
+                    .is_some_and(|end| end <= self.len),
+            "words {offset} (+{count}) outside segment"
+        );
+        // SAFETY: as in `word`, for each of the `count` words, all in bounds and 8-aligned
+        // (checked above).
+        unsafe { std::slice::from_raw_parts(self.ptr.add(offset) as *const AtomicU64, count) }
+    }
+
     #[inline]
     pub fn load(&self, offset: usize) -> u64 {
         self.word(offset).load(Ordering::Acquire)
