@@ -9,7 +9,7 @@ use plc_core::{GlobalMemory, Value};
 use plc_io::shm::{DynSegment, SharedGlobalMemory, Sharing};
 use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
 use std::os::unix::fs::PermissionsExt;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
 #[derive(GlobalMemory, Debug, Clone)]
@@ -163,32 +163,10 @@ fn a_connection_that_never_takes_the_segment_is_closed() {
         &[(plc_io::shm::RUNTIME_DIR_ENV, dir.display().to_string())],
     );
     let socket = dir.join("crowded.sock");
-    wait_for(Duration::from_secs(20), || socket.exists().then_some(()));
     // A raw connection that reads nothing: its greeting and the segment stay in the socket.
-    // SAFETY: a plain socket call; the descriptor is ours.
-    let fd = unsafe { libc::socket(libc::AF_UNIX, libc::SOCK_SEQPACKET | libc::SOCK_CLOEXEC, 0) };
-    assert!(fd >= 0);
-    // SAFETY: a fresh descriptor nobody else owns.
-    let fd = unsafe { OwnedFd::from_raw_fd(fd) };
-    // SAFETY: sockaddr_un is plain data.
-    let mut addr: libc::sockaddr_un = unsafe { std::mem::zeroed() };
-    addr.sun_family = libc::AF_UNIX as libc::sa_family_t;
-    for (d, s) in addr
-        .sun_path
-        .iter_mut()
-        .zip(socket.as_os_str().as_encoded_bytes())
-    {
-        *d = *s as libc::c_char;
-    }
-    // SAFETY: a valid address of the size given.
-    let r = unsafe {
-        libc::connect(
-            fd.as_raw_fd(),
-            &addr as *const libc::sockaddr_un as *const libc::sockaddr,
-            std::mem::size_of::<libc::sockaddr_un>() as libc::socklen_t,
-        )
-    };
-    assert_eq!(r, 0, "{}", std::io::Error::last_os_error());
+    // The socket's file appears when it is bound, a moment before the owner listens on it
+    // (a connection then is refused): retried until it is accepted.
+    let fd = wait_for(Duration::from_secs(20), || raw_connect(&socket));
     let start = Instant::now();
     let closed = wait_for(Duration::from_secs(15), || {
         let mut p = libc::pollfd {
@@ -212,4 +190,32 @@ fn a_connection_that_never_takes_the_segment_is_closed() {
     seg.write("setpoint", Value::UInt(7)).unwrap();
     let _ = owner.wait();
     let _ = std::fs::remove_dir_all(&base);
+}
+
+/// A raw SOCK_SEQPACKET connection to `socket`, or `None` while it cannot be made.
+fn raw_connect(socket: &Path) -> Option<OwnedFd> {
+    // SAFETY: a plain socket call; the descriptor is ours.
+    let fd = unsafe { libc::socket(libc::AF_UNIX, libc::SOCK_SEQPACKET | libc::SOCK_CLOEXEC, 0) };
+    assert!(fd >= 0);
+    // SAFETY: a fresh descriptor nobody else owns.
+    let fd = unsafe { OwnedFd::from_raw_fd(fd) };
+    // SAFETY: sockaddr_un is plain data.
+    let mut addr: libc::sockaddr_un = unsafe { std::mem::zeroed() };
+    addr.sun_family = libc::AF_UNIX as libc::sa_family_t;
+    for (d, s) in addr
+        .sun_path
+        .iter_mut()
+        .zip(socket.as_os_str().as_encoded_bytes())
+    {
+        *d = *s as libc::c_char;
+    }
+    // SAFETY: a valid address of the size given.
+    let r = unsafe {
+        libc::connect(
+            fd.as_raw_fd(),
+            &addr as *const libc::sockaddr_un as *const libc::sockaddr,
+            std::mem::size_of::<libc::sockaddr_un>() as libc::socklen_t,
+        )
+    };
+    (r == 0).then_some(fd)
 }

@@ -98,3 +98,30 @@ where
     let thread = std::thread::spawn(move || rt.run(|ctx| tick(ctx)).unwrap());
     (stop, thread)
 }
+
+/// Every new owner removes what killed owners left in the runtime directory, so a test that
+/// looks at a killed owner's files runs with no other owner starting: these tests take turns.
+pub fn alone() -> std::sync::MutexGuard<'static, ()> {
+    static TURN: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    TURN.lock().unwrap_or_else(|p| p.into_inner())
+}
+
+/// The socket of segment `name`.
+pub fn socket(name: &str) -> std::path::PathBuf {
+    runtime_file(&format!("{name}.sock"))
+}
+
+/// The lock file of segment `name`.
+pub fn lock(name: &str) -> std::path::PathBuf {
+    runtime_file(&format!("{name}.lock"))
+}
+
+/// Removes the files of segment `name` on drop (a test that fails must not leave them).
+pub struct Cleanup(pub String);
+
+impl Drop for Cleanup {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(socket(&self.0));
+        let _ = std::fs::remove_file(lock(&self.0));
+    }
+}

@@ -106,8 +106,16 @@ LTIME_UNITS = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1,
 
 
 def ltime_ms(text):
-    """`LTIME#1m30s500ms` (as `plc get` prints a duration) in milliseconds."""
+    """A duration as `plc get` prints it for a person (`90.5 s`, exact unless digits are asked
+    for) or as an IEC literal (`LTIME#1m30s500ms`), in milliseconds."""
     import re
+    from decimal import Decimal, InvalidOperation
+    if text.endswith(" s"):
+        try:
+            return float(Decimal(text[:-2]) * 1000)
+        except InvalidOperation:
+            check(False, f"not a duration: {text!r}")
+    check("#" in text, f"not a duration: {text!r}")
     body = text.split("#", 1)[1].replace("_", "")
     sign = -1 if body.startswith("-") else 1
     parts = re.findall(r"(\d+(?:\.\d+)?)(ms|us|ns|d|h|m|s)", body.lstrip("+-"))
