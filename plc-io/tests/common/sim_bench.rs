@@ -39,3 +39,10 @@ pub fn transport(bus: &SimBus) -> Transport {
 pub fn backend<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
     EtherCatBackend::<T>::new(config, transport(bus), Options::simulated()).unwrap()
 }
+
+/// [`backend`], started: the bus in OP.
+pub fn started<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
+    let mut backend = backend::<T>(bus, config);
+    backend.start().unwrap();
+    backend
+}
