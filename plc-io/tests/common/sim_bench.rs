@@ -46,3 +46,34 @@ pub fn started<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBack
     backend.start().unwrap();
     backend
 }
+
+/// Ring positions of the simulated bus.
+pub const COUPLER: usize = 0;
+pub const DI: usize = 1;
+pub const DQ4: usize = 2;
+pub const DQ16: usize = 3;
+
+/// A program of the bench's bools: inputs of the EL1004, outputs of the EL2004 and EL2889.
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Io {
+    #[plc(link = "ethercat.di.input1", direction = "input")]
+    pub in1: bool,
+    #[plc(link = "ethercat.di.input4", direction = "input")]
+    pub in4: bool,
+    /// A second variable on an input entry: both receive it.
+    #[plc(link = "ethercat.di.input4", direction = "input")]
+    pub in4_again: bool,
+    #[plc(link = "ethercat.dq4.output2", direction = "output")]
+    pub q4_2: bool,
+    #[plc(link = "ethercat.dq16.output1", direction = "output")]
+    pub q16_1: bool,
+    #[plc(link = "ethercat.dq16.output10", direction = "output")]
+    pub q16_10: bool,
+    #[plc(link = "ethercat.dq16.output16", direction = "output")]
+    pub q16_16: bool,
+}
+
+/// The options of a simulated bus.
+pub fn options() -> Options {
+    Options::simulated()
+}
