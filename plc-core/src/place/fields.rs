@@ -43,6 +43,12 @@ impl<S> FieldPlaces<S> {
         }
     }
 
+    /// Where the field lies in `S`, in bytes from its start, as [`FieldPlaces::new`] measured.
+    #[inline]
+    pub const fn offset(&self) -> usize {
+        self.offset
+    }
+
     /// Basic values in the field ([`PlcType::LEAVES`]).
     #[inline]
     pub const fn leaves(&self) -> usize {

@@ -43,17 +43,15 @@ fn links(c: &Container) -> TokenStream {
     let mut arms = TokenStream::new();
     for (i, v) in c.vars.iter().enumerate() {
         if let Some((s, bit)) = v.mapped_to {
-            let (src, src_ty) = (c.vars[s].ident, c.vars[s].ty);
+            let src_ty = c.vars[s].ty;
             let bit = u32::from(bit);
-            // SAFETY: `offset_of!(Self, src)` is where the source field lies and `src_ty` its
-            // declared type; `bit_places` checks that it is an integer and the bit within it.
+            // SAFETY: entry `s` of `__PLC_PLACES` was made by `FieldPlaces::new::<src_ty>` from
+            // a pointer to the source field, so its offset is where that field lies and
+            // `src_ty` its type; `bit_places` checks that it is an integer and the bit within
+            // it. (The table's offset, not an `offset_of!`: see `table`.)
             arms.extend(quote! {
                 #i => unsafe {
-                    #p::bit_places::<Self, #src_ty>(
-                        #p::core::mem::offset_of!(Self, #src),
-                        #bit,
-                        each,
-                    )
+                    #p::bit_places::<Self, #src_ty>(__plc_table[#s].offset(), #bit, each)
                 },
             });
         }
