@@ -382,7 +382,7 @@ pub trait GlobalMemory: Sized {
 
     /// Gives `each` every place in this struct that a [`set`](Self::set) of element
     /// `element` of variable `index` writes: where the value lies (found through
-    /// `core::mem::offset_of!` by the derive, through structures and arrays), and for a
+    /// the compiler's field offsets by the derive, through structures and arrays), and for a
     /// bit-mapped bool its bit of the source word, for a source word its bools. A force
     /// captures the bytes there once ([`place::capture`](crate::place::capture)) and writes
     /// them at each of the cycle's boundaries instead of calling `set`.

@@ -1,6 +1,7 @@
 //! The places of a derived struct's fields, for the derive's generated code
 //! (`GlobalMemory::struct_places`, `PlcType::__places`): a table with one [`FieldPlaces`] per
-//! field, built from `offset_of!` in a `const`, and the bit of a source word.
+//! field, built in a `const` from pointers to the fields of one uninitialised struct, and the
+//! bit of a source word.
 
 use super::StructPlace;
 use crate::PlcType;
@@ -19,22 +20,33 @@ pub struct FieldPlaces<S> {
 type PlacesFn<S> = fn(usize, usize, &mut dyn FnMut(StructPlace<S>)) -> bool;
 
 impl<S> FieldPlaces<S> {
-    /// The field of type `F` at `offset` of `S`. In a `const` (as the derive builds its
-    /// table), a field that would not lie inside `S` fails to compile.
+    /// The field of type `F` that `field` points to, in the `S` at `base`: its offset is
+    /// where `field` lies from `base`, as the compiler projected it. In a `const` (as the
+    /// derive builds its table), a field that would not lie inside `S` fails to compile.
     ///
     /// # Safety
     ///
-    /// `offset` is `core::mem::offset_of!(S, field)` of a field of `S` whose type is `F`.
-    pub const unsafe fn new<F: PlcType>(offset: usize) -> Self {
+    /// `field` is `&raw const (*base).f` of a field `f` of `S` (whose type is then `F`), and
+    /// `base` points to an `S`, initialised or not (as `MaybeUninit::<S>::as_ptr` gives).
+    pub const unsafe fn new<F: PlcType>(base: *const S, field: *const F) -> Self {
+        // SAFETY: the caller's promise puts both pointers in the one allocation of the `S` at
+        // `base`, `field` at or after it.
+        let offset = unsafe { field.cast::<u8>().offset_from(base.cast::<u8>()) };
         assert!(
-            offset + size_of::<F>() <= size_of::<S>(),
+            offset >= 0 && offset as usize + size_of::<F>() <= size_of::<S>(),
             "a field's place must lie inside its struct"
         );
         FieldPlaces {
-            offset,
+            offset: offset as usize,
             leaves: F::LEAVES,
             places: places_of::<S, F>,
         }
+    }
+
+    /// Where the field lies in `S`, in bytes from its start, as [`FieldPlaces::new`] measured.
+    #[inline]
+    pub const fn offset(&self) -> usize {
+        self.offset
     }
 
     /// Basic values in the field ([`PlcType::LEAVES`]).

@@ -2,7 +2,10 @@
 //! written again: what a force holds, so that applying it at each of the cycle's boundaries is
 //! a store per value at an offset known in advance, not a search through `set`.
 //!
-//! Only the derive knows where a field lies, and it proves it with `core::mem::offset_of!`:
+//! Only the derive knows where a field lies, and the compiler measures it: the derive's
+//! table takes each field's offset from a pointer the compiler projects to that field
+//! (`FieldPlaces::new`; the same answer as `core::mem::offset_of!`, which costs an inline
+//! `const` body per field):
 //! a [`StructPlace`] is made only through `unsafe` constructors, whose callers (the derive's
 //! generated code, plc-core's impls for arrays and basic types) say what proves the place.
 //! A hand-written [`GlobalMemory`] or [`PlcType`](crate::PlcType) that does not make places

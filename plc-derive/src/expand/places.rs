@@ -10,19 +10,28 @@ use quote::quote;
 
 /// `const __PLC_PLACES`, for an inherent impl: each field's offset and type, in declaration
 /// order. One table instead of a `match` arm per field: a 10,000-field declaration's arms cost
-/// the borrow checker seconds (`access`), a `const` array does not.
+/// the borrow checker seconds (`access`), a `const` array does not. The offsets are measured on
+/// one uninitialised `Self` inside the `const` rather than with `offset_of!`, which expands to
+/// an inline `const { .. }` block per field: 2,000 bodies to type- and borrow-check, which
+/// doubled a 2,000-field declaration's `cargo check` (`derive_vs_serde_2000`).
 pub fn table(c: &Container) -> TokenStream {
     let p = private(c);
     let n = Literal::usize_unsuffixed(c.vars.len());
     let entries = c.vars.iter().map(|v| {
         let (field, ty) = (v.ident, v.ty);
-        quote!(#p::FieldPlaces::new::<#ty>(#p::core::mem::offset_of!(Self, #field)))
+        quote!(#p::FieldPlaces::new::<#ty>(__plc_base, &raw const (*__plc_base).#field))
     });
     quote! {
-        // SAFETY: each entry pairs `offset_of!(Self, field)`, computed by the compiler, with
-        // that field's declared type, the very tokens of its declaration; `FieldPlaces::new`
-        // also fails to compile if the field would not lie inside `Self`.
-        const __PLC_PLACES: [#p::FieldPlaces<Self>; #n] = unsafe { [#(#entries,)*] };
+        // SAFETY: each entry gives `FieldPlaces::new` a pointer to the `Self` below and one to
+        // a field of it, projected by the compiler from the field's name (no reference is made
+        // to the uninitialised memory); `new` takes the field's type from that pointer, so it
+        // is the field's declared type, and fails to compile if the field would not lie
+        // inside `Self`.
+        const __PLC_PLACES: [#p::FieldPlaces<Self>; #n] = unsafe {
+            let __plc_value = #p::core::mem::MaybeUninit::<Self>::uninit();
+            let __plc_base: *const Self = __plc_value.as_ptr();
+            [#(#entries,)*]
+        };
     }
 }
 
@@ -34,17 +43,15 @@ fn links(c: &Container) -> TokenStream {
     let mut arms = TokenStream::new();
     for (i, v) in c.vars.iter().enumerate() {
         if let Some((s, bit)) = v.mapped_to {
-            let (src, src_ty) = (c.vars[s].ident, c.vars[s].ty);
+            let src_ty = c.vars[s].ty;
             let bit = u32::from(bit);
-            // SAFETY: `offset_of!(Self, src)` is where the source field lies and `src_ty` its
-            // declared type; `bit_places` checks that it is an integer and the bit within it.
+            // SAFETY: entry `s` of `__PLC_PLACES` was made by `FieldPlaces::new::<src_ty>` from
+            // a pointer to the source field, so its offset is where that field lies and
+            // `src_ty` its type; `bit_places` checks that it is an integer and the bit within
+            // it. (The table's offset, not an `offset_of!`: see `table`.)
             arms.extend(quote! {
                 #i => unsafe {
-                    #p::bit_places::<Self, #src_ty>(
-                        #p::core::mem::offset_of!(Self, #src),
-                        #bit,
-                        each,
-                    )
+                    #p::bit_places::<Self, #src_ty>(__plc_table[#s].offset(), #bit, each)
                 },
             });
         }
