@@ -4,6 +4,7 @@
 //!
 //! Nothing here uses the tool's side: both meet in the segment's format and the protocol.
 
+mod force_log;
 mod forces;
 pub(crate) mod policy;
 mod recording;
@@ -28,6 +29,7 @@ use crate::protocol::Code;
 use crate::sys::base::Base;
 use crate::sys::clock::{now_ns, utc_ns};
 use crate::sys::rundir;
+use force_log::ForceLog;
 use forces::ForceTable;
 use plc_core::GlobalMemory;
 use plc_core::write::Write;
@@ -82,7 +84,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let counters = Arc::new(Counters::default());
         counters.publish(&base, &off);
         let (queue, rx) = std::sync::mpsc::sync_channel(MAX_QUEUED);
-        let (log, log_rx) = std::sync::mpsc::sync_channel(FORCE_LOG_LINES);
+        let (log, log_rx) = ForceLog::channel(FORCE_LOG_LINES);
         let (retired, retired_rx) = std::sync::mpsc::sync_channel(2 * MAX_TRACES);
         // Last: tools connect only to a complete segment.
         seg.serve(Setup {

@@ -197,7 +197,26 @@ impl Kind {
             Kind::Record(_) => 0,
         }
     }
+
+    /// What it costs the cycle, in writes of one value, against
+    /// [`PER_CYCLE_WRITES`]: a force or release of a value does more than a write (it keeps
+    /// the value's bytes, the table, and an event for the log) and each request rebuilds
+    /// what the cycle applies from every held force.
+    pub fn cost(&self) -> u64 {
+        match self {
+            Kind::Write(w) => w.len() as u64,
+            Kind::Force(_) | Kind::Release(_) => FORCE_COST * self.count() + FORCE_REQUEST_COST,
+            Kind::Record(_) => 0,
+        }
+    }
 }
+
+/// A value forced or released costs the cycle this many writes of one value (measured
+/// against a write of as many values: see the module's tests).
+const FORCE_COST: u64 = 2;
+/// A force or release request costs this many writes more: the rebuild of the bytes every
+/// held force writes, at most [`MAX_FORCES`](crate::limits::MAX_FORCES) of them.
+const FORCE_REQUEST_COST: u64 = 64;
 
 /// Checks a decoded request against the program's declaration with the one write check
 /// ([`plc_core::write::check`]): the writes as they will be applied (values fitted to their
@@ -270,7 +289,7 @@ impl<T: GlobalMemory> Inbox<T> {
             self.counters.queued(-1, base, off);
             batch.conn.outstanding.fetch_sub(1, Relaxed);
             let n = batch.kind.count();
-            taken += n;
+            taken += batch.kind.cost();
             self.counters.waiting_writes.fetch_sub(n, Relaxed);
             let forces = &mut self.forces.borrow_mut();
             let done = match batch.kind {
@@ -287,7 +306,7 @@ impl<T: GlobalMemory> Inbox<T> {
                     done
                 }
                 Kind::Release(release) => {
-                    let done = forces.release(gm, &release, batch.uid);
+                    let done = forces.release(gm, &release, batch.uid, utc_ns());
                     forces.publish(base, off);
                     done
                 }
