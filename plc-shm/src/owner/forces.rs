@@ -30,8 +30,11 @@ struct Force<T> {
     before: Option<Value>,
     /// The bytes that hold the value where it lies in `T`, captured when it was forced;
     /// `None` if `T` does not say where it lies (then `set` holds it).
-    placed: Option<Vec<PlacedBytes<T>>>,
+    placed: Placed<T>,
 }
+
+/// The bytes that hold a forced value where it lies in `T`, or `None` if `T` does not say.
+type Placed<T> = Option<Vec<PlacedBytes<T>>>;
 
 /// The forces the cycle thread holds.
 pub(crate) struct ForceTable<T> {
@@ -133,12 +136,16 @@ impl<T: GlobalMemory> ForceTable<T> {
                 ),
             ));
         }
-        let mut undo: Vec<(usize, usize, Option<Value>)> = Vec::with_capacity(writes.len());
+        // Each value's place, its value from before and its bytes as `set` wrote them
+        // (captured at once: a later value of the request that shares its bytes does not
+        // change what this force holds).
+        let mut undo: Vec<(usize, usize, Option<Value>, Placed<T>)> =
+            Vec::with_capacity(writes.len());
         for (k, checked) in writes.iter().enumerate() {
             let w = checked.write();
             let before = gm.try_get(w.index, w.leaf);
             if let Err(e) = gm.set(w.index, w.leaf, w.value) {
-                for (index, leaf, old) in undo.into_iter().rev() {
+                for (index, leaf, old, _) in undo.into_iter().rev() {
                     if let Some(old) = old {
                         let _ = gm.set(index, leaf, old);
                     }
@@ -148,15 +155,15 @@ impl<T: GlobalMemory> ForceTable<T> {
                     format!("`{}`: {e}", self.path(w.index, w.leaf)),
                 ));
             }
-            undo.push((w.index, w.leaf, before));
+            undo.push((w.index, w.leaf, before, placed(gm, w.index, w.leaf)));
         }
-        for (checked, (index, leaf, before)) in writes.iter().zip(undo) {
+        for (checked, (index, leaf, before, placed)) in writes.iter().zip(undo) {
             let force = Force {
                 write: *checked,
                 uid,
                 since_utc_ns: now_utc_ns,
                 before,
-                placed: placed(gm, index, leaf),
+                placed,
             };
             match self.find(index, leaf) {
                 Some(k) => {
@@ -285,7 +292,7 @@ impl<T: GlobalMemory> ForceTable<T> {
 
 /// The bytes that hold value `leaf` of variable `index` where it lies in `gm`, which holds
 /// its forced value; `None` if `T` does not say where it lies.
-fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Option<Vec<PlacedBytes<T>>> {
+fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Placed<T> {
     let mut stores = Vec::new();
     place::capture(gm, index, leaf, |s| stores.push(s)).then_some(stores)
 }
@@ -332,8 +339,10 @@ mod tests {
     #[test]
     fn a_re_force_keeps_the_first_before_and_refusals_name_who_forced() {
         let (mut forces, _log) = table();
-        let mut gm = Gm::default();
-        gm.speed = 3;
+        let mut gm = Gm {
+            speed: 3,
+            ..Gm::default()
+        };
         forces
             .force(&mut gm, &[forced(SPEED, 0, 7)], 1000, 0)
             .unwrap();
