@@ -18,7 +18,7 @@ use crate::sys::base::Base;
 use plc_core::place::{self, HeldBytes, PlacedBytes};
 use plc_core::write::Checked;
 use plc_core::{GlobalMemory, Value, VarInfo};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 /// One force held.
 #[derive(Clone, Debug)]
@@ -122,10 +122,15 @@ impl<T: GlobalMemory> ForceTable<T> {
         uid: u32,
         now_utc_ns: u64,
     ) -> Result<(), Refused> {
-        let new = writes
-            .iter()
-            .filter(|w| self.find(w.write().index, w.write().leaf).is_none())
-            .count();
+        // The values not held yet, each once (a value named twice in a request is one
+        // force); a flood of re-forces adds none here.
+        let mut new = HashSet::new();
+        for w in writes.iter().map(Checked::write) {
+            if self.find(w.index, w.leaf).is_none() {
+                new.insert((w.index, w.leaf));
+            }
+        }
+        let new = new.len();
         if self.held.len() + new > MAX_FORCES {
             return Err(Refused::rejected(
                 0,
@@ -395,6 +400,24 @@ mod tests {
         assert_eq!(forces.len(), 3, "all or none");
         // A value named twice is released once; the others keep their places in the index.
         let twice = release(&[(VALUES, 5), (VALUES, 5)], false);
+        // One more than the limit is refused, whole, saying how many it adds.
+        let over: Vec<Checked> = (0..256)
+            .filter(|k| ![4, 5].contains(k))
+            .map(|k| forced(VALUES, k, 1))
+            .collect();
+        let refused = forces.force(&mut gm, &over, 1000, 0).unwrap_err();
+        assert!(
+            refused
+                .why
+                .starts_with("3 forces are held and this request adds 254"),
+            "{}",
+            refused.why
+        );
+        assert_eq!((forces.len(), gm.values[7]), (3, 0));
+        assert_eq!(
+            MAX_FORCES, 256,
+            "the count above is 3 + 254 = MAX_FORCES + 1"
+        );
         forces.release(&mut gm, &twice, 1000, 0).unwrap();
         assert_eq!(forces.len(), 2);
         assert!(forces.refusal(VALUES, 5).is_none());
@@ -408,6 +431,12 @@ mod tests {
     fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
         let (mut forces, mut log) = table();
         let mut gm = Gm::default();
+        // 257 copies of one value are one force: not above the limit.
+        let copies = vec![forced(VALUES, 0, 1); 257];
+        forces.force(&mut gm, &copies, 1000, 5).unwrap();
+        assert_eq!(forces.len(), 1);
+        let (events, dropped) = log.take_events();
+        assert_eq!((events.len(), dropped), (257, 0));
         let all: Vec<Checked> = (0..256).map(|k| forced(VALUES, k, 1)).collect();
         forces.force(&mut gm, &all, 1000, 5).unwrap();
         let (events, dropped) = log.take_events();
