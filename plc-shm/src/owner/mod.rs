@@ -110,6 +110,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
                 forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
                 recordings: Default::default(),
                 retired,
+                held_over: RefCell::new(None),
             },
             seq: Cell::new(0),
             run_state: Cell::new(RunState::Starting),
@@ -322,8 +323,11 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         // writes received and never applied are answered too: their writers need not wait.
         self.inbox.answer_applied();
         if let Ok(rx) = self.inbox.rx.lock() {
-            for _ in 0..MAX_QUEUED {
-                let Ok(batch) = rx.try_recv() else { break };
+            let mut held_over = self.inbox.held_over.borrow_mut().take();
+            for _ in 0..=MAX_QUEUED {
+                let Ok(batch) = held_over.take().map_or_else(|| rx.try_recv(), Ok) else {
+                    break;
+                };
                 batch
                     .conn
                     .answer(batch.id, Code::Stopped, 0, "the program stopped".into());
