@@ -11,7 +11,8 @@
 //! applied. Forces and releases travel the same way, checked as forces; a trace is set up here
 //! (its ring made and passed to the tool) and handed to the cycle. Every send to a tool has a
 //! timeout or does not wait, so a tool that stops reading blocks nothing but its own
-//! connection. The accepting thread also writes the lines the cycle leaves for the log.
+//! connection. The accepting thread also formats and logs the force and release events the
+//! cycle leaves (at a bounded rate, saying what it did not show or could not log).
 
 use super::force_log::{ForceLogReader, Level};
 use super::policy::Policy;
