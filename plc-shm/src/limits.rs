@@ -51,10 +51,11 @@ pub const MAX_WAITING_WRITES: u64 = 16 * MAX_WRITES as u64;
 pub const PER_CYCLE: usize = 256;
 /// How many writes one cycle applies at most (a request is never split: one larger than the
 /// rest of this budget waits for the next cycle, and the first request of a cycle is always
-/// taken).
+/// taken). A force or release of a value counts as the few writes it costs the cycle.
 pub const PER_CYCLE_WRITES: u64 = 4096;
-/// Log lines of forces waiting for the server's thread, at most (a release of every force is
-/// [`MAX_FORCES`] lines).
+/// Force and release events waiting for the server's thread to log them, at most (a release
+/// of every force is [`MAX_FORCES`] events); the cycle counts those that do not fit, and the
+/// log says how many.
 pub const FORCE_LOG_LINES: usize = 1024;
 
 /// The largest descriptor a tool reads. A program with thousands of variables has a

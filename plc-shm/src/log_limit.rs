@@ -6,9 +6,9 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 /// Lines per window at most.
-const LINES: u32 = 10;
+pub(crate) const LINES: u32 = 10;
 /// The window.
-const WINDOW: Duration = Duration::from_secs(10);
+pub(crate) const WINDOW: Duration = Duration::from_secs(10);
 
 /// Lets through at most ten lines every ten seconds, counting the rest.
 ///
@@ -22,7 +22,7 @@ const WINDOW: Duration = Duration::from_secs(10);
 #[derive(Debug)]
 pub struct LogLimit {
     target: &'static str,
-    state: Mutex<State>,
+    state: Mutex<Window>,
 }
 
 impl Default for LogLimit {
@@ -31,11 +31,45 @@ impl Default for LogLimit {
     }
 }
 
+/// One window's count: the lines let through since it began and the lines held back. The
+/// force log keeps one per uid.
 #[derive(Debug, Default)]
-struct State {
+pub(crate) struct Window {
     since: Option<Instant>,
     lines: u32,
     suppressed: u64,
+}
+
+impl Window {
+    /// Whether a line may be logged at `now`: `Some` with how many lines were held back
+    /// before it (counted once), or `None` (then it is counted as held back).
+    pub(crate) fn admit(&mut self, now: Instant) -> Option<u64> {
+        if self.since.is_none_or(|t| now.duration_since(t) >= WINDOW) {
+            self.since = Some(now);
+            self.lines = 0;
+        }
+        if self.lines >= LINES {
+            self.suppressed += 1;
+            return None;
+        }
+        self.lines += 1;
+        Some(std::mem::take(&mut self.suppressed))
+    }
+
+    /// The lines held back, taken, once the window has ended at `now` (or at once with
+    /// `now` `None`, as when the log closes): a quiet spell after a flood still says what it
+    /// held back.
+    pub(crate) fn take_ended(&mut self, now: Option<Instant>) -> u64 {
+        let ended = match (now, self.since) {
+            (Some(now), Some(t)) => now.duration_since(t) >= WINDOW,
+            _ => true,
+        };
+        if ended {
+            std::mem::take(&mut self.suppressed)
+        } else {
+            0
+        }
+    }
 }
 
 impl LogLimit {
@@ -43,7 +77,7 @@ impl LogLimit {
     pub const fn new(target: &'static str) -> LogLimit {
         LogLimit {
             target,
-            state: Mutex::new(State {
+            state: Mutex::new(Window {
                 since: None,
                 lines: 0,
                 suppressed: 0,
@@ -62,16 +96,7 @@ impl LogLimit {
     /// before it (empty if none), or `None`.
     fn allow(&self, now: Instant) -> Option<String> {
         let mut s = self.state.lock().unwrap_or_else(|p| p.into_inner());
-        if s.since.is_none_or(|t| now.duration_since(t) >= WINDOW) {
-            s.since = Some(now);
-            s.lines = 0;
-        }
-        if s.lines >= LINES {
-            s.suppressed += 1;
-            return None;
-        }
-        s.lines += 1;
-        Some(match std::mem::take(&mut s.suppressed) {
+        Some(match s.admit(now)? {
             0 => String::new(),
             n => format!(" ({n} more like it were not logged in the last {WINDOW:?})"),
         })

@@ -1,9 +1,12 @@
 //! Forces, as TwinCAT and CODESYS force: values the owner holds at both of the cycle's
 //! boundaries until they are released or the program stops. The cycle thread keeps the table
 //! (it applies forces and refuses writes to forced values, so nothing races it) and publishes
-//! it in the segment for tools; the lines it logs go to the server's thread, which writes
-//! them, so a release of every force costs the cycle no terminal output.
+//! it in the segment for tools. Its forces and releases go to the server's thread as plain
+//! events ([`ForceLog`]), formatted there, so a flood of forces costs the cycle no text; the
+//! held forces are indexed by value, so a request costs the cycle about what a write of as
+//! many values does.
 
+use super::force_log::{ForceEvent, ForceLog};
 use super::refused::Refused;
 use crate::calendar::utc_text;
 use crate::format::force_table::{self, ForceInfo};
@@ -15,7 +18,7 @@ use crate::sys::base::Base;
 use plc_core::place::{self, HeldBytes, PlacedBytes};
 use plc_core::write::Checked;
 use plc_core::{GlobalMemory, Value, VarInfo};
-use std::sync::mpsc::SyncSender;
+use std::collections::{HashMap, HashSet};
 
 /// One force held.
 #[derive(Clone, Debug)]
@@ -27,12 +30,17 @@ struct Force<T> {
     before: Option<Value>,
     /// The bytes that hold the value where it lies in `T`, captured when it was forced;
     /// `None` if `T` does not say where it lies (then `set` holds it).
-    placed: Option<Vec<PlacedBytes<T>>>,
+    placed: Placed<T>,
 }
+
+/// The bytes that hold a forced value where it lies in `T`, or `None` if `T` does not say.
+type Placed<T> = Option<Vec<PlacedBytes<T>>>;
 
 /// The forces the cycle thread holds.
 pub(crate) struct ForceTable<T> {
     held: Vec<Force<T>>,
+    /// Where each held value (variable, leaf) is in `held`: a lookup per value, not a search.
+    at: HashMap<(usize, usize), usize>,
     /// What applying them writes, rebuilt when they change: every force's placed bytes, in
     /// the order held (a later force wins where two write the same bytes) ...
     stores: HeldBytes<T>,
@@ -40,14 +48,15 @@ pub(crate) struct ForceTable<T> {
     /// places all its values or, written by hand, none: the two never hold the same bytes).
     unplaced: Vec<Checked>,
     vars: &'static [VarInfo],
-    /// Lines for the log, written by the server's accepting thread.
-    log: SyncSender<String>,
+    /// Events for the log, formatted by the server's accepting thread.
+    log: ForceLog,
 }
 
 impl<T: GlobalMemory> ForceTable<T> {
-    pub fn new(vars: &'static [VarInfo], log: SyncSender<String>) -> Self {
+    pub fn new(vars: &'static [VarInfo], log: ForceLog) -> Self {
         ForceTable {
             held: Vec::new(),
+            at: HashMap::with_capacity(MAX_FORCES),
             stores: HeldBytes::default(),
             unplaced: Vec::new(),
             vars,
@@ -95,10 +104,7 @@ impl<T: GlobalMemory> ForceTable<T> {
     }
 
     fn find(&self, index: usize, leaf: usize) -> Option<usize> {
-        self.held.iter().position(|f| {
-            let w = f.write.write();
-            w.index == index && w.leaf == leaf
-        })
+        self.at.get(&(index, leaf)).copied()
     }
 
     /// The value's path, as tools name it (an array's element included).
@@ -116,10 +122,15 @@ impl<T: GlobalMemory> ForceTable<T> {
         uid: u32,
         now_utc_ns: u64,
     ) -> Result<(), Refused> {
-        let new = writes
-            .iter()
-            .filter(|w| self.find(w.write().index, w.write().leaf).is_none())
-            .count();
+        // The values not held yet, each once (a value named twice in a request is one
+        // force); a flood of re-forces adds none here.
+        let mut new = HashSet::new();
+        for w in writes.iter().map(Checked::write) {
+            if self.find(w.index, w.leaf).is_none() {
+                new.insert((w.index, w.leaf));
+            }
+        }
+        let new = new.len();
         if self.held.len() + new > MAX_FORCES {
             return Err(Refused::rejected(
                 0,
@@ -130,12 +141,16 @@ impl<T: GlobalMemory> ForceTable<T> {
                 ),
             ));
         }
-        let mut undo: Vec<(usize, usize, Option<Value>)> = Vec::with_capacity(writes.len());
+        // Each value's place, its value from before and its bytes as `set` wrote them
+        // (captured at once: a later value of the request that shares its bytes does not
+        // change what this force holds).
+        let mut undo: Vec<(usize, usize, Option<Value>, Placed<T>)> =
+            Vec::with_capacity(writes.len());
         for (k, checked) in writes.iter().enumerate() {
             let w = checked.write();
             let before = gm.try_get(w.index, w.leaf);
             if let Err(e) = gm.set(w.index, w.leaf, w.value) {
-                for (index, leaf, old) in undo.into_iter().rev() {
+                for (index, leaf, old, _) in undo.into_iter().rev() {
                     if let Some(old) = old {
                         let _ = gm.set(index, leaf, old);
                     }
@@ -145,20 +160,15 @@ impl<T: GlobalMemory> ForceTable<T> {
                     format!("`{}`: {e}", self.path(w.index, w.leaf)),
                 ));
             }
-            undo.push((w.index, w.leaf, before));
+            undo.push((w.index, w.leaf, before, placed(gm, w.index, w.leaf)));
         }
-        for (checked, (index, leaf, before)) in writes.iter().zip(undo) {
-            let line = format!(
-                "uid {uid} forces `{}` = {}",
-                self.path(index, leaf),
-                shown_in_log(&checked.write().value)
-            );
+        for (checked, (index, leaf, before, placed)) in writes.iter().zip(undo) {
             let force = Force {
                 write: *checked,
                 uid,
                 since_utc_ns: now_utc_ns,
                 before,
-                placed: placed(gm, index, leaf),
+                placed,
             };
             match self.find(index, leaf) {
                 Some(k) => {
@@ -168,9 +178,18 @@ impl<T: GlobalMemory> ForceTable<T> {
                         ..force
                     };
                 }
-                None => self.held.push(force),
+                None => {
+                    self.at.insert((index, leaf), self.held.len());
+                    self.held.push(force);
+                }
             }
-            self.say(line);
+            self.log.send(ForceEvent::Forced {
+                uid,
+                index,
+                leaf,
+                value: checked.write().value,
+                at_utc_ns: now_utc_ns,
+            });
         }
         self.rebuild();
         Ok(())
@@ -178,24 +197,32 @@ impl<T: GlobalMemory> ForceTable<T> {
 
     /// Ends the forces `release` names (each must be held: all or none), or all of them;
     /// with `restore`, each value is set back to what it was before its force.
-    pub fn release(&mut self, gm: &mut T, release: &Release, uid: u32) -> Result<(), Refused> {
+    pub fn release(
+        &mut self,
+        gm: &mut T,
+        release: &Release,
+        uid: u32,
+        now_utc_ns: u64,
+    ) -> Result<(), Refused> {
+        // Which held forces end, in the order named (each once: a value named twice is
+        // released once).
+        let mut ending = vec![release.all; self.held.len()];
         let ended: Vec<usize> = if release.all {
             (0..self.held.len()).collect()
         } else {
-            let mut ended = Vec::with_capacity(release.values.len());
+            let mut ended = Vec::with_capacity(release.values.len().min(self.held.len()));
             for (k, &(index, leaf)) in release.values.iter().enumerate() {
-                match self.find(index, leaf) {
-                    Some(at) if !ended.contains(&at) => ended.push(at),
-                    Some(_) => {}
-                    None => {
-                        return Err(Refused::rejected(
-                            k,
-                            format!(
-                                "`{}` is not forced (`plc forces` lists what is)",
-                                self.path(index, leaf)
-                            ),
-                        ));
-                    }
+                let Some(at) = self.find(index, leaf) else {
+                    return Err(Refused::rejected(
+                        k,
+                        format!(
+                            "`{}` is not forced (`plc forces` lists what is)",
+                            self.path(index, leaf)
+                        ),
+                    ));
+                };
+                if !std::mem::replace(&mut ending[at], true) {
+                    ended.push(at);
                 }
             }
             ended
@@ -206,22 +233,29 @@ impl<T: GlobalMemory> ForceTable<T> {
             let restored = match (release.restore, f.before) {
                 (true, Some(before)) => {
                     let _ = gm.set(w.index, w.leaf, before);
-                    format!(", {} restored", shown_in_log(&before))
+                    Some(before)
                 }
-                _ => String::new(),
+                _ => None,
             };
-            let line = format!(
-                "uid {uid} releases `{}` (forced by uid {}{restored})",
-                self.path(w.index, w.leaf),
-                f.uid
-            );
-            self.say(line);
+            self.log.send(ForceEvent::Released {
+                uid,
+                index: w.index,
+                leaf: w.leaf,
+                forced_by: f.uid,
+                restored,
+                at_utc_ns: now_utc_ns,
+            });
         }
-        let mut at = 0;
+        let mut k = 0;
         self.held.retain(|_| {
-            at += 1;
-            !ended.contains(&(at - 1))
+            k += 1;
+            !ending[k - 1]
         });
+        self.at.clear();
+        for (k, f) in self.held.iter().enumerate() {
+            let w = f.write.write();
+            self.at.insert((w.index, w.leaf), k);
+        }
         self.rebuild();
         Ok(())
     }
@@ -259,16 +293,202 @@ impl<T: GlobalMemory> ForceTable<T> {
             }),
         );
     }
-
-    fn say(&self, line: String) {
-        // Full only if thousands of lines wait: the log then misses some, the table not.
-        let _ = self.log.try_send(line);
-    }
 }
 
 /// The bytes that hold value `leaf` of variable `index` where it lies in `gm`, which holds
 /// its forced value; `None` if `T` does not say where it lies.
-fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Option<Vec<PlacedBytes<T>>> {
+fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Placed<T> {
     let mut stores = Vec::new();
     place::capture(gm, index, leaf, |s| stores.push(s)).then_some(stores)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::force_log::ForceLogReader;
+    use super::*;
+    use crate::limits::{FORCE_LOG_LINES, MAX_WRITES};
+    use plc_core::write::{Write, check_force};
+
+    #[derive(plc_core::GlobalMemory, Debug, Clone)]
+    struct Gm {
+        speed: i32,
+        values: [i32; 256],
+    }
+
+    const SPEED: usize = 0;
+    const VALUES: usize = 1;
+
+    fn table() -> (ForceTable<Gm>, ForceLogReader) {
+        let (log, reader) = ForceLog::channel(FORCE_LOG_LINES);
+        (ForceTable::new(Gm::VARIABLES, log), reader)
+    }
+
+    fn forced(index: usize, leaf: usize, v: i64) -> Checked {
+        let write = Write {
+            index,
+            leaf,
+            value: Value::Int(v),
+        };
+        check_force(Gm::VARIABLES, write).unwrap()
+    }
+
+    fn release(values: &[(usize, usize)], restore: bool) -> Release {
+        Release {
+            id: 1,
+            restore,
+            all: false,
+            values: values.to_vec(),
+        }
+    }
+
+    #[test]
+    fn a_re_force_keeps_the_first_before_and_refusals_name_who_forced() {
+        let (mut forces, _log) = table();
+        let mut gm = Gm {
+            speed: 3,
+            ..Gm::default()
+        };
+        forces
+            .force(&mut gm, &[forced(SPEED, 0, 7)], 1000, 0)
+            .unwrap();
+        forces
+            .force(&mut gm, &[forced(SPEED, 0, 9)], 1001, 0)
+            .unwrap();
+        assert_eq!((forces.len(), gm.speed), (1, 9), "one force, the new value");
+        let why = forces.refusal(SPEED, 0).unwrap();
+        assert!(
+            why.starts_with("`speed` is forced (by uid 1001 since "),
+            "{why}"
+        );
+        assert_eq!(
+            forces.refusal(VALUES, 0),
+            None,
+            "only the forced value is refused"
+        );
+        gm.speed = 100;
+        forces.apply(&mut gm);
+        assert_eq!(gm.speed, 9, "held at both boundaries");
+        forces
+            .release(&mut gm, &release(&[(SPEED, 0)], true), 1000, 0)
+            .unwrap();
+        assert_eq!(
+            (forces.len(), gm.speed),
+            (0, 3),
+            "restored to before the first"
+        );
+        assert_eq!(forces.refusal(SPEED, 0), None);
+    }
+
+    #[test]
+    fn a_release_of_a_value_not_forced_is_refused_naming_it_and_ends_nothing() {
+        let (mut forces, _log) = table();
+        let mut gm = Gm::default();
+        let writes = [
+            forced(VALUES, 4, 1),
+            forced(VALUES, 5, 2),
+            forced(SPEED, 0, 3),
+        ];
+        forces.force(&mut gm, &writes, 1000, 0).unwrap();
+        let named = release(&[(VALUES, 5), (VALUES, 6)], false);
+        let refused = forces.release(&mut gm, &named, 1000, 0).unwrap_err();
+        assert_eq!(refused.which, 1);
+        assert!(
+            refused.why.starts_with("`values[6]` is not forced"),
+            "{}",
+            refused.why
+        );
+        assert_eq!(forces.len(), 3, "all or none");
+        // A value named twice is released once; the others keep their places in the index.
+        let twice = release(&[(VALUES, 5), (VALUES, 5)], false);
+        // One more than the limit is refused, whole, saying how many it adds.
+        let over: Vec<Checked> = (0..256)
+            .filter(|k| ![4, 5].contains(k))
+            .map(|k| forced(VALUES, k, 1))
+            .collect();
+        let refused = forces.force(&mut gm, &over, 1000, 0).unwrap_err();
+        assert!(
+            refused
+                .why
+                .starts_with("3 forces are held and this request adds 254"),
+            "{}",
+            refused.why
+        );
+        assert_eq!((forces.len(), gm.values[7]), (3, 0));
+        assert_eq!(
+            MAX_FORCES, 256,
+            "the count above is 3 + 254 = MAX_FORCES + 1"
+        );
+        forces.release(&mut gm, &twice, 1000, 0).unwrap();
+        assert_eq!(forces.len(), 2);
+        assert!(forces.refusal(VALUES, 5).is_none());
+        assert!(forces.refusal(VALUES, 4).is_some() && forces.refusal(SPEED, 0).is_some());
+        (gm.values[4], gm.speed) = (0, 0);
+        forces.apply(&mut gm);
+        assert_eq!((gm.values[4], gm.speed), (1, 3));
+    }
+
+    #[test]
+    fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
+        let (mut forces, mut log) = table();
+        let mut gm = Gm::default();
+        // 257 copies of one value are one force: not above the limit.
+        let copies = vec![forced(VALUES, 0, 1); 257];
+        forces.force(&mut gm, &copies, 1000, 5).unwrap();
+        assert_eq!(forces.len(), 1);
+        let (events, dropped) = log.take_events();
+        assert_eq!((events.len(), dropped), (257, 0));
+        let all: Vec<Checked> = (0..256).map(|k| forced(VALUES, k, 1)).collect();
+        forces.force(&mut gm, &all, 1000, 5).unwrap();
+        let (events, dropped) = log.take_events();
+        assert_eq!((events.len(), dropped), (256, 0));
+        // One request of 1,024 re-forces of the 256 held values: the channel holds
+        // FORCE_LOG_LINES events, and every one that does not fit is counted.
+        forces.force(&mut gm, &all, 1000, 5).unwrap();
+        let again: Vec<Checked> = (0..MAX_WRITES)
+            .map(|k| forced(VALUES, k % 256, 2))
+            .collect();
+        forces.force(&mut gm, &again, 1001, 6).unwrap();
+        assert_eq!(forces.len(), 256, "re-forces add nothing");
+        let (events, dropped) = log.take_events();
+        assert_eq!(events.len(), FORCE_LOG_LINES);
+        assert_eq!(dropped as usize, 256 + MAX_WRITES - FORCE_LOG_LINES);
+        // The last that fit: the 768th of the second request.
+        assert_eq!(
+            events.last(),
+            Some(&ForceEvent::Forced {
+                uid: 1001,
+                index: VALUES,
+                leaf: 767 % 256,
+                value: Value::Int(2),
+                at_utc_ns: 6,
+            })
+        );
+        assert!(
+            events
+                .iter()
+                .all(|e| matches!(e, ForceEvent::Forced { .. }))
+        );
+        // Released with restore, each value goes back to 0, from before the first force.
+        let every = Release {
+            id: 2,
+            restore: true,
+            all: true,
+            values: Vec::new(),
+        };
+        forces.release(&mut gm, &every, 1000, 7).unwrap();
+        assert!(gm.values.iter().all(|&v| v == 0));
+        let (events, dropped) = log.take_events();
+        assert_eq!((events.len(), dropped), (256, 0));
+        assert_eq!(
+            events[3],
+            ForceEvent::Released {
+                uid: 1000,
+                index: VALUES,
+                leaf: 3,
+                forced_by: 1001,
+                restored: Some(Value::Int(0)),
+                at_utc_ns: 7,
+            }
+        );
+    }
 }

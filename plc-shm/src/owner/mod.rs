@@ -4,6 +4,7 @@
 //!
 //! Nothing here uses the tool's side: both meet in the segment's format and the protocol.
 
+mod force_log;
 mod forces;
 pub(crate) mod policy;
 mod recording;
@@ -28,6 +29,7 @@ use crate::protocol::Code;
 use crate::sys::base::Base;
 use crate::sys::clock::{now_ns, utc_ns};
 use crate::sys::rundir;
+use force_log::ForceLog;
 use forces::ForceTable;
 use plc_core::GlobalMemory;
 use plc_core::write::Write;
@@ -82,7 +84,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let counters = Arc::new(Counters::default());
         counters.publish(&base, &off);
         let (queue, rx) = std::sync::mpsc::sync_channel(MAX_QUEUED);
-        let (log, log_rx) = std::sync::mpsc::sync_channel(FORCE_LOG_LINES);
+        let (log, log_rx) = ForceLog::channel(FORCE_LOG_LINES);
         let (retired, retired_rx) = std::sync::mpsc::sync_channel(2 * MAX_TRACES);
         // Last: tools connect only to a complete segment.
         seg.serve(Setup {
@@ -108,6 +110,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
                 forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
                 recordings: Default::default(),
                 retired,
+                held_over: RefCell::new(None),
             },
             seq: Cell::new(0),
             run_state: Cell::new(RunState::Starting),
@@ -320,8 +323,11 @@ impl<T: GlobalMemory> Drop for ShmOwner<T> {
         // writes received and never applied are answered too: their writers need not wait.
         self.inbox.answer_applied();
         if let Ok(rx) = self.inbox.rx.lock() {
-            for _ in 0..MAX_QUEUED {
-                let Ok(batch) = rx.try_recv() else { break };
+            let mut held_over = self.inbox.held_over.borrow_mut().take();
+            for _ in 0..=MAX_QUEUED {
+                let Ok(batch) = held_over.take().map_or_else(|| rx.try_recv(), Ok) else {
+                    break;
+                };
                 batch
                     .conn
                     .answer(batch.id, Code::Stopped, 0, "the program stopped".into());

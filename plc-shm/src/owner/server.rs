@@ -11,8 +11,10 @@
 //! applied. Forces and releases travel the same way, checked as forces; a trace is set up here
 //! (its ring made and passed to the tool) and handed to the cycle. Every send to a tool has a
 //! timeout or does not wait, so a tool that stops reading blocks nothing but its own
-//! connection. The accepting thread also writes the lines the cycle leaves for the log.
+//! connection. The accepting thread also formats and logs the force and release events the
+//! cycle leaves (at a bounded rate, saying what it did not show or could not log).
 
+use super::force_log::{ForceLogReader, Level};
 use super::policy::Policy;
 use super::recording::Recording;
 use super::requests::{self, Batch, Conn, Count, Counters, Kind};
@@ -34,11 +36,12 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering::Relaxed};
 use std::sync::mpsc::{Receiver, SyncSender, TrySendError};
 use std::sync::{Arc, Mutex};
 use std::thread::JoinHandle;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// How long a send to a tool (the greeting, a refusal) may wait for room.
 const SEND_TIMEOUT: Duration = Duration::from_secs(1);
-/// Log lines the accepting thread writes per look at the channel (which is bounded too).
+/// Force and release events the accepting thread takes per look at the channel (which is
+/// bounded too).
 const LOG_LINES_PER_CALL: usize = 4096;
 /// How often the accepting thread looks whether it should stop.
 const STOP_POLL: Duration = Duration::from_millis(50);
@@ -57,8 +60,8 @@ struct Shared {
     conns: Mutex<Registry>,
     /// Traces running.
     traces: AtomicUsize,
-    /// Lines the cycle thread logs (forces), written here.
-    log: Mutex<Receiver<String>>,
+    /// Forces and releases the cycle thread logs, formatted and written here.
+    log: Mutex<ForceLogReader>,
     /// Traces whose tools left, freed here: unmapping a ring costs milliseconds the cycle
     /// thread must not spend.
     retired: Mutex<Receiver<Recording>>,
@@ -87,7 +90,7 @@ pub(crate) struct Setup {
     pub off: Offsets,
     pub counters: Arc<Counters>,
     pub queue: SyncSender<Batch>,
-    pub log: Receiver<String>,
+    pub log: ForceLogReader,
     pub retired: Receiver<Recording>,
 }
 
@@ -131,7 +134,7 @@ impl Server {
 
 impl Drop for Server {
     fn drop(&mut self) {
-        write_log(&self.shared);
+        write_log(&self.shared, true);
         self.shared.stop.store(true, Relaxed);
         unix::shutdown(self.listener.as_raw_fd());
         if let Some(a) = self.accept.take() {
@@ -152,28 +155,34 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// Does what the cycle thread left to this one: writes its lines for the log and frees the
-/// traces whose tools left.
-fn write_log(shared: &Shared) {
+/// Does what the cycle thread left to this one: writes the lines of its forces and releases
+/// (at a bounded rate; with `closing`, every count still held back too) and frees the traces
+/// whose tools left.
+fn write_log(shared: &Shared, closing: bool) {
     if let Ok(retired) = shared.retired.try_lock() {
         // At most MAX_TRACES exist at once, and the channel holds twice as many.
         for ring in retired.try_iter() {
             drop(ring);
         }
     }
-    let Ok(rx) = shared.log.try_lock() else {
+    let Ok(mut log) = shared.log.try_lock() else {
         return;
     };
+    let now = (!closing).then(Instant::now);
     // Bounded per call; the channel is bounded too.
-    for line in rx.try_iter().take(LOG_LINES_PER_CALL) {
-        log::info!(target: "plc_io::shm", "segment `{}`: {line}", shared.name);
-    }
+    log.drain(shared.vars, now, LOG_LINES_PER_CALL, &mut |level, line| {
+        let name = &shared.name;
+        match level {
+            Level::Info => log::info!(target: "plc_io::shm", "segment `{name}`: {line}"),
+            Level::Warn => log::warn!(target: "plc_io::shm", "segment `{name}`: {line}"),
+        }
+    });
 }
 
 fn accept_loop(shared: &Arc<Shared>, listener: &OwnedFd) {
     normal_priority();
     while !shared.stop.load(Relaxed) {
-        write_log(shared);
+        write_log(shared, false);
         match unix::readable(listener.as_raw_fd(), STOP_POLL) {
             Ok(true) => {}
             Ok(false) => continue,

@@ -1,0 +1,287 @@
+//! The force log, an audit of every force and release: the cycle thread sends each as a plain
+//! event (numbers and the value, nothing formatted: a flood of forces costs the cycle no
+//! text), and the server's accepting thread turns them into lines. The lines are bounded:
+//! per uid at most [`LINES`] every [`WINDOW`], then one line that says how many were not
+//! shown; and when the channel is full the cycle counts the events it could not send, which
+//! the log then reports. Nothing is lost without a line that says so.
+
+use crate::calendar::utc_text;
+use crate::log_limit::{LINES, WINDOW, Window};
+use crate::naming::{path_of, shown_in_log};
+use plc_core::{Value, VarInfo};
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
+use std::sync::mpsc::{Receiver, SyncSender, TryRecvError};
+use std::time::Instant;
+
+/// Uids whose windows are kept at once: more (thousands of users forcing) and the oldest
+/// quiet ones are forgotten after their held-back lines are reported.
+const MAX_UIDS: usize = 64;
+
+/// A force or a release, as the cycle thread saw it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum ForceEvent {
+    /// `uid` forced value `leaf` of variable `index` to `value`.
+    Forced {
+        uid: u32,
+        index: usize,
+        leaf: usize,
+        value: Value,
+        at_utc_ns: u64,
+    },
+    /// `uid` released the force `forced_by` held, setting back `restored` if asked to.
+    Released {
+        uid: u32,
+        index: usize,
+        leaf: usize,
+        forced_by: u32,
+        restored: Option<Value>,
+        at_utc_ns: u64,
+    },
+}
+
+impl ForceEvent {
+    fn uid(&self) -> u32 {
+        match *self {
+            ForceEvent::Forced { uid, .. } | ForceEvent::Released { uid, .. } => uid,
+        }
+    }
+
+    /// The line for the log, values named as tools name them.
+    fn line(&self, vars: &[VarInfo]) -> String {
+        match *self {
+            ForceEvent::Forced {
+                uid,
+                index,
+                leaf,
+                value,
+                at_utc_ns,
+            } => format!(
+                "uid {uid} forces `{}` = {} at {}",
+                path_of(vars, index, leaf),
+                shown_in_log(&value),
+                utc_text(at_utc_ns)
+            ),
+            ForceEvent::Released {
+                uid,
+                index,
+                leaf,
+                forced_by,
+                restored,
+                at_utc_ns,
+            } => {
+                let restored = restored
+                    .map(|v| format!(", {} restored", shown_in_log(&v)))
+                    .unwrap_or_default();
+                format!(
+                    "uid {uid} releases `{}` (forced by uid {forced_by}{restored}) at {}",
+                    path_of(vars, index, leaf),
+                    utc_text(at_utc_ns)
+                )
+            }
+        }
+    }
+}
+
+/// The cycle thread's end: sends without waiting, counts what did not fit.
+pub(crate) struct ForceLog {
+    tx: SyncSender<ForceEvent>,
+    dropped: Arc<AtomicU64>,
+}
+
+impl ForceLog {
+    /// A log whose channel holds `capacity` events.
+    pub fn channel(capacity: usize) -> (ForceLog, ForceLogReader) {
+        let (tx, rx) = std::sync::mpsc::sync_channel(capacity);
+        let dropped = Arc::new(AtomicU64::new(0));
+        let reader = ForceLogReader {
+            rx,
+            dropped: dropped.clone(),
+            windows: HashMap::new(),
+        };
+        (ForceLog { tx, dropped }, reader)
+    }
+
+    /// Sends `event`, or counts it if the channel is full (the server fell behind).
+    #[inline]
+    pub fn send(&self, event: ForceEvent) {
+        if self.tx.try_send(event).is_err() {
+            self.dropped.fetch_add(1, Relaxed);
+        }
+    }
+}
+
+/// The server's end: formats the events into lines at a bounded rate.
+pub(crate) struct ForceLogReader {
+    rx: Receiver<ForceEvent>,
+    dropped: Arc<AtomicU64>,
+    /// Each forcing uid's window of lines.
+    windows: HashMap<u32, Window>,
+}
+
+/// How a line is logged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Level {
+    /// A force or a release.
+    Info,
+    /// What was not shown or not logged.
+    Warn,
+}
+
+impl ForceLogReader {
+    /// Takes up to `max` waiting events and hands `out` the lines for them at `now`: each
+    /// event's, up to [`LINES`] per uid per [`WINDOW`], then (once the window ended) one line
+    /// of how many were not shown; and one of how many the cycle could not send. With `now`
+    /// `None` (the log closes) every count still held back is reported.
+    pub fn drain(
+        &mut self,
+        vars: &[VarInfo],
+        now: Option<Instant>,
+        max: usize,
+        out: &mut impl FnMut(Level, String),
+    ) {
+        let at = now.unwrap_or_else(Instant::now);
+        for _ in 0..max {
+            let event = match self.rx.try_recv() {
+                Ok(event) => event,
+                Err(TryRecvError::Empty | TryRecvError::Disconnected) => break,
+            };
+            let uid = event.uid();
+            if !self.windows.contains_key(&uid) && self.windows.len() >= MAX_UIDS {
+                self.forget_one(out);
+            }
+            let window = self.windows.entry(uid).or_default();
+            if let Some(before) = window.admit(at) {
+                if before > 0 {
+                    out(Level::Warn, not_shown(before, uid));
+                }
+                out(Level::Info, event.line(vars));
+            }
+        }
+        for (&uid, window) in &mut self.windows {
+            let held = window.take_ended(now);
+            if held > 0 {
+                out(Level::Warn, not_shown(held, uid));
+            }
+        }
+        let dropped = self.dropped.swap(0, Relaxed);
+        if dropped > 0 {
+            out(
+                Level::Warn,
+                format!("{dropped} force/release events were not logged: the log fell behind"),
+            );
+        }
+    }
+
+    /// The events waiting and the count the cycle could not send, taken (for tests of what
+    /// the cycle sends).
+    #[cfg(test)]
+    pub fn take_events(&mut self) -> (Vec<ForceEvent>, u64) {
+        let events = self.rx.try_iter().collect();
+        (events, self.dropped.swap(0, Relaxed))
+    }
+
+    /// Forgets one uid's window, saying first what it held back.
+    fn forget_one(&mut self, out: &mut impl FnMut(Level, String)) {
+        let Some(&uid) = self.windows.keys().next() else {
+            return;
+        };
+        if let Some(mut window) = self.windows.remove(&uid) {
+            let held = window.take_ended(None);
+            if held > 0 {
+                out(Level::Warn, not_shown(held, uid));
+            }
+        }
+    }
+}
+
+fn not_shown(n: u64, uid: u32) -> String {
+    format!(
+        "{n} more forces and releases by uid {uid} not shown (at most {LINES} lines every \
+         {WINDOW:?})"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::Duration;
+
+    fn forced(uid: u32, leaf: usize) -> ForceEvent {
+        ForceEvent::Forced {
+            uid,
+            index: 0,
+            leaf,
+            value: Value::Int(leaf as i64),
+            at_utc_ns: 0,
+        }
+    }
+
+    fn lines(reader: &mut ForceLogReader, now: Option<Instant>) -> Vec<(Level, String)> {
+        let mut got = Vec::new();
+        reader.drain(&[], now, usize::MAX, &mut |level, line| {
+            got.push((level, line))
+        });
+        got
+    }
+
+    #[test]
+    fn a_full_channel_counts_what_it_dropped_and_the_log_says_so() {
+        let (log, mut reader) = ForceLog::channel(4);
+        for leaf in 0..10 {
+            log.send(forced(7, leaf));
+        }
+        let t = Instant::now();
+        let got = lines(&mut reader, Some(t));
+        let info = got.iter().filter(|(l, _)| *l == Level::Info).count();
+        assert_eq!(info, 4, "the four that fit are shown: {got:?}");
+        assert_eq!(
+            got.last().unwrap(),
+            &(
+                Level::Warn,
+                "6 force/release events were not logged: the log fell behind".to_string()
+            )
+        );
+        // Counted once: a second look has nothing to say.
+        assert!(lines(&mut reader, Some(t)).is_empty());
+    }
+
+    #[test]
+    fn a_flood_is_shown_at_a_bounded_rate_and_the_rest_counted_per_uid() {
+        let (log, mut reader) = ForceLog::channel(100);
+        for leaf in 0..30 {
+            log.send(forced(7, leaf));
+        }
+        log.send(forced(8, 0));
+        let t = Instant::now();
+        let got = lines(&mut reader, Some(t));
+        assert_eq!(got.len(), LINES as usize + 1, "{got:?}");
+        assert!(got.iter().all(|(l, _)| *l == Level::Info));
+        assert!(got.iter().any(|(_, line)| line.starts_with("uid 8 forces")));
+        // When uid 7's window ends, one line says how many of its events were not shown.
+        let later = lines(&mut reader, Some(t + WINDOW + Duration::from_millis(1)));
+        assert_eq!(
+            later,
+            [(
+                Level::Warn,
+                format!(
+                    "20 more forces and releases by uid 7 not shown (at most {LINES} lines \
+                     every {WINDOW:?})"
+                )
+            )]
+        );
+        // When the log closes, what is still held back is reported too.
+        for leaf in 0..11 {
+            log.send(forced(9, leaf));
+        }
+        let closing = lines(&mut reader, None);
+        assert!(
+            closing
+                .last()
+                .unwrap()
+                .1
+                .starts_with("1 more forces and releases by uid 9")
+        );
+    }
+}
