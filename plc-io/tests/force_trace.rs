@@ -200,6 +200,41 @@ fn a_trace_holds_every_cycle_in_order_and_every_nth_when_asked() {
     assert!(every.ended());
 }
 
+/// A trace the owner cannot take now is refused with the owner's reason, not as waiting
+/// writes: a second trace on one connection, a fifth trace on the program.
+#[test]
+fn a_trace_refused_for_now_says_why() {
+    let name = unique("trace_busy");
+    let (stop, program) = program(&name);
+    let seg = wait_for(Duration::from_secs(10), || DynSegment::attach(&name).ok());
+    let counter = [seg.locate("counter").unwrap()];
+    let _first = seg.trace(&counter, 1).unwrap();
+    let Err(again) = seg.trace(&counter, 1) else {
+        panic!("a second trace on one connection was taken");
+    };
+    assert!(
+        matches!(&again, ShmError::Busy { reason, .. } if reason.contains("one trace per connection")),
+        "{again}"
+    );
+    let tools: Vec<DynSegment> = (0..4).map(|_| DynSegment::attach(&name).unwrap()).collect();
+    let traces: Vec<_> = tools[..3]
+        .iter()
+        .map(|t| t.trace(&counter, 1).unwrap())
+        .collect();
+    let Err(fifth) = tools[3].trace(&counter, 1) else {
+        panic!("a fifth trace was taken");
+    };
+    let text = fifth.to_string();
+    assert!(
+        matches!(fifth, ShmError::Busy { .. }) && text.contains("traces run already"),
+        "{text}"
+    );
+    assert!(!text.contains("writes wait"), "{text}");
+    drop(traces);
+    stop.stop();
+    program.join().unwrap();
+}
+
 /// Force, release and trace messages from a tool that skips every check: values the program's
 /// type does not take (NaN for a REAL, a number out of an INT's range, no such variable or
 /// element) are refused by the owner, random bytes with those tags are answered as

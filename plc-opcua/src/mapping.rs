@@ -313,6 +313,7 @@ pub fn write_refusal(e: &ShmError) -> StatusCode {
         // node's access (BadNotWritable: its AccessLevel still allows writing, rightly).
         ShmError::Forced { .. } => StatusCode::BadLocked,
         ShmError::QueueFull(_)
+        | ShmError::Busy { .. }
         | ShmError::RequestCount { .. }
         | ShmError::RequestTooLarge { .. } => StatusCode::BadTooManyOperations,
         ShmError::OwnerGone(_) | ShmError::Replaced(_) | ShmError::Closed { .. } => {

@@ -101,6 +101,9 @@ impl fmt::Display for ShmError {
                 "segment `{n}`: too many writes wait for the program already (is it running? \
                  `plc list` shows its state); try again"
             ),
+            ShmError::Busy { name, reason } => {
+                write!(f, "segment `{name}`: {reason}; try again later")
+            }
             ShmError::NotOwner(n) => {
                 write!(f, "only the program that created segment `{n}` may do this")
             }

@@ -118,6 +118,13 @@ pub enum ShmError {
     },
     /// Too many requests wait for the owner already (it has not applied earlier ones yet).
     QueueFull(String),
+    /// The owner cannot take the request now and said why (as "4 traces run already").
+    Busy {
+        /// Segment.
+        name: String,
+        /// The owner's reason.
+        reason: String,
+    },
     /// Only the owner may do this.
     NotOwner(String),
     /// The operating system refused access to the segment's file.

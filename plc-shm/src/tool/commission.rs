@@ -2,6 +2,7 @@
 //! tracing values every cycle. Each goes over the segment's socket like a write, checked here
 //! as the owner checks it again.
 
+use super::client::answer_result;
 use super::dynamic::DynSegment;
 use super::paths::PathLocation;
 use super::trace::Trace;
@@ -10,7 +11,7 @@ use crate::error::ShmError;
 use crate::format::force_table::{self, ForceInfo};
 use crate::limits::{MAX_TRACED, MAX_WRITES};
 use crate::naming::path_of;
-use crate::protocol::{self, Release, TraceRequest, WriteRequest};
+use crate::protocol::{self, Code, Release, TraceRequest, WriteRequest};
 use plc_core::write::{self, Checked, Write};
 
 impl DynSegment {
@@ -121,7 +122,16 @@ impl DynSegment {
             })
         })?;
         let names: Vec<String> = values.iter().map(|v| v.path.clone()).collect();
-        self.view.wait_answer(ticket, &names)?;
+        let reply = self.view.wait_reply(ticket)?;
+        // A trace refused for now says why (traces already running, one per connection),
+        // not that writes wait.
+        if reply.code == Code::Busy {
+            return Err(ShmError::Busy {
+                name: self.name().to_string(),
+                reason: reply.reason,
+            });
+        }
+        answer_result(self.name(), &names, reply)?;
         let fd = self
             .view
             .take_file(ticket)

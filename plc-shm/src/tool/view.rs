@@ -11,7 +11,7 @@ use crate::format::status::{OwnerState, Status};
 use crate::format::{bytes, seqlock};
 use crate::limits::{MAX_MESSAGE, MAX_WRITES};
 use crate::naming::path_of;
-use crate::protocol::{self, Ticket, WriteOutcome};
+use crate::protocol::{self, Reply, Ticket, WriteOutcome};
 use crate::sys::base::Base;
 use crate::sys::rundir;
 use plc_core::Value;
@@ -225,10 +225,14 @@ impl View {
     /// Waits for the owner's answer to `ticket` (fifty of its cycles, within bounds);
     /// `names` are the request's values, as a refusal names them.
     pub fn wait_answer(&self, ticket: Ticket, names: &[String]) -> Result<(), ShmError> {
+        answer_result(self.name(), names, self.wait_reply(ticket)?)
+    }
+
+    /// The owner's answer to `ticket` as it came (fifty of its cycles, within bounds).
+    pub fn wait_reply(&self, ticket: Ticket) -> Result<Reply, ShmError> {
         let period = self.status().stats.period;
         let patience = (period * 50).clamp(WRITE_PATIENCE.0, WRITE_PATIENCE.1);
-        let reply = self.seg.client().wait(ticket, patience)?;
-        answer_result(self.name(), names, reply)
+        self.seg.client().wait(ticket, patience)
     }
 
     /// The memory file that came with the answer to `ticket`.
