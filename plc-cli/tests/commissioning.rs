@@ -360,3 +360,49 @@ fn trace_refuses_unknown_values_bad_triggers_and_every_zero() {
     bad(&["nothing_like_it"], "nothing_like_it");
     bad(&["counter", "--every", "0"], "--every");
 }
+
+/// A trace whose trigger never fires recorded nothing: the CSV and plot of an earlier trace
+/// stay as they were, with their permissions; a trace that does record keeps a private file
+/// private.
+#[test]
+fn a_trace_whose_trigger_never_fires_leaves_the_earlier_files_as_they_were() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = scratch("unfired");
+    let segment = format!("cm_unfired_{}", std::process::id());
+    let _program = counter(&segment, 1000);
+    let (csv, svg) = (dir.join("earlier.csv"), dir.join("earlier.svg"));
+    for (file, text) in [(&csv, "cycle,time_s,counter\n1,0,1\n"), (&svg, "<svg/>")] {
+        std::fs::write(file, text).unwrap();
+        std::fs::set_permissions(file, std::fs::Permissions::from_mode(0o600)).unwrap();
+    }
+    let trace = |trigger: Option<&str>| {
+        let (csv, svg) = (csv.to_str().unwrap(), svg.to_str().unwrap());
+        let mut args = vec!["trace", &segment, "counter", "--for", "300ms"];
+        if let Some(t) = trigger {
+            args.extend(["--trigger", t]);
+        }
+        args.extend(["--out", csv, "--plot", svg]);
+        plc(&args)
+    };
+    let out = trace(Some("counter > 1000000000000"));
+    assert!(!out.status.success());
+    assert!(stderr(&out).contains("did not fire"), "{}", stderr(&out));
+    assert_eq!(
+        std::fs::read_to_string(&csv).unwrap(),
+        "cycle,time_s,counter\n1,0,1\n"
+    );
+    assert_eq!(std::fs::read_to_string(&svg).unwrap(), "<svg/>");
+    let mode = |f: &Path| std::fs::metadata(f).unwrap().permissions().mode() & 0o777;
+    assert_eq!((mode(&csv), mode(&svg)), (0o600, 0o600));
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().flatten().collect();
+    assert_eq!(left.len(), 2, "no temporary file left: {left:?}");
+
+    let out = trace(None);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(std::fs::read_to_string(&csv).unwrap().lines().count() > 100);
+    assert_eq!(
+        (mode(&csv), mode(&svg)),
+        (0o600, 0o600),
+        "private files stay private"
+    );
+}

@@ -5,7 +5,8 @@
 //! column (it jumps) and at the end, never skipped in silence.
 //!
 //! The CSV is written to a temporary file beside `--out` and renamed over it at the end (a
-//! trace cut short by Ctrl-C keeps the rows drained so far); the plot likewise.
+//! trace cut short by Ctrl-C keeps the rows drained so far); the plot likewise. A replaced file
+//! keeps its permissions, and a trace whose trigger never fired replaces nothing.
 
 use super::log::stop_on_signals;
 use super::{Error, leaves_of};
@@ -148,9 +149,10 @@ pub fn run(o: &Options) -> Result<(), Error> {
     let keep = o.plot.is_some();
     let mut kept = Samples::new(columns.len());
     let mut outcome = None;
+    let untriggered = o.trigger.is_some();
     plc_files::write_atomically_with(
         &o.out,
-        0o644,
+        mode_to_keep(&o.out),
         |file| {
             let mut csv = CsvWriter::new(BufWriter::new(file), &columns)?;
             let result = record(
@@ -167,15 +169,29 @@ pub fn run(o: &Options) -> Result<(), Error> {
                 },
             )?;
             csv.into_inner().flush()?;
+            // A trigger that never fired recorded nothing: the file a trace made before stays
+            // (the temporary file is removed).
+            let fired = !untriggered || result.summary.triggered_at.is_some();
             outcome = Some(result);
-            Ok(())
+            if fired {
+                Ok(())
+            } else {
+                Err(std::io::Error::other(NOT_FIRED))
+            }
         },
         |_| {},
     )
-    .map_err(|e| format!("{}: {e}", o.out.display()))?;
+    .or_else(|e| match &outcome {
+        // Said by `report`, with the file left as it was.
+        Some(_) if e.to_string() == NOT_FIRED => Ok(()),
+        _ => Err(format!("{}: {e}", o.out.display())),
+    })?;
     let Some(outcome) = outcome else {
         return Err("the trace did not run".into());
     };
+    if outcome.summary.triggered_at.is_none() && untriggered {
+        return report(o, &outcome);
+    }
     eprintln!(
         "plc trace: {} rows written to {}",
         outcome.rows,
@@ -191,8 +207,21 @@ pub fn run(o: &Options) -> Result<(), Error> {
 }
 
 fn write_plot(path: &Path, svg: &str) -> Result<(), Error> {
-    plc_files::write_atomically(path, svg.as_bytes(), 0o644)
+    plc_files::write_atomically(path, svg.as_bytes(), mode_to_keep(path))
         .map_err(|e| format!("{}: {e}", path.display()).into())
+}
+
+/// What the write closure answers when the trigger never fired, so nothing replaces the file.
+const NOT_FIRED: &str = "the trigger did not fire";
+
+/// The permissions a new trace file gets: those of the file it replaces (a 0600 CSV stays
+/// 0600), else 0644. A link or anything but a plain file is refused by the write itself.
+fn mode_to_keep(path: &Path) -> u32 {
+    use std::os::unix::fs::PermissionsExt;
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if m.is_file() => m.permissions().mode() & 0o777,
+        _ => 0o644,
+    }
 }
 
 /// What the user is told at the end; an error (exit status 1) when rows were lost or the
@@ -211,7 +240,8 @@ fn report(o: &Options, outcome: &Outcome) -> Result<(), Error> {
             Some(cycle) => eprintln!("plc trace: triggered at cycle {cycle}"),
             None => {
                 return Err(format!(
-                    "the trigger `{}` did not fire: the file holds the header only",
+                    "the trigger `{}` did not fire: nothing was recorded, and no file was \
+                     written or replaced",
                     o.trigger.as_deref().unwrap_or_default()
                 )
                 .into());
