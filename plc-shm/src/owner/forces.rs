@@ -212,6 +212,14 @@ impl<T: GlobalMemory> ForceTable<T> {
         } else {
             let mut ended = Vec::with_capacity(release.values.len().min(self.held.len()));
             for (k, &(index, leaf)) in release.values.iter().enumerate() {
+                // Named by a tool that may skip its checks: a value the program does not have
+                // is said as such, never as another value's path or an empty one.
+                if plc_rules::path::leaf(self.vars, index, leaf).is_none() {
+                    return Err(Refused::rejected(
+                        k,
+                        format!("no value {index}/{leaf}: the program has none"),
+                    ));
+                }
                 let Some(at) = self.find(index, leaf) else {
                     return Err(Refused::rejected(
                         k,
@@ -397,6 +405,17 @@ mod tests {
             "{}",
             refused.why
         );
+        assert_eq!(forces.len(), 3, "all or none");
+        // Values the program does not have, as a hostile tool may name them.
+        for (index, leaf) in [(u32::MAX as usize, 0), (VALUES, 9999), (SPEED, 1)] {
+            let named = release(&[(SPEED, 0), (index, leaf)], false);
+            let refused = forces.release(&mut gm, &named, 1000, 0).unwrap_err();
+            assert_eq!(refused.which, 1);
+            assert_eq!(
+                refused.why,
+                format!("no value {index}/{leaf}: the program has none")
+            );
+        }
         assert_eq!(forces.len(), 3, "all or none");
         // A value named twice is released once; the others keep their places in the index.
         let twice = release(&[(VALUES, 5), (VALUES, 5)], false);
