@@ -125,14 +125,18 @@ impl<N: Node> Refusal<'_, N> {
     /// (`axes[1].pos`), as `plc get` takes it (empty for [`NoVariable`](Refusal::NoVariable)).
     pub fn label(&self) -> Label<'_, N> {
         match *self {
-            Refusal::NoVariable { .. } => Label { var: None, leaf: 0 },
+            Refusal::NoVariable { .. } => Label {
+                var: None,
+                leaf: None,
+            },
+            // The leaf is none of the variable's: the variable itself, not its first value.
             Refusal::NoElement { var, .. } => Label {
                 var: Some(var),
-                leaf: 0,
+                leaf: None,
             },
             Refusal::NotWritable { var, leaf, .. } | Refusal::Value { var, leaf, .. } => Label {
                 var: Some(var),
-                leaf,
+                leaf: Some(leaf),
             },
         }
     }
@@ -141,7 +145,8 @@ impl<N: Node> Refusal<'_, N> {
 /// A variable's name, or the path of a value inside a structure, shown without allocating.
 pub struct Label<'a, N> {
     var: Option<&'a N>,
-    leaf: usize,
+    /// `None`: the variable as a whole.
+    leaf: Option<usize>,
 }
 
 /// The name of basic value `leaf` of variable `index` as messages and logs give it: the
@@ -161,7 +166,7 @@ pub struct Label<'a, N> {
 pub fn label<N: Node>(vars: &[N], index: usize, leaf: usize) -> Label<'_, N> {
     Label {
         var: vars.get(index),
-        leaf,
+        leaf: Some(leaf),
     }
 }
 
@@ -169,9 +174,12 @@ impl<N: Node> fmt::Display for Label<'_, N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let Some(var) = self.var else { return Ok(()) };
         f.write_str(var.name())?;
+        let Some(leaf) = self.leaf else {
+            return Ok(());
+        };
         // Down the structures to the leaf: each level's element (of an array of structures)
         // and the member holding it. A basic variable is named alone, its element apart.
-        let (mut node, mut leaf) = (var, self.leaf);
+        let (mut node, mut leaf) = (var, leaf);
         while !node.members().is_empty() {
             let per_element = path::element_leaves(node).max(1);
             if !node.dims().is_empty() {

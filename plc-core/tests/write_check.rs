@@ -66,6 +66,11 @@ fn each_refusal_names_the_variable_and_the_reason() {
         refused(w(1, 3, Value::Int(1))),
         "`recipe` has 3 elements: element 3 is out of range 0..3"
     );
+    // Beyond an array of structures: the variable, not its first value (`axes[0].target`).
+    assert_eq!(
+        refused(w(2, 9999, Value::Real(1.0))),
+        "`axes` has 4 elements: element 9999 is out of range 0..4"
+    );
     assert_eq!(
         refused(w(2, 1, Value::Real(1.0))),
         "`axes[0].actual` cannot be written: it is read-only"
