@@ -1,15 +1,12 @@
 //! Structure types in a variable list: the `types` section's rules (each error class, named by
 //! its JSON path), the CSV rows that declare types, and hostile type graphs (cycles, deep
-//! chains, huge dimensions), which are refused in bounded time and never panic; the export of
-//! structured variables (each type once, one name for two types refused). The golden
-//! module with structures is pinned by `import.rs` and compiled by the examples' tests.
+//! chains, huge dimensions), which are refused in bounded time and never panic. The export of
+//! structured variables: `export_structures.rs`. The golden module with structures is pinned
+//! by `import.rs` and compiled by the examples' tests.
 #![cfg(feature = "import")]
 
 use plc_core::{GlobalMemory, PlcStruct};
-use plc_io::import::{
-    ImportErrors, Options, descriptor_to_json, export_json, generate, generate_csv,
-};
-use plc_io::shm::LayoutDescriptor;
+use plc_io::import::{ImportErrors, Options, export_json, generate, generate_csv};
 use proptest::prelude::*;
 use serde_json::{Value, json};
 
@@ -347,81 +344,6 @@ fn a_sheet_s_structure_errors_name_the_line() {
         "{}",
         e[3]
     );
-}
-
-mod one {
-    /// An axis with a position.
-    #[derive(plc_core::PlcStruct, Debug, Clone, Copy, PartialEq)]
-    pub struct Axis {
-        /// Position.
-        pub pos: f64,
-    }
-}
-
-mod other {
-    /// Another structure that calls itself `Axis`.
-    #[derive(plc_core::PlcStruct, Debug, Clone, Copy, PartialEq)]
-    #[plc(name = "Axis")]
-    pub struct Carriage {
-        /// Speed.
-        pub speed: f32,
-    }
-}
-
-#[derive(GlobalMemory, Debug, Clone)]
-struct TwoAxes {
-    lift: one::Axis,
-    axes: [one::Axis; 2],
-    carriage: other::Carriage,
-}
-
-#[test]
-fn an_export_writes_each_type_once_and_refuses_one_name_for_two_types() {
-    #[derive(PlcStruct, Debug, Clone, Copy, PartialEq)]
-    struct Pair {
-        a: one::Axis,
-        b: u8,
-    }
-    #[derive(GlobalMemory, Debug, Clone)]
-    struct Shared {
-        lift: one::Axis,
-        pair: [Pair; 2],
-    }
-    let json: Value = serde_json::from_str(&export_json::<Shared>().unwrap()).unwrap();
-    let names: Vec<&String> = json["types"].as_object().unwrap().keys().collect();
-    assert_eq!(
-        names,
-        ["Axis", "Pair"],
-        "each once, a type before the types using it"
-    );
-    let e = export_json::<TwoAxes>().unwrap_err();
-    assert!(
-        e.contains("two structure types are named \"Axis\" with different members (one in \"lift\", one in \"carriage\")"),
-        "{e}"
-    );
-}
-
-#[test]
-fn an_export_of_a_descriptor_nesting_too_deep_fails() {
-    let mut desc = LayoutDescriptor::of::<Deep>();
-    // Nest the one member inside itself past the limit, as a damaged descriptor could.
-    let mut v = desc.variables[0].clone();
-    for _ in 0..12 {
-        let mut outer = v.clone();
-        outer.members = vec![v];
-        v = outer;
-    }
-    desc.variables[0] = v;
-    let e = descriptor_to_json(&desc).unwrap_err();
-    assert!(
-        e.contains("nests structures more than 8 levels deep"),
-        "{e}"
-    );
-}
-
-#[derive(GlobalMemory, Debug, Clone)]
-struct Deep {
-    lift: one::Axis,
 }
 
 /// A type graph: `n` types whose members use types by index (`edges[i]` for type `i`);
