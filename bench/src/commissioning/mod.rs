@@ -19,7 +19,7 @@
 //! - `forces_apply_32_ns`, `trace_record_64_ns`: where the time goes, each step alone on a
 //!   bare [`plc_io::shm::ShmOwner`] of `Gm1k`: `apply_forces` with 32 held (the cycle calls it
 //!   twice), `record_traces` with one 64-value trace; `forces_floor_32_twice_ns`,
-//!   `trace_floor_64_ns`: the least any implementation pays for the same values ([`floor`]).
+//!   `trace_floor_64_ns`: the least any implementation pays for the same values (the `floor` module).
 //! - `forced_32_vs_floor`, `traced_64_vs_floor`: what the forces and the trace add to a cycle
 //!   at period zero (loaded minus plain, from the same run) in those floors; target 2 at most.
 //! - `trace_4khz_lost`: a `Gm1k` program at 250 µs whose tick counts cycles into `int6`,
