@@ -53,8 +53,9 @@ pub const PER_CYCLE: usize = 256;
 /// rest of this budget waits for the next cycle, and the first request of a cycle is always
 /// taken). A force or release of a value counts as the few writes it costs the cycle.
 pub const PER_CYCLE_WRITES: u64 = 4096;
-/// Force and release events waiting for the server's thread to log them, at most (a release
-/// of every force is [`MAX_FORCES`] events); the cycle counts those that do not fit, and the
+/// Forced and released values waiting for the server's thread to log them, at most (a
+/// request is sent whole or not at all: a release of every force is [`MAX_FORCES`] values, a
+/// force request at most [`MAX_WRITES`]); the cycle counts the values that do not fit, and the
 /// log says how many.
 pub const FORCE_LOG_LINES: usize = 1024;
 

@@ -22,12 +22,17 @@
 //!   `trace_floor_64_ns`: the least any implementation pays for the same values (the `floor` module).
 //! - `forced_32_vs_floor`, `traced_64_vs_floor`: what the forces and the trace add to a cycle
 //!   at period zero (loaded minus plain, from the same run) in those floors; target 2 at most.
+//! - group `flood` (its own, beside this one): `flood_force_1024_*`, `flood_write_1024_*`,
+//!   `flood_force_vs_write_ns_per_value`: a 5 s flood of requests of 1,024 values from four tools against `Gm1k` at 1 ms, forces against
+//!   writes: overruns, cycle times, and what a forced value costs the cycle against a written
+//!   one (the `flood` module; target 1 at most, and no more overruns than the writes).
 //! - `trace_4khz_lost`: a `Gm1k` program at 250 µs whose tick counts cycles into `int6`,
 //!   traced (six values, that counter first) for 60 s (20 s with `--quick`) by a drainer at
 //!   normal priority draining every 10 ms as `plc trace` does; the rows lost
 //!   ([`TraceEvent::Lost`](plc_io::shm::trace::TraceEvent::Lost)) plus every gap or repeat in the rows' cycle numbers.
 
 mod compare;
+mod flood;
 mod floor;
 mod lost;
 mod steps;
@@ -83,6 +88,15 @@ pub fn run(quick: bool, batches: usize) -> Result<String, String> {
     }
     let seconds = if quick { 20 } else { 60 };
     lost::lost_at_4khz(&format!("{segment}_4k"), seconds, quick, &mut out)?;
+    Ok(out)
+}
+
+/// Group `flood`: a 5 s flood of force requests against one of write requests (the `flood`
+/// module); its `name: value` lines.
+pub fn flood() -> Result<String, String> {
+    let mut out = String::new();
+    let segment = format!("plc_bench_flood_{}", std::process::id());
+    flood::flood(&segment, 5, &mut out)?;
     Ok(out)
 }
 

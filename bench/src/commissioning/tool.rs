@@ -3,7 +3,7 @@
 
 use plc_core::write::{Checked, Write};
 use plc_io::shm::trace::TraceEvent;
-use plc_io::shm::{DynSegment, PathLocation};
+use plc_io::shm::{DynSegment, PathLocation, ShmError};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use std::time::{Duration, Instant};
@@ -41,21 +41,32 @@ pub fn traced_paths(seg: &DynSegment, paths: &[String]) -> Result<Vec<PathLocati
 
 /// [`FORCED`] basic values spread over the declaration, each forced to the value it has.
 pub fn forces_of(seg: &DynSegment, paths: &[String]) -> Result<Vec<Checked>, String> {
+    checked_values(seg, paths, FORCED, DynSegment::check_force)
+}
+
+/// `n` basic values spread over the declaration, each at the value it has, checked by
+/// `check` (as a force or as a write).
+pub fn checked_values(
+    seg: &DynSegment,
+    paths: &[String],
+    n: usize,
+    check: impl Fn(&DynSegment, Write) -> Result<Checked, ShmError>,
+) -> Result<Vec<Checked>, String> {
     let all: Vec<&String> = paths.iter().collect();
     let image = seg.snapshot_bytes().map_err(|e| e.to_string())?;
-    spread(&all, FORCED)
+    spread(&all, n)
         .map(|p| {
             let at = seg.locate(p).map_err(|e| e.to_string())?;
             let value = at
                 .var
                 .value_in(&image, 0)
                 .ok_or_else(|| format!("`{p}` has no value"))?;
-            seg.check_force(Write {
+            let write = Write {
                 index: at.index,
                 leaf: at.leaf,
                 value,
-            })
-            .map_err(|e| e.to_string())
+            };
+            check(seg, write).map_err(|e| format!("`{p}`: {e}"))
         })
         .collect()
 }

@@ -260,6 +260,15 @@ impl<S> Clone for PlacedBytes<S> {
 
 impl<S> Copy for PlacedBytes<S> {}
 
+/// The same bytes at the same place (a force of the value it holds already changes nothing).
+impl<S> PartialEq for PlacedBytes<S> {
+    fn eq(&self, other: &Self) -> bool {
+        (self.offset, self.width, self.bits) == (other.offset, other.width, other.bits)
+    }
+}
+
+impl<S> Eq for PlacedBytes<S> {}
+
 impl<S> fmt::Debug for PlacedBytes<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("PlacedBytes")

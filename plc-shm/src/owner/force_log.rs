@@ -8,6 +8,7 @@
 use crate::calendar::utc_text;
 use crate::log_limit::{LINES, WINDOW, Window};
 use crate::naming::{path_of, shown_in_log};
+use plc_core::write::Checked;
 use plc_core::{Value, VarInfo};
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -19,26 +20,32 @@ use std::time::Instant;
 /// quiet ones are forgotten after their held-back lines are reported.
 const MAX_UIDS: usize = 64;
 
-/// A force or a release, as the cycle thread saw it.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A force request or a release, as the cycle thread saw it.
+#[derive(Clone, Debug, PartialEq)]
 pub(crate) enum ForceEvent {
-    /// `uid` forced value `leaf` of variable `index` to `value`.
+    /// `uid` forced each value of `writes` (the request's own values, moved, not copied: a
+    /// flood of forces costs the cycle one send per request).
     Forced {
         uid: u32,
-        index: usize,
-        leaf: usize,
-        value: Value,
+        writes: Vec<Checked>,
         at_utc_ns: u64,
     },
-    /// `uid` released the force `forced_by` held, setting back `restored` if asked to.
+    /// `uid` released the forces `ended` names, in one request.
     Released {
         uid: u32,
-        index: usize,
-        leaf: usize,
-        forced_by: u32,
-        restored: Option<Value>,
+        ended: Vec<Ended>,
         at_utc_ns: u64,
     },
+}
+
+/// A force a release ended: the one `forced_by` held, with the value set back if the release
+/// asked for it.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Ended {
+    pub index: usize,
+    pub leaf: usize,
+    pub forced_by: u32,
+    pub restored: Option<Value>,
 }
 
 impl ForceEvent {
@@ -48,36 +55,45 @@ impl ForceEvent {
         }
     }
 
-    /// The line for the log, values named as tools name them.
-    fn line(&self, vars: &[VarInfo]) -> String {
-        match *self {
+    /// The values it names, each a line of the log.
+    pub fn values(&self) -> usize {
+        match self {
+            ForceEvent::Forced { writes, .. } => writes.len(),
+            ForceEvent::Released { ended, .. } => ended.len(),
+        }
+    }
+
+    /// The line for value `k` of it, values named as tools name them.
+    fn line(&self, k: usize, vars: &[VarInfo]) -> String {
+        match self {
             ForceEvent::Forced {
                 uid,
-                index,
-                leaf,
-                value,
-                at_utc_ns,
-            } => format!(
-                "uid {uid} forces `{}` = {} at {}",
-                path_of(vars, index, leaf),
-                shown_in_log(&value),
-                utc_text(at_utc_ns)
-            ),
-            ForceEvent::Released {
-                uid,
-                index,
-                leaf,
-                forced_by,
-                restored,
+                writes,
                 at_utc_ns,
             } => {
-                let restored = restored
+                let w = writes[k].write();
+                format!(
+                    "uid {uid} forces `{}` = {} at {}",
+                    path_of(vars, w.index, w.leaf),
+                    shown_in_log(&w.value),
+                    utc_text(*at_utc_ns)
+                )
+            }
+            ForceEvent::Released {
+                uid,
+                ended,
+                at_utc_ns,
+            } => {
+                let e = &ended[k];
+                let restored = e
+                    .restored
                     .map(|v| format!(", {} restored", shown_in_log(&v)))
                     .unwrap_or_default();
                 format!(
-                    "uid {uid} releases `{}` (forced by uid {forced_by}{restored}) at {}",
-                    path_of(vars, index, leaf),
-                    utc_text(at_utc_ns)
+                    "uid {uid} releases `{}` (forced by uid {}{restored}) at {}",
+                    path_of(vars, e.index, e.leaf),
+                    e.forced_by,
+                    utc_text(*at_utc_ns)
                 )
             }
         }
@@ -87,27 +103,48 @@ impl ForceEvent {
 /// The cycle thread's end: sends without waiting, counts what did not fit.
 pub(crate) struct ForceLog {
     tx: SyncSender<ForceEvent>,
+    /// Values sent and not yet logged: at most `capacity` ([`FORCE_LOG_LINES`] for an
+    /// owner's log).
+    waiting: Arc<AtomicU64>,
+    capacity: u64,
     dropped: Arc<AtomicU64>,
 }
 
 impl ForceLog {
-    /// A log whose channel holds `capacity` events.
+    /// A log that holds at most `capacity` values waiting.
     pub fn channel(capacity: usize) -> (ForceLog, ForceLogReader) {
         let (tx, rx) = std::sync::mpsc::sync_channel(capacity);
         let dropped = Arc::new(AtomicU64::new(0));
+        let waiting = Arc::new(AtomicU64::new(0));
         let reader = ForceLogReader {
             rx,
+            waiting: waiting.clone(),
             dropped: dropped.clone(),
             windows: HashMap::new(),
         };
-        (ForceLog { tx, dropped }, reader)
+        let log = ForceLog {
+            tx,
+            waiting,
+            dropped,
+            capacity: capacity as u64,
+        };
+        (log, reader)
     }
 
-    /// Sends `event`, or counts it if the channel is full (the server fell behind).
+    /// Sends `event`, or counts its values if the log holds too many waiting (the server fell
+    /// behind).
     #[inline]
     pub fn send(&self, event: ForceEvent) {
+        let n = event.values() as u64;
+        // Only this thread adds: the reader only takes away, so the check holds.
+        if self.waiting.load(Relaxed) + n > self.capacity {
+            self.dropped.fetch_add(n, Relaxed);
+            return;
+        }
+        self.waiting.fetch_add(n, Relaxed);
         if self.tx.try_send(event).is_err() {
-            self.dropped.fetch_add(1, Relaxed);
+            self.waiting.fetch_sub(n, Relaxed);
+            self.dropped.fetch_add(n, Relaxed);
         }
     }
 }
@@ -115,6 +152,7 @@ impl ForceLog {
 /// The server's end: formats the events into lines at a bounded rate.
 pub(crate) struct ForceLogReader {
     rx: Receiver<ForceEvent>,
+    waiting: Arc<AtomicU64>,
     dropped: Arc<AtomicU64>,
     /// Each forcing uid's window of lines.
     windows: HashMap<u32, Window>,
@@ -152,12 +190,15 @@ impl ForceLogReader {
                 self.forget_one(out);
             }
             let window = self.windows.entry(uid).or_default();
-            if let Some(before) = window.admit(at) {
-                if before > 0 {
-                    out(Level::Warn, not_shown(before, uid));
+            for k in 0..event.values() {
+                if let Some(before) = window.admit(at) {
+                    if before > 0 {
+                        out(Level::Warn, not_shown(before, uid));
+                    }
+                    out(Level::Info, event.line(k, vars));
                 }
-                out(Level::Info, event.line(vars));
             }
+            self.waiting.fetch_sub(event.values() as u64, Relaxed);
         }
         for (&uid, window) in &mut self.windows {
             let held = window.take_ended(now);
@@ -178,7 +219,9 @@ impl ForceLogReader {
     /// the cycle sends).
     #[cfg(test)]
     pub fn take_events(&mut self) -> (Vec<ForceEvent>, u64) {
-        let events = self.rx.try_iter().collect();
+        let events: Vec<ForceEvent> = self.rx.try_iter().collect();
+        let values = events.iter().map(ForceEvent::values).sum::<usize>();
+        self.waiting.fetch_sub(values as u64, Relaxed);
         (events, self.dropped.swap(0, Relaxed))
     }
 
@@ -209,11 +252,15 @@ mod tests {
     use std::time::Duration;
 
     fn forced(uid: u32, leaf: usize) -> ForceEvent {
-        ForceEvent::Forced {
-            uid,
+        let write = plc_core::write::Write {
             index: 0,
             leaf,
             value: Value::Int(leaf as i64),
+        };
+        ForceEvent::Forced {
+            uid,
+            // A log checks nothing: any value formats.
+            writes: vec![Checked::__unchecked(write)],
             at_utc_ns: 0,
         }
     }

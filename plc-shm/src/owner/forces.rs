@@ -6,7 +6,9 @@
 //! held forces are indexed by value, so a request costs the cycle about what a write of as
 //! many values does.
 
-use super::force_log::{ForceEvent, ForceLog};
+use super::by_value::{ByValue, ValueSet};
+use super::force_log::{Ended, ForceEvent, ForceLog};
+use super::placed::Placed;
 use super::refused::Refused;
 use crate::calendar::utc_text;
 use crate::format::force_table::{self, ForceInfo};
@@ -15,10 +17,9 @@ use crate::limits::MAX_FORCES;
 use crate::naming::{path_of, shown_in_log};
 use crate::protocol::Release;
 use crate::sys::base::Base;
-use plc_core::place::{self, HeldBytes, PlacedBytes};
+use plc_core::place::HeldBytes;
 use plc_core::write::Checked;
 use plc_core::{GlobalMemory, Value, VarInfo};
-use std::collections::{HashMap, HashSet};
 
 /// One force held.
 #[derive(Clone, Debug)]
@@ -33,14 +34,11 @@ struct Force<T> {
     placed: Placed<T>,
 }
 
-/// The bytes that hold a forced value where it lies in `T`, or `None` if `T` does not say.
-type Placed<T> = Option<Vec<PlacedBytes<T>>>;
-
 /// The forces the cycle thread holds.
 pub(crate) struct ForceTable<T> {
     held: Vec<Force<T>>,
     /// Where each held value (variable, leaf) is in `held`: a lookup per value, not a search.
-    at: HashMap<(usize, usize), usize>,
+    at: ByValue<usize>,
     /// What applying them writes, rebuilt when they change: every force's placed bytes, in
     /// the order held (a later force wins where two write the same bytes) ...
     stores: HeldBytes<T>,
@@ -50,17 +48,21 @@ pub(crate) struct ForceTable<T> {
     vars: &'static [VarInfo],
     /// Events for the log, formatted by the server's accepting thread.
     log: ForceLog,
+    /// The places of a request's values while it is applied, kept between requests so a
+    /// flood of them allocates nothing for it.
+    scratch: Vec<(Option<usize>, Placed<T>)>,
 }
 
 impl<T: GlobalMemory> ForceTable<T> {
     pub fn new(vars: &'static [VarInfo], log: ForceLog) -> Self {
         ForceTable {
             held: Vec::new(),
-            at: HashMap::with_capacity(MAX_FORCES),
+            at: ByValue::with_capacity_and_hasher(MAX_FORCES, Default::default()),
             stores: HeldBytes::default(),
             unplaced: Vec::new(),
             vars,
             log,
+            scratch: Vec::new(),
         }
     }
 
@@ -84,10 +86,10 @@ impl<T: GlobalMemory> ForceTable<T> {
 
     /// The stores and the unplaced forces from the forces held, in their order.
     fn rebuild(&mut self) {
-        let placed = self.held.iter().filter_map(|f| f.placed.as_deref());
-        self.stores = HeldBytes::new(placed.flatten().copied());
+        let placed = self.held.iter().flat_map(|f| f.placed.stores());
+        self.stores = HeldBytes::new(placed.copied());
         self.unplaced = (self.held.iter())
-            .filter(|f| f.placed.is_none())
+            .filter(|f| !f.placed.is_placed())
             .map(|f| f.write)
             .collect();
     }
@@ -118,13 +120,13 @@ impl<T: GlobalMemory> ForceTable<T> {
     pub fn force(
         &mut self,
         gm: &mut T,
-        writes: &[Checked],
+        writes: Vec<Checked>,
         uid: u32,
         now_utc_ns: u64,
     ) -> Result<(), Refused> {
         // The values not held yet, each once (a value named twice in a request is one
         // force); a flood of re-forces adds none here.
-        let mut new = HashSet::new();
+        let mut new = ValueSet::default();
         for w in writes.iter().map(Checked::write) {
             if self.find(w.index, w.leaf).is_none() {
                 new.insert((w.index, w.leaf));
@@ -141,18 +143,30 @@ impl<T: GlobalMemory> ForceTable<T> {
                 ),
             ));
         }
-        // Each value's place, its value from before and its bytes as `set` wrote them
-        // (captured at once: a later value of the request that shares its bytes does not
-        // change what this force holds).
-        let mut undo: Vec<(usize, usize, Option<Value>, Placed<T>)> =
-            Vec::with_capacity(writes.len());
+        // Each value's place in the table if held (a value held already keeps the value
+        // from before its first force: not read again; the others' go to `befores`, in
+        // order) and its bytes as `set` wrote them (captured at once: a later value of the
+        // request that shares its bytes does not change what this force holds).
+        let mut undo = std::mem::take(&mut self.scratch);
+        undo.clear();
+        let mut befores: Vec<Option<Value>> = Vec::with_capacity(new);
         for (k, checked) in writes.iter().enumerate() {
             let w = checked.write();
-            let before = gm.try_get(w.index, w.leaf);
+            let held = self.find(w.index, w.leaf);
+            if held.is_none() {
+                befores.push(gm.try_get(w.index, w.leaf));
+            }
             if let Err(e) = gm.set(w.index, w.leaf, w.value) {
-                for (index, leaf, old, _) in undo.into_iter().rev() {
+                // Back as it was, last first: a value held at its forced value, any other at
+                // its own.
+                for ((held, _), done) in undo.iter().zip(&writes[..undo.len()]).rev() {
+                    let d = done.write();
+                    let old = match held {
+                        Some(h) => Some(self.held[*h].write.write().value),
+                        None => befores.pop().flatten(),
+                    };
                     if let Some(old) = old {
-                        let _ = gm.set(index, leaf, old);
+                        let _ = gm.set(d.index, d.leaf, old);
                     }
                 }
                 return Err(Refused::rejected(
@@ -160,38 +174,57 @@ impl<T: GlobalMemory> ForceTable<T> {
                     format!("`{}`: {e}", self.path(w.index, w.leaf)),
                 ));
             }
-            undo.push((w.index, w.leaf, before, placed(gm, w.index, w.leaf)));
+            undo.push((held, Placed::capture(gm, w.index, w.leaf)));
         }
-        for (checked, (index, leaf, before, placed)) in writes.iter().zip(undo) {
-            let force = Force {
-                write: *checked,
-                uid,
-                since_utc_ns: now_utc_ns,
-                before,
-                placed,
+        let mut befores = befores.into_iter();
+        // Whether what the cycle writes changed: a flood of re-forces to the values held
+        // does not rebuild it.
+        let mut changed = false;
+        for (checked, (held, placed)) in writes.iter().zip(undo.drain(..)) {
+            let w = checked.write();
+            let before = if held.is_none() {
+                befores.next().flatten()
+            } else {
+                None
             };
-            match self.find(index, leaf) {
+            // `held` was looked up before this request added any: a value new to the table
+            // and named twice is found the second time.
+            match held.or_else(|| self.find(w.index, w.leaf)) {
                 Some(k) => {
-                    let first = self.held[k].before;
-                    self.held[k] = Force {
-                        before: first,
-                        ..force
-                    };
+                    // A re-force: the new value, who and when; the value from before the
+                    // first force stays.
+                    let f = &mut self.held[k];
+                    (f.uid, f.since_utc_ns) = (uid, now_utc_ns);
+                    // The same bytes at the same place are the same value: nothing to copy
+                    // (a flood of re-forces copies no values). An unplaced value is set by
+                    // the cycle from its write.
+                    if f.placed != placed || !placed.is_placed() {
+                        changed = true;
+                        (f.write, f.placed) = (*checked, placed);
+                    }
                 }
                 None => {
-                    self.at.insert((index, leaf), self.held.len());
-                    self.held.push(force);
+                    changed = true;
+                    self.at.insert((w.index, w.leaf), self.held.len());
+                    self.held.push(Force {
+                        write: *checked,
+                        uid,
+                        since_utc_ns: now_utc_ns,
+                        before,
+                        placed,
+                    });
                 }
             }
-            self.log.send(ForceEvent::Forced {
-                uid,
-                index,
-                leaf,
-                value: checked.write().value,
-                at_utc_ns: now_utc_ns,
-            });
         }
-        self.rebuild();
+        self.scratch = undo;
+        if changed {
+            self.rebuild();
+        }
+        self.log.send(ForceEvent::Forced {
+            uid,
+            writes,
+            at_utc_ns: now_utc_ns,
+        });
         Ok(())
     }
 
@@ -235,6 +268,7 @@ impl<T: GlobalMemory> ForceTable<T> {
             }
             ended
         };
+        let mut log = Vec::with_capacity(ended.len());
         for &at in &ended {
             let f = &self.held[at];
             let w = f.write.write();
@@ -245,15 +279,18 @@ impl<T: GlobalMemory> ForceTable<T> {
                 }
                 _ => None,
             };
-            self.log.send(ForceEvent::Released {
-                uid,
+            log.push(Ended {
                 index: w.index,
                 leaf: w.leaf,
                 forced_by: f.uid,
                 restored,
-                at_utc_ns: now_utc_ns,
             });
         }
+        self.log.send(ForceEvent::Released {
+            uid,
+            ended: log,
+            at_utc_ns: now_utc_ns,
+        });
         let mut k = 0;
         self.held.retain(|_| {
             k += 1;
@@ -303,211 +340,6 @@ impl<T: GlobalMemory> ForceTable<T> {
     }
 }
 
-/// The bytes that hold value `leaf` of variable `index` where it lies in `gm`, which holds
-/// its forced value; `None` if `T` does not say where it lies.
-fn placed<T: GlobalMemory>(gm: &T, index: usize, leaf: usize) -> Placed<T> {
-    let mut stores = Vec::new();
-    place::capture(gm, index, leaf, |s| stores.push(s)).then_some(stores)
-}
-
 #[cfg(test)]
-mod tests {
-    use super::super::force_log::ForceLogReader;
-    use super::*;
-    use crate::limits::{FORCE_LOG_LINES, MAX_WRITES};
-    use plc_core::write::{Write, check_force};
-
-    #[derive(plc_core::GlobalMemory, Debug, Clone)]
-    struct Gm {
-        speed: i32,
-        values: [i32; 256],
-    }
-
-    const SPEED: usize = 0;
-    const VALUES: usize = 1;
-
-    fn table() -> (ForceTable<Gm>, ForceLogReader) {
-        let (log, reader) = ForceLog::channel(FORCE_LOG_LINES);
-        (ForceTable::new(Gm::VARIABLES, log), reader)
-    }
-
-    fn forced(index: usize, leaf: usize, v: i64) -> Checked {
-        let write = Write {
-            index,
-            leaf,
-            value: Value::Int(v),
-        };
-        check_force(Gm::VARIABLES, write).unwrap()
-    }
-
-    fn release(values: &[(usize, usize)], restore: bool) -> Release {
-        Release {
-            id: 1,
-            restore,
-            all: false,
-            values: values.to_vec(),
-        }
-    }
-
-    #[test]
-    fn a_re_force_keeps_the_first_before_and_refusals_name_who_forced() {
-        let (mut forces, _log) = table();
-        let mut gm = Gm {
-            speed: 3,
-            ..Gm::default()
-        };
-        forces
-            .force(&mut gm, &[forced(SPEED, 0, 7)], 1000, 0)
-            .unwrap();
-        forces
-            .force(&mut gm, &[forced(SPEED, 0, 9)], 1001, 0)
-            .unwrap();
-        assert_eq!((forces.len(), gm.speed), (1, 9), "one force, the new value");
-        let why = forces.refusal(SPEED, 0).unwrap();
-        assert!(
-            why.starts_with("`speed` is forced (by uid 1001 since "),
-            "{why}"
-        );
-        assert_eq!(
-            forces.refusal(VALUES, 0),
-            None,
-            "only the forced value is refused"
-        );
-        gm.speed = 100;
-        forces.apply(&mut gm);
-        assert_eq!(gm.speed, 9, "held at both boundaries");
-        forces
-            .release(&mut gm, &release(&[(SPEED, 0)], true), 1000, 0)
-            .unwrap();
-        assert_eq!(
-            (forces.len(), gm.speed),
-            (0, 3),
-            "restored to before the first"
-        );
-        assert_eq!(forces.refusal(SPEED, 0), None);
-    }
-
-    #[test]
-    fn a_release_of_a_value_not_forced_is_refused_naming_it_and_ends_nothing() {
-        let (mut forces, _log) = table();
-        let mut gm = Gm::default();
-        let writes = [
-            forced(VALUES, 4, 1),
-            forced(VALUES, 5, 2),
-            forced(SPEED, 0, 3),
-        ];
-        forces.force(&mut gm, &writes, 1000, 0).unwrap();
-        let named = release(&[(VALUES, 5), (VALUES, 6)], false);
-        let refused = forces.release(&mut gm, &named, 1000, 0).unwrap_err();
-        assert_eq!(refused.which, 1);
-        assert!(
-            refused.why.starts_with("`values[6]` is not forced"),
-            "{}",
-            refused.why
-        );
-        assert_eq!(forces.len(), 3, "all or none");
-        // Values the program does not have, as a hostile tool may name them.
-        for (index, leaf) in [(u32::MAX as usize, 0), (VALUES, 9999), (SPEED, 1)] {
-            let named = release(&[(SPEED, 0), (index, leaf)], false);
-            let refused = forces.release(&mut gm, &named, 1000, 0).unwrap_err();
-            assert_eq!(refused.which, 1);
-            assert_eq!(
-                refused.why,
-                format!("no value {index}/{leaf}: the program has none")
-            );
-        }
-        assert_eq!(forces.len(), 3, "all or none");
-        // A value named twice is released once; the others keep their places in the index.
-        let twice = release(&[(VALUES, 5), (VALUES, 5)], false);
-        // One more than the limit is refused, whole, saying how many it adds.
-        let over: Vec<Checked> = (0..256)
-            .filter(|k| ![4, 5].contains(k))
-            .map(|k| forced(VALUES, k, 1))
-            .collect();
-        let refused = forces.force(&mut gm, &over, 1000, 0).unwrap_err();
-        assert!(
-            refused
-                .why
-                .starts_with("3 forces are held and this request adds 254"),
-            "{}",
-            refused.why
-        );
-        assert_eq!((forces.len(), gm.values[7]), (3, 0));
-        assert_eq!(
-            MAX_FORCES, 256,
-            "the count above is 3 + 254 = MAX_FORCES + 1"
-        );
-        forces.release(&mut gm, &twice, 1000, 0).unwrap();
-        assert_eq!(forces.len(), 2);
-        assert!(forces.refusal(VALUES, 5).is_none());
-        assert!(forces.refusal(VALUES, 4).is_some() && forces.refusal(SPEED, 0).is_some());
-        (gm.values[4], gm.speed) = (0, 0);
-        forces.apply(&mut gm);
-        assert_eq!((gm.values[4], gm.speed), (1, 3));
-    }
-
-    #[test]
-    fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
-        let (mut forces, mut log) = table();
-        let mut gm = Gm::default();
-        // 257 copies of one value are one force: not above the limit.
-        let copies = vec![forced(VALUES, 0, 1); 257];
-        forces.force(&mut gm, &copies, 1000, 5).unwrap();
-        assert_eq!(forces.len(), 1);
-        let (events, dropped) = log.take_events();
-        assert_eq!((events.len(), dropped), (257, 0));
-        let all: Vec<Checked> = (0..256).map(|k| forced(VALUES, k, 1)).collect();
-        forces.force(&mut gm, &all, 1000, 5).unwrap();
-        let (events, dropped) = log.take_events();
-        assert_eq!((events.len(), dropped), (256, 0));
-        // One request of 1,024 re-forces of the 256 held values: the channel holds
-        // FORCE_LOG_LINES events, and every one that does not fit is counted.
-        forces.force(&mut gm, &all, 1000, 5).unwrap();
-        let again: Vec<Checked> = (0..MAX_WRITES)
-            .map(|k| forced(VALUES, k % 256, 2))
-            .collect();
-        forces.force(&mut gm, &again, 1001, 6).unwrap();
-        assert_eq!(forces.len(), 256, "re-forces add nothing");
-        let (events, dropped) = log.take_events();
-        assert_eq!(events.len(), FORCE_LOG_LINES);
-        assert_eq!(dropped as usize, 256 + MAX_WRITES - FORCE_LOG_LINES);
-        // The last that fit: the 768th of the second request.
-        assert_eq!(
-            events.last(),
-            Some(&ForceEvent::Forced {
-                uid: 1001,
-                index: VALUES,
-                leaf: 767 % 256,
-                value: Value::Int(2),
-                at_utc_ns: 6,
-            })
-        );
-        assert!(
-            events
-                .iter()
-                .all(|e| matches!(e, ForceEvent::Forced { .. }))
-        );
-        // Released with restore, each value goes back to 0, from before the first force.
-        let every = Release {
-            id: 2,
-            restore: true,
-            all: true,
-            values: Vec::new(),
-        };
-        forces.release(&mut gm, &every, 1000, 7).unwrap();
-        assert!(gm.values.iter().all(|&v| v == 0));
-        let (events, dropped) = log.take_events();
-        assert_eq!((events.len(), dropped), (256, 0));
-        assert_eq!(
-            events[3],
-            ForceEvent::Released {
-                uid: 1000,
-                index: VALUES,
-                leaf: 3,
-                forced_by: 1001,
-                restored: Some(Value::Int(0)),
-                at_utc_ns: 7,
-            }
-        );
-    }
-}
+#[path = "forces_tests.rs"]
+mod tests;

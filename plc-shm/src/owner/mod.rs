@@ -4,8 +4,10 @@
 //!
 //! Nothing here uses the tool's side: both meet in the segment's format and the protocol.
 
+mod by_value;
 mod force_log;
 mod forces;
+mod placed;
 pub(crate) mod policy;
 mod recording;
 mod refused;
