@@ -28,6 +28,16 @@ fn forced(index: usize, leaf: usize, v: i64) -> Checked {
     check_force(Gm::VARIABLES, write).unwrap()
 }
 
+/// A release of every force, each value set back to what it was before its first force.
+fn every_restored() -> Release {
+    Release {
+        id: 2,
+        restore: true,
+        all: true,
+        values: Vec::new(),
+    }
+}
+
 fn release(values: &[(usize, usize)], restore: bool) -> Release {
     Release {
         id: 1,
@@ -55,13 +65,7 @@ fn the_cycle_holds_the_last_value_forced_whether_or_not_it_changed() {
     forces.force(&mut gm, at(6), 1003, 3).unwrap();
     assert!(forces.refusal(VALUES, 9).unwrap().contains("by uid 1003"));
     // A release with restore goes back to the value from before the first force.
-    let every = Release {
-        id: 2,
-        restore: true,
-        all: true,
-        values: Vec::new(),
-    };
-    forces.release(&mut gm, &every, 1000, 4).unwrap();
+    forces.release(&mut gm, &every_restored(), 1000, 4).unwrap();
     assert!(gm.values.iter().all(|&v| v == 0));
 }
 
@@ -204,13 +208,7 @@ fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
     let (events, dropped) = log.take_events();
     assert_eq!((values(&events), dropped), (MAX_WRITES, 0));
     // Released with restore, each value goes back to 0, from before the first force.
-    let every = Release {
-        id: 2,
-        restore: true,
-        all: true,
-        values: Vec::new(),
-    };
-    forces.release(&mut gm, &every, 1000, 7).unwrap();
+    forces.release(&mut gm, &every_restored(), 1000, 7).unwrap();
     assert!(gm.values.iter().all(|&v| v == 0));
     let (events, dropped) = log.take_events();
     assert_eq!((events.len(), values(&events), dropped), (1, 256, 0));
