@@ -5,6 +5,7 @@
 //! shown; and when the channel is full the cycle counts the events it could not send, which
 //! the log then reports. Nothing is lost without a line that says so.
 
+use super::spent::{Spent, SpentTx};
 use crate::calendar::utc_text;
 use crate::log_limit::{LINES, WINDOW, Window};
 use crate::naming::{path_of, shown_in_log};
@@ -13,7 +14,7 @@ use plc_core::{Value, VarInfo};
 use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering::Relaxed};
-use std::sync::mpsc::{Receiver, SyncSender, TryRecvError};
+use std::sync::mpsc::{Receiver, SyncSender, TryRecvError, TrySendError};
 use std::time::Instant;
 
 /// Uids whose windows are kept at once: more (thousands of users forcing) and the oldest
@@ -108,11 +109,14 @@ pub(crate) struct ForceLog {
     waiting: Arc<AtomicU64>,
     capacity: u64,
     dropped: Arc<AtomicU64>,
+    /// Where the values of a request the log could not take go to be freed.
+    spent: SpentTx,
 }
 
 impl ForceLog {
-    /// A log that holds at most `capacity` values waiting.
-    pub fn channel(capacity: usize) -> (ForceLog, ForceLogReader) {
+    /// A log that holds at most `capacity` values waiting; what it cannot take goes to
+    /// `spent`.
+    pub fn channel(capacity: usize, spent: SpentTx) -> (ForceLog, ForceLogReader) {
         let (tx, rx) = std::sync::mpsc::sync_channel(capacity);
         let dropped = Arc::new(AtomicU64::new(0));
         let waiting = Arc::new(AtomicU64::new(0));
@@ -127,6 +131,7 @@ impl ForceLog {
             waiting,
             dropped,
             capacity: capacity as u64,
+            spent,
         };
         (log, reader)
     }
@@ -139,12 +144,28 @@ impl ForceLog {
         // Only this thread adds: the reader only takes away, so the check holds.
         if self.waiting.load(Relaxed) + n > self.capacity {
             self.dropped.fetch_add(n, Relaxed);
+            self.left_unlogged(event);
             return;
         }
         self.waiting.fetch_add(n, Relaxed);
-        if self.tx.try_send(event).is_err() {
+        if let Err(TrySendError::Full(event) | TrySendError::Disconnected(event)) =
+            self.tx.try_send(event)
+        {
             self.waiting.fetch_sub(n, Relaxed);
             self.dropped.fetch_add(n, Relaxed);
+            self.left_unlogged(event);
+        }
+    }
+
+    /// Hands the values of a request that was not forced to be freed off the cycle thread.
+    pub fn leave(&self, writes: Vec<Checked>) {
+        self.spent.leave(Spent::Values(writes));
+    }
+
+    /// An event counted but not logged: its values are freed off the cycle thread.
+    fn left_unlogged(&self, event: ForceEvent) {
+        if let ForceEvent::Forced { writes, .. } = event {
+            self.leave(writes);
         }
     }
 }
@@ -275,7 +296,7 @@ mod tests {
 
     #[test]
     fn a_full_channel_counts_what_it_dropped_and_the_log_says_so() {
-        let (log, mut reader) = ForceLog::channel(4);
+        let (log, mut reader) = ForceLog::channel(4, SpentTx::channel(1).0);
         for leaf in 0..10 {
             log.send(forced(7, leaf));
         }
@@ -296,7 +317,7 @@ mod tests {
 
     #[test]
     fn a_flood_is_shown_at_a_bounded_rate_and_the_rest_counted_per_uid() {
-        let (log, mut reader) = ForceLog::channel(100);
+        let (log, mut reader) = ForceLog::channel(100, SpentTx::channel(1).0);
         for leaf in 0..30 {
             log.send(forced(7, leaf));
         }

@@ -114,13 +114,34 @@ impl<T: GlobalMemory> ForceTable<T> {
         path_of(self.vars, index, leaf)
     }
 
-    /// Forces `writes` (checked by [`plc_core::write::check_force`]) for `uid`, all or none: each is set
-    /// in `gm` now, and held from then on; a value forced already takes the new value and
-    /// keeps the one from before its first force.
+    /// Forces `writes` (checked by [`plc_core::write::check_force`]) for `uid`, all or none:
+    /// each is set in `gm` now, and held from then on; a value forced already takes the new
+    /// value and keeps the one from before its first force. The request's values go to the
+    /// log if forced, to be freed off the cycle thread if not.
     pub fn force(
         &mut self,
         gm: &mut T,
         writes: Vec<Checked>,
+        uid: u32,
+        now_utc_ns: u64,
+    ) -> Result<(), Refused> {
+        let done = self.force_all(gm, &writes, uid, now_utc_ns);
+        match done {
+            Ok(()) => self.log.send(ForceEvent::Forced {
+                uid,
+                writes,
+                at_utc_ns: now_utc_ns,
+            }),
+            Err(_) => self.log.leave(writes),
+        }
+        done
+    }
+
+    /// [`force`](Self::force) but for the log.
+    fn force_all(
+        &mut self,
+        gm: &mut T,
+        writes: &[Checked],
         uid: u32,
         now_utc_ns: u64,
     ) -> Result<(), Refused> {
@@ -220,11 +241,6 @@ impl<T: GlobalMemory> ForceTable<T> {
         if changed {
             self.rebuild();
         }
-        self.log.send(ForceEvent::Forced {
-            uid,
-            writes,
-            at_utc_ns: now_utc_ns,
-        });
         Ok(())
     }
 

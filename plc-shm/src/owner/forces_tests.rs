@@ -1,9 +1,11 @@
 //! The force table's tests: forces, re-forces, releases and what the log is sent.
 
 use super::super::force_log::{Ended, ForceLogReader};
+use super::super::spent::{Spent, SpentTx};
 use super::*;
 use crate::limits::{FORCE_LOG_LINES, MAX_WRITES};
 use plc_core::write::{Write, check_force};
+use std::sync::mpsc::Receiver;
 
 #[derive(plc_core::GlobalMemory, Debug, Clone)]
 struct Gm {
@@ -15,8 +17,15 @@ const SPEED: usize = 0;
 const VALUES: usize = 1;
 
 fn table() -> (ForceTable<Gm>, ForceLogReader) {
-    let (log, reader) = ForceLog::channel(FORCE_LOG_LINES);
-    (ForceTable::new(Gm::VARIABLES, log), reader)
+    let (table, reader, _) = table_and_spent();
+    (table, reader)
+}
+
+/// A table and what its log could not take, to be freed off the cycle thread.
+fn table_and_spent() -> (ForceTable<Gm>, ForceLogReader, Receiver<Spent>) {
+    let (spent, freed) = SpentTx::channel(1);
+    let (log, reader) = ForceLog::channel(FORCE_LOG_LINES, spent);
+    (ForceTable::new(Gm::VARIABLES, log), reader, freed)
 }
 
 fn forced(index: usize, leaf: usize, v: i64) -> Checked {
@@ -168,7 +177,7 @@ fn a_release_of_a_value_not_forced_is_refused_naming_it_and_ends_nothing() {
 
 #[test]
 fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
-    let (mut forces, mut log) = table();
+    let (mut forces, mut log, freed) = table_and_spent();
     let mut gm = Gm::default();
     // 257 copies of one value are one force: not above the limit.
     let copies = vec![forced(VALUES, 0, 1); 257];
@@ -194,6 +203,14 @@ fn a_flood_of_re_forces_sends_plain_events_and_counts_what_did_not_fit() {
     let (events, dropped) = log.take_events();
     assert_eq!(values(&events), 512);
     assert_eq!(dropped as usize, MAX_WRITES);
+    // The request the log could not take is freed off the cycle thread.
+    let left: Vec<usize> = (freed.try_iter())
+        .map(|s| match s {
+            Spent::Values(v) => v.len(),
+            Spent::Ring(_) => 0,
+        })
+        .collect();
+    assert_eq!(left, [MAX_WRITES]);
     const { assert!(256 + MAX_WRITES > FORCE_LOG_LINES && 512 <= FORCE_LOG_LINES) };
     assert_eq!(
         events.last(),

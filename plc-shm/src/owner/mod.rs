@@ -14,8 +14,10 @@ mod refused;
 mod requests;
 mod segment;
 mod server;
+mod spent;
 
 pub use requests::Rejection;
+use spent::SpentTx;
 
 use crate::error::ShmError;
 use crate::format::cycle_stats::CycleStats;
@@ -86,8 +88,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let counters = Arc::new(Counters::default());
         counters.publish(&base, &off);
         let (queue, rx) = std::sync::mpsc::sync_channel(MAX_QUEUED);
-        let (log, log_rx) = ForceLog::channel(FORCE_LOG_LINES);
-        let (retired, retired_rx) = std::sync::mpsc::sync_channel(2 * MAX_TRACES);
+        let (spent, spent_rx) = SpentTx::channel(MAX_TRACES);
+        let (log, log_rx) = ForceLog::channel(FORCE_LOG_LINES, spent.clone());
         // Last: tools connect only to a complete segment.
         seg.serve(Setup {
             name: name.clone(),
@@ -97,7 +99,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
             counters: counters.clone(),
             queue,
             log: log_rx,
-            retired: retired_rx,
+            spent: spent_rx,
         })?;
         Ok(ShmOwner {
             seg,
@@ -111,7 +113,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
                 unpublished: Default::default(),
                 forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
                 recordings: Default::default(),
-                retired,
+                spent,
                 held_over: RefCell::new(None),
             },
             seq: Cell::new(0),

@@ -12,7 +12,6 @@ use plc_core::{IecType, VarInfo};
 use std::os::fd::OwnedFd;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering, fence};
-use std::sync::mpsc::SyncSender;
 
 /// A trace as the owner's cycle writes it.
 pub(crate) struct Recording {
@@ -121,24 +120,6 @@ impl Recording {
     }
 }
 
-/// Takes the traces whose tools left out of `recordings` and hands them to the server's thread
-/// through `retired` to be freed: unmapping a ring of 64 columns costs milliseconds, which the
-/// cycle must not spend. Only if that thread cannot take one (it holds twice [`MAX_TRACES`],
-/// more than can exist) is it freed here.
-///
-/// [`MAX_TRACES`]: crate::limits::MAX_TRACES
-pub(crate) fn retire_departed(recordings: &mut Vec<Recording>, retired: &SyncSender<Recording>) {
-    let mut k = 0;
-    while k < recordings.len() {
-        if recordings[k].left.load(Ordering::Relaxed) {
-            // The order of the traces does not matter: each writes its own ring.
-            let _ = retired.try_send(recordings.swap_remove(k));
-        } else {
-            k += 1;
-        }
-    }
-}
-
 /// Where a column's value is in the image.
 #[derive(Clone, Copy, Debug)]
 struct Slot {
@@ -183,34 +164,6 @@ impl Slot {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_cycle_hands_a_departed_tools_trace_to_the_server_instead_of_freeing_it() {
-        let ring = || {
-            Recording::create("retire-test", &[], &[], 1, 1_000_000)
-                .unwrap()
-                .0
-        };
-        let mut recordings = vec![ring(), ring(), ring()];
-        recordings[0].left.store(true, Ordering::Relaxed);
-        recordings[2].left.store(true, Ordering::Relaxed);
-        let kept = Arc::as_ptr(&recordings[1].left);
-        let (retired, server) = std::sync::mpsc::sync_channel(8);
-        retire_departed(&mut recordings, &retired);
-        assert_eq!(recordings.len(), 1);
-        assert_eq!(
-            Arc::as_ptr(&recordings[0].left),
-            kept,
-            "the running trace stays"
-        );
-        let handed: Vec<Recording> = server.try_iter().collect();
-        assert_eq!(
-            handed.len(),
-            2,
-            "both departed rings reach the server, still mapped"
-        );
-        assert!(handed.iter().all(|r| r.left.load(Ordering::Relaxed)));
-    }
 
     #[test]
     fn a_column_reads_its_own_bytes_only_wherever_it_is() {

@@ -8,8 +8,9 @@
 //! earlier writes if `set` refuses a later one.
 
 use super::forces::ForceTable;
-use super::recording::{Recording, retire_departed};
+use super::recording::Recording;
 use super::refused::Refused;
+use super::spent::{Spent, SpentTx, retire_departed};
 use crate::format::layout::{Offsets, S_WRITES_APPLIED, S_WRITES_REJECTED};
 use crate::limits::{PER_CYCLE, PER_CYCLE_WRITES};
 use crate::protocol::{self, Code, Reply};
@@ -22,7 +23,7 @@ use std::cell::RefCell;
 use std::fmt;
 use std::os::fd::{AsRawFd, OwnedFd};
 use std::sync::atomic::{AtomicU64, AtomicUsize, Ordering::Relaxed};
-use std::sync::mpsc::{Receiver, SyncSender, TryRecvError};
+use std::sync::mpsc::{Receiver, TryRecvError};
 use std::sync::{Arc, Mutex};
 
 /// Why the owner refused a write that reached it.
@@ -213,11 +214,11 @@ impl Kind {
 
 /// A value forced or released costs the cycle this many writes of one value. Measured
 /// (`plc-bench --only flood`: four tools flooding a 1,000-variable program at 1 ms with
-/// requests of 1,024 values, a release build): a forced value costs the cycle about twice
-/// what a written one does (208 ns against 100 ns, the request's bytes read from another
-/// core's cache included), and a force request needs a cycle of its own where four write
-/// requests share one; counted as three, a flood of forces overran no more than one of writes
-/// (0 against 9 overruns in 5 s).
+/// requests of 1,024 values, a release build): a forced value costs the cycle two to three
+/// times what a written one does (125 ns against 48 ns, the request's bytes read from another
+/// core's cache included; most of the rest is capturing the value's place), so a force
+/// request takes a cycle of its own where four write requests share one; counted as three, a
+/// flood of forces overran no more than one of writes (3 against 5 overruns in 5 s).
 const FORCE_COST: u64 = 3;
 /// A force or release request costs this many writes more: the rebuild of the bytes every
 /// held force writes, at most [`MAX_FORCES`](crate::limits::MAX_FORCES) of them.
@@ -257,7 +258,7 @@ pub(crate) struct Inbox<T: GlobalMemory> {
     /// The traces being recorded.
     pub recordings: RefCell<Vec<Recording>>,
     /// Where the traces whose tools left go to be freed, off the cycle thread.
-    pub retired: SyncSender<Recording>,
+    pub spent: SpentTx,
     /// A request taken from the queue that did not fit the cycle's budget: the next cycle
     /// applies it first (it still counts as pending).
     pub held_over: RefCell<Option<Batch>>,
@@ -314,6 +315,7 @@ impl<T: GlobalMemory> Inbox<T> {
                     if done.is_ok() {
                         applied += writes.len();
                     }
+                    self.spent.leave(Spent::Values(writes));
                     done
                 }
                 Kind::Force(writes) => {
@@ -354,7 +356,7 @@ impl<T: GlobalMemory> Inbox<T> {
         if recordings.is_empty() {
             return;
         }
-        retire_departed(&mut recordings, &self.retired);
+        retire_departed(&mut recordings, &self.spent);
         for r in recordings.iter_mut() {
             r.record(image, cycle, time_ns);
         }

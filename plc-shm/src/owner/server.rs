@@ -18,6 +18,7 @@ use super::force_log::{ForceLogReader, Level};
 use super::policy::Policy;
 use super::recording::Recording;
 use super::requests::{self, Batch, Conn, Count, Counters, Kind};
+use super::spent::Spent;
 use crate::format::layout::{Offsets, S_PERIOD_NS};
 use crate::limits::{
     GREETING_GRACE, MAX_CONNECTIONS, MAX_OUTSTANDING, MAX_PER_UID, MAX_QUEUED, MAX_TRACES,
@@ -64,7 +65,7 @@ struct Shared {
     log: Mutex<ForceLogReader>,
     /// Traces whose tools left, freed here: unmapping a ring costs milliseconds the cycle
     /// thread must not spend.
-    retired: Mutex<Receiver<Recording>>,
+    spent: Mutex<Receiver<Spent>>,
     /// Refusals and closed connections, logged at a bounded rate.
     refusals: LogLimit,
 }
@@ -91,7 +92,7 @@ pub(crate) struct Setup {
     pub counters: Arc<Counters>,
     pub queue: SyncSender<Batch>,
     pub log: ForceLogReader,
-    pub retired: Receiver<Recording>,
+    pub spent: Receiver<Spent>,
 }
 
 impl Server {
@@ -116,7 +117,7 @@ impl Server {
             conns: Mutex::new(Registry::default()),
             traces: AtomicUsize::new(0),
             log: Mutex::new(setup.log),
-            retired: Mutex::new(setup.retired),
+            spent: Mutex::new(setup.spent),
             refusals: LogLimit::default(),
         });
         let listener = Arc::new(listener);
@@ -155,14 +156,15 @@ fn lock(m: &Mutex<Registry>) -> std::sync::MutexGuard<'_, Registry> {
     m.lock().unwrap_or_else(|p| p.into_inner())
 }
 
-/// Does what the cycle thread left to this one: writes the lines of its forces and releases
+/// Does what the cycle thread left to the server's threads (the accepting one, and each
+/// connection's after a request): writes the lines of its forces and releases
 /// (at a bounded rate; with `closing`, every count still held back too) and frees the traces
 /// whose tools left.
 fn write_log(shared: &Shared, closing: bool) {
-    if let Ok(retired) = shared.retired.try_lock() {
-        // At most MAX_TRACES exist at once, and the channel holds twice as many.
-        for ring in retired.try_iter() {
-            drop(ring);
+    if let Ok(spent) = shared.spent.try_lock() {
+        // Bounded: the channel is.
+        for freed in spent.try_iter() {
+            freed.free();
         }
     }
     let Ok(mut log) = shared.log.try_lock() else {
@@ -350,6 +352,10 @@ fn serve(shared: &Shared, conn: &Arc<Conn>, peer: &Peer) {
                 conn.answer(0, Code::Malformed, 0, format!("not a request: {e}"));
             }
         }
+        // The log as fast as requests come (a flood of forces would fill it between two
+        // polls of the accepting thread, and what does not fit is only counted): one lock
+        // tried and a look at an empty channel when there is nothing to write.
+        write_log(shared, false);
     }
     // The trace of a tool that left ends with it.
     if let Some(left) = session.trace.take() {
