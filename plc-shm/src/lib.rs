@@ -63,6 +63,7 @@ pub use env::RUNTIME_DIR_ENV;
 pub use error::{Cause, ShmError};
 pub use format::bus_clocks::BusClocks;
 pub use format::bus_state::BusState;
+pub use format::change;
 pub use format::cycle_stats::CycleStats;
 pub use format::descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use format::force_table::ForceInfo;

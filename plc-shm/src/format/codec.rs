@@ -27,21 +27,50 @@ impl VarDescriptor {
         let size = var.element_size();
         let start = var.offset + element * size;
         let bytes = image.get(start..start + size)?;
-        let mut w = [0u8; 8];
-        if var.iec_type != IecType::String {
-            w[..size.min(8)].copy_from_slice(&bytes[..size.min(8)]);
-        }
-        Some(match var.iec_type.family() {
-            TypeFamily::Bool => Value::Bool(bytes.iter().any(|&b| b != 0)),
-            TypeFamily::String => {
-                let end = bytes.iter().position(|&b| b == 0).unwrap_or(bytes.len());
-                let text = match std::str::from_utf8(&bytes[..end]) {
-                    Ok(s) => s,
-                    Err(e) => std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default(),
-                };
-                Value::Text(FixedString::from_str_truncate(text))
-            }
-            _ => Value::from_raw_bits(u64::from_le_bytes(w), var.iec_type, var.iec_type.bits()),
-        })
+        Some(decode(var.iec_type, bytes))
     }
+}
+
+/// The value of type `ty` that an element's `bytes` hold (all of its bytes: a STRING's
+/// capacity, a number's width).
+pub(crate) fn decode(ty: IecType, bytes: &[u8]) -> Value {
+    let size = bytes.len();
+    let mut w = [0u8; 8];
+    if ty != IecType::String {
+        w[..size.min(8)].copy_from_slice(&bytes[..size.min(8)]);
+    }
+    match ty.family() {
+        TypeFamily::Bool => Value::Bool(bytes.iter().any(|&b| b != 0)),
+        TypeFamily::String => {
+            let end = bytes.iter().position(|&b| b == 0).unwrap_or(bytes.len());
+            let text = match std::str::from_utf8(&bytes[..end]) {
+                Ok(s) => s,
+                Err(e) => std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default(),
+            };
+            Value::Text(FixedString::from_str_truncate(text))
+        }
+        _ => Value::from_raw_bits(u64::from_le_bytes(w), ty, ty.bits()),
+    }
+}
+
+/// Writes `value`, already fitted to type `ty` (see [`Value::fit`]), as an element's `bytes`:
+/// the inverse of [`decode`]. A STRING is its text zero padded; `false` if the text does not
+/// fit the bytes, and then nothing is written.
+pub(crate) fn encode(ty: IecType, value: &Value, bytes: &mut [u8]) -> bool {
+    match (ty.family(), value) {
+        (TypeFamily::String, Value::Text(t)) => {
+            let text = t.as_str().as_bytes();
+            if text.len() > bytes.len() {
+                return false;
+            }
+            bytes.fill(0);
+            bytes[..text.len()].copy_from_slice(text);
+        }
+        _ => {
+            let raw = value.to_raw_bits(ty).to_le_bytes();
+            let n = bytes.len().min(8);
+            bytes[..n].copy_from_slice(&raw[..n]);
+        }
+    }
+    true
 }

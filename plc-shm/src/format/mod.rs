@@ -5,6 +5,7 @@
 pub mod bus_clocks;
 pub mod bus_state;
 pub mod bytes;
+pub mod change;
 pub mod codec;
 pub mod cycle_stats;
 pub mod descriptor;
