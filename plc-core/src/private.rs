@@ -5,6 +5,10 @@ pub use core;
 pub use plc_rules;
 pub use zerocopy;
 
+pub use crate::alarm::table::{
+    Part as AlarmPart, count as alarm_count, flatten as alarm_flatten, stride as alarm_stride,
+};
+pub use crate::alarm::{AlarmDecl, AlarmKind, Condition, Limits, SuppressWhen};
 pub use crate::global_memory::{hash_range, layout_hash};
 pub use crate::image_bytes::{
     field_at, field_at_mut, image_size, offsets, repr_at, repr_at_mut, run_steps,

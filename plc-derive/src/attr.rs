@@ -81,6 +81,9 @@ pub struct FieldAttr {
     pub iec_type: Option<SpannedValue<String>>,
     pub ux: Switch,
     pub quantity: Option<SpannedValue<String>>,
+    pub alarm: Option<crate::alarm::AlarmAttr>,
+    /// `alarm_when = false` beside `alarm = "..."`: an active-low bool.
+    pub alarm_when: Option<SpannedValue<bool>>,
 }
 
 /// `initial = <literal>` kept as the expression written (darling would parse a string's
