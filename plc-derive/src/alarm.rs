@@ -199,12 +199,15 @@ fn integer(expr: &Expr) -> darling::Result<At<i64>> {
 }
 
 fn number(expr: &Expr, key: &str) -> darling::Result<At<f64>> {
-    let bad = || wrong(expr, format!("`{key}` takes a number, such as `80.0` or `-5`"));
+    let bad = || {
+        wrong(
+            expr,
+            format!("`{key}` takes a number, such as `80.0` or `-5`"),
+        )
+    };
     let (negative, v) = match literal(expr) {
         Some((negative, Lit::Int(i))) => (negative, i.base10_parse::<f64>().map_err(|_| bad())?),
-        Some((negative, Lit::Float(f))) => {
-            (negative, f.base10_parse::<f64>().map_err(|_| bad())?)
-        }
+        Some((negative, Lit::Float(f))) => (negative, f.base10_parse::<f64>().map_err(|_| bad())?),
         _ => return Err(bad()),
     };
     if !v.is_finite() {

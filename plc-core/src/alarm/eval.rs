@@ -333,7 +333,11 @@ impl Alarms {
         }
         s.since = now_ns;
         s.deadline = i64::MIN;
-        Ok(event(alarm, now_ns, EventKind::Unshelved { expired: false }))
+        Ok(event(
+            alarm,
+            now_ns,
+            EventKind::Unshelved { expired: false },
+        ))
     }
 }
 
@@ -388,20 +392,18 @@ fn step(
         return;
     }
     s.deadline = NEVER;
-    let same_side = |a: Level, b: Level| {
-        matches!(
-            (a, b),
-            (Level::High | Level::HighHigh, Level::High | Level::HighHigh)
-                | (Level::Low | Level::LowLow, Level::Low | Level::LowLow)
-                | (Level::Active, Level::Active)
-        )
-    };
+    if raw != Level::Normal && s.level != Level::Normal && side(raw) != side(s.level) && !s.held {
+        // Swung past normal to the other side: the old level's condition is gone now, while
+        // the new one waits for its delay like any raise.
+        apply(i, s, cfg, Level::Normal, now, events);
+    }
     // A latched alarm holding at a level counts as there for escalation.
     let at = s.level;
-    let escalates = raw != Level::Normal && (raw.rank() > at.rank() || !same_side(raw, at));
+    let escalates = raw != Level::Normal && (raw.rank() > at.rank() || side(raw) != side(at));
     if !escalates {
         s.pending = Level::Normal;
-        if raw != at && !(s.held && raw == Level::Normal) {
+        // A holding latched alarm whose condition is back stops holding, at any level.
+        if (raw != at && !(s.held && raw == Level::Normal)) || (s.held && raw != Level::Normal) {
             apply(i, s, cfg, raw, now, events);
         }
         return;
@@ -413,16 +415,18 @@ fn step(
     let due = s.pending_since.saturating_add(cfg.delay_ns);
     if now >= due {
         s.pending = Level::Normal;
-        if at != Level::Normal && !same_side(raw, at) {
-            // Swung past normal to the other side within one delay: the old level clears
-            // first, so each side has its own raise.
-            apply(i, s, cfg, Level::Normal, now, events);
-            s.held = false;
-            s.level = Level::Normal;
-        }
         apply(i, s, cfg, raw, now, events);
     } else {
         s.deadline = due;
+    }
+}
+
+/// Which side of normal a level is on: -1 below, 1 above, 0 for normal and bools.
+fn side(l: Level) -> i8 {
+    match l {
+        Level::Low | Level::LowLow => -1,
+        Level::High | Level::HighHigh => 1,
+        Level::Normal | Level::Active => 0,
     }
 }
 
@@ -454,7 +458,8 @@ fn apply(i: usize, s: &mut Slot, cfg: &Cfg, to: Level, now: i64, events: &mut Ve
         s.acked = false;
         events.push(event(i, now, EventKind::Raised { level: to }));
     } else {
-        if to.rank() > from.rank() {
+        // More urgent, or swung past normal to the other side: a new condition to see.
+        if to.rank() > from.rank() || side(from) != side(to) {
             s.acked = false;
         }
         events.push(event(i, now, EventKind::LevelChanged { from, to }));

@@ -41,9 +41,7 @@ pub fn alarm_paths(vars: &[VarInfo], decls: &[AlarmDecl]) -> Vec<String> {
         .map(|d| {
             basics
                 .iter()
-                .find(|(i, first, n, _, _)| {
-                    *i == d.index && (*first..first + n).contains(&d.leaf)
-                })
+                .find(|(i, first, n, _, _)| *i == d.index && (*first..first + n).contains(&d.leaf))
                 .map_or_else(
                     || std::format!("#{}.{}", d.index, d.leaf),
                     |(_, first, _, p, dims)| {

@@ -172,7 +172,9 @@ impl fmt::Display for ActionError {
                 "the alarm is still active: a latched alarm is reset once its condition has \
                  cleared",
             ),
-            ActionError::NotHeld => f.write_str("the latched alarm is not holding: nothing to reset"),
+            ActionError::NotHeld => {
+                f.write_str("the latched alarm is not holding: nothing to reset")
+            }
             ActionError::ShelveDuration { max } => {
                 write!(f, "an alarm is shelved for more than 0 and at most {max}")
             }
