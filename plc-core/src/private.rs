@@ -267,6 +267,8 @@ pub struct TypeFacts {
     /// A structure or an array of structures: none of the basic types' predicates hold.
     structured: bool,
     depth: usize,
+    leaves: usize,
+    alarms: &'static [crate::alarm::AlarmDecl],
 }
 
 /// The facts of field type `T`.
@@ -279,10 +281,35 @@ pub const fn facts<T: PlcType>() -> TypeFacts {
         repr_size: core::mem::size_of::<T::Repr>(),
         structured: T::TYPE_NAME.is_some(),
         depth: T::DEPTH,
+        leaves: T::LEAVES,
+        alarms: T::ALARMS,
     }
 }
 
 impl TypeFacts {
+    /// Leaves of the type (see `PlcType::LEAVES`).
+    pub const fn leaves(self) -> usize {
+        self.leaves
+    }
+
+    /// Elements of the type (1 for a scalar or structure).
+    pub const fn elements(self) -> usize {
+        self.elements
+    }
+
+    /// The alarm table's part of a field of this type that declares no alarm itself: its
+    /// structure's alarms, once per element (none for a basic type).
+    pub const fn alarm_part(self, index: usize, base: usize) -> crate::alarm::table::Part {
+        crate::alarm::table::Part {
+            index,
+            base,
+            table: self.alarms,
+            elements: self.elements,
+            stride: crate::alarm::table::stride(self.leaves, self.elements),
+            nested: true,
+        }
+    }
+
     /// Bytes of the type's stored form in the image.
     pub const fn repr_size(self) -> usize {
         self.repr_size

@@ -106,6 +106,9 @@ fn from_list<'a>(
             continue;
         };
         let value = &nv.value;
+        // The whole of `-0.5` as written, not syn's literal spanned by the `-` alone.
+        let written = crate::attr::value_in(list.tokens.clone(), &key)
+            .map_or_else(|| loc(value), Loc::Tokens);
         let read = match key.as_str() {
             "text" => string(value, "text").map(|t| text = Some(t)),
             "delay" => string(value, "delay").map(|d| alarm.delay = Some(d)),
@@ -113,11 +116,11 @@ fn from_list<'a>(
                 string(value, "suppress_when").map(|s| alarm.suppress_when = Some(s))
             }
             "alarm_when" => boolean(value).map(|w| alarm.when = Some(w)),
-            "severity" => integer(value).map(|s| alarm.severity = Some(s)),
-            "deadband" => number(value, "deadband").map(|d| alarm.deadband = Some(d)),
+            "severity" => integer(value, written).map(|s| alarm.severity = Some(s)),
+            "deadband" => number(value, written, "deadband").map(|d| alarm.deadband = Some(d)),
             limit => {
                 let i = LIMIT_KEYS.iter().position(|k| *k == limit).unwrap_or(0);
-                number(value, limit).map(|n| alarm.limits[i] = Some(n))
+                number(value, written, limit).map(|n| alarm.limits[i] = Some(n))
             }
         };
         errors.handle(read);
@@ -181,7 +184,7 @@ fn boolean(expr: &Expr) -> darling::Result<At<bool>> {
     }
 }
 
-fn integer(expr: &Expr) -> darling::Result<At<i64>> {
+fn integer(expr: &Expr, written: Loc) -> darling::Result<At<i64>> {
     let bad = || {
         wrong(
             expr,
@@ -192,13 +195,13 @@ fn integer(expr: &Expr) -> darling::Result<At<i64>> {
         Some((negative, Lit::Int(i))) => {
             // Beyond i64 is out of range all the same: the checker says which range.
             let n = i.base10_parse::<i64>().unwrap_or(i64::MAX);
-            Ok(At::new(if negative { -n } else { n }, loc(expr)))
+            Ok(At::new(if negative { -n } else { n }, written))
         }
         _ => Err(bad()),
     }
 }
 
-fn number(expr: &Expr, key: &str) -> darling::Result<At<f64>> {
+fn number(expr: &Expr, written: Loc, key: &str) -> darling::Result<At<f64>> {
     let bad = || {
         wrong(
             expr,
@@ -213,5 +216,5 @@ fn number(expr: &Expr, key: &str) -> darling::Result<At<f64>> {
     if !v.is_finite() {
         return Err(bad());
     }
-    Ok(At::new(if negative { -v } else { v }, loc(expr)))
+    Ok(At::new(if negative { -v } else { v }, written))
 }

@@ -2,17 +2,17 @@
 //! part: its own alarm (once per element of an array of bools), or, for a field whose type
 //! only the compiler knows (a structure, an array of them), that type's table once per
 //! element; `plc_core`'s `alarm_flatten` moves each copy to its instance's leaves. The
-//! table's length is a `const` of its own, which a `const` item of the block can use and an
-//! associated one cannot.
+//! table's length is a `const` of the derive's block: an associated `const` could not name
+//! it in a type.
 
 use super::private;
 use crate::ast::{Container, Kind};
 use crate::types::SynType;
 use plc_rules::decl::{self, Alarm, DEFAULT_SEVERITY, parse_delay};
 use proc_macro2::{Literal, TokenStream};
-use quote::quote;
+use quote::{quote, quote_spanned};
 
-/// The `const` items of the table (in the derive's `const _` block) and the associated
+/// The `const` items of the table (for the derive's `const _` block) and the associated
 /// `const ALARMS` (for the `GlobalMemory` or `PlcType` impl); nothing if no field can have
 /// alarms, so the trait's default (none) stands.
 pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
@@ -22,8 +22,8 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
         .fields()
         .enumerate()
         .filter_map(|(i, (v, m))| {
-            let ty = v.ty;
             let base = leaf_base(c, i);
+            let facts = facts(c, i);
             if let Some(a) = &m.alarm {
                 let template = template(c, a);
                 return Some(quote! {
@@ -31,27 +31,13 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
                         index: #i,
                         base: #base,
                         table: &[#template],
-                        elements: <#ty as #p::PlcType>::ELEMENTS,
+                        elements: #facts.elements(),
                         stride: 1,
                         nested: false,
                     }
                 });
             }
-            (v.syn_type == SynType::Unknown).then(|| {
-                quote! {
-                    #p::AlarmPart {
-                        index: #i,
-                        base: #base,
-                        table: <#ty as #p::PlcType>::ALARMS,
-                        elements: <#ty as #p::PlcType>::ELEMENTS,
-                        stride: #p::alarm_stride(
-                            <#ty as #p::PlcType>::LEAVES,
-                            <#ty as #p::PlcType>::ELEMENTS,
-                        ),
-                        nested: true,
-                    }
-                }
-            })
+            (v.syn_type == SynType::Unknown).then(|| quote!(#facts.alarm_part(#i, #base)))
         })
         .collect();
     if parts.is_empty() {
@@ -68,15 +54,22 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
     (items, assoc)
 }
 
+/// `facts::<T>()` of field `i`'s type, spanned at the type: if the type is no PLC type, the
+/// error is the one its assertion gives (`asserts`), which the compiler reports once.
+fn facts(c: &Container, i: usize) -> TokenStream {
+    let p = private(c);
+    let ty = c.vars[i].ty;
+    quote_spanned!(c.vars[i].ty_span()=> #p::facts::<#ty>())
+}
+
 /// Member `i`'s first leaf in a structure (each member before it has its type's leaves); 0 for
 /// a program's variable, whose leaves are its own.
 fn leaf_base(c: &Container, i: usize) -> TokenStream {
     if c.kind == Kind::GlobalMemory {
         return quote!(0);
     }
-    let p = private(c);
-    let before = c.vars[..i].iter().map(|v| v.ty);
-    quote!(0 #(+ <#before as #p::PlcType>::LEAVES)*)
+    let before = (0..i).map(|j| facts(c, j));
+    quote!(0 #(+ #before.leaves())*)
 }
 
 /// A number as a literal of type `f64`, a negative one written with its `-`.

@@ -70,14 +70,22 @@ pub enum DelayError {
     Negative,
 }
 
+/// What a delay looks like: the duration grammar's own advice names the `T#` prefix, which a
+/// delay may leave out.
+const FORM: &str = "a delay is a number and a unit (d, h, m, s, ms, us, ns), such as \"2s\" or \
+                    \"1m_30s\" (an IEC 61131-3 duration; `T#` in front is optional)";
+
 impl core::fmt::Display for DelayError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             // The prefix is optional here, so the literal's own advice about it would mislead.
-            DelayError::Time(TimeError::NoPrefix) => f.write_str(
-                "a delay is a number and a unit (d, h, m, s, ms, us, ns), such as \"2s\" or \
-                 \"1m_30s\" (IEC 61131-3 duration, the `T#` prefix optional)",
-            ),
+            DelayError::Time(TimeError::NoPrefix | TimeError::Empty) => f.write_str(FORM),
+            DelayError::Time(TimeError::Unexpected { at }) => {
+                write!(f, "unexpected character at byte {at}: {FORM}")
+            }
+            DelayError::Time(TimeError::MissingUnit { at }) => {
+                write!(f, "the number ending at byte {at} has no unit: {FORM}")
+            }
             DelayError::Time(e) => core::fmt::Display::fmt(e, f),
             DelayError::Negative => f.write_str(
                 "a delay cannot be negative: it is how long the condition must hold before the \
@@ -105,9 +113,17 @@ pub fn parse_delay(text: &str) -> Result<Time, DelayError> {
     } else {
         Time::parse(&std::format!("T#{t}"))
     };
+    // Positions in the text as written, not in the literal with the `T#` added.
+    let shift = if t.contains('#') { 0 } else { 2 };
     match parsed {
         Ok(time) if time.is_negative() => Err(DelayError::Negative),
         Ok(time) => Ok(time),
+        Err(TimeError::Unexpected { at }) => Err(DelayError::Time(TimeError::Unexpected {
+            at: at.saturating_sub(shift),
+        })),
+        Err(TimeError::MissingUnit { at }) => Err(DelayError::Time(TimeError::MissingUnit {
+            at: at.saturating_sub(shift),
+        })),
         Err(e) => Err(DelayError::Time(e)),
     }
 }

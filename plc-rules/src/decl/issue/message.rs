@@ -228,20 +228,20 @@ impl<L> Issue<L> {
                  a limit before its level clears, 0 or more"
             ),
             IssueKind::AlarmOnType { ty, iec } => format!(
-                "an alarm cannot be declared on a {iec} ({ty}): an alarm is a bool that is \
-                 active, or a number with limits (see the repository's docs/alarms.md)"
+                "no alarm can be declared on {ty} ({iec}): an alarm watches a bool, or a number \
+                 against limits (see the repository's docs/alarms.md)"
             ),
             IssueKind::AlarmLimitOnBool { key } => format!(
                 "`{key}` is for alarms on numbers: a bool's alarm is active when it is true (or \
                  false, with `alarm_when = false`); remove `{key}`"
             ),
             IssueKind::AlarmWhenOnNumber { iec } => format!(
-                "`alarm_when` is for alarms on bools: a {iec}'s alarm is active beyond its \
-                 limits; remove `alarm_when`"
+                "`alarm_when` is for alarms on bools: an alarm on a number ({iec}) is active \
+                 beyond its limits; remove `alarm_when`"
             ),
             IssueKind::AlarmWithoutLimits { iec } => format!(
-                "an alarm on a {iec} needs limits: give `high`, `high_high`, `low` or \
-                 `low_low` (the value that raises it)"
+                "an alarm on a number ({iec}) needs limits: give `high`, `high_high`, `low` \
+                 or `low_low`, the values that raise it"
             ),
             IssueKind::AlarmLimitOrder {
                 key,
