@@ -19,7 +19,7 @@ pub use crate::plc_type::sealed::Sealed;
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;
 
-use crate::{Access, BitMapping, Direction, IecType, SetError, Value};
+use crate::{Access, BitMapping, Direction, IecType, SetError, TypeFamily, Value};
 
 /// The description of a variable of type `T` with every attribute at its default (no link,
 /// address, bit mapping, description, initial value or quantity; internal, read-write,
@@ -333,6 +333,23 @@ impl TypeFacts {
         self.rank <= plc_rules::capacity::MAX_ARRAY_DIMS
             && self.elements <= plc_rules::capacity::MAX_ARRAY_ITEMS
             && string_ok
+    }
+
+    /// Whether the elements are bools (a bool alarm's type).
+    pub const fn has_bool_elements(self) -> bool {
+        !self.structured && matches!(self.iec_type, IecType::Bool)
+    }
+
+    /// Whether the elements are numbers (a limit alarm's type).
+    pub const fn has_number_elements(self) -> bool {
+        !self.structured
+            && matches!(
+                self.iec_type.family(),
+                TypeFamily::SignedInt
+                    | TypeFamily::UnsignedInt
+                    | TypeFamily::Real
+                    | TypeFamily::BitString
+            )
     }
 
     /// Whether the type is a structure or an array of structures.

@@ -143,6 +143,28 @@ fn structure_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenS
             ),
         ));
     }
+    if let Some(alarm) = &m.alarm {
+        // The model's alarm rules need the type: for one only the compiler knows, these.
+        let (cond, message) = if alarm.has_limits() {
+            (
+                quote!(#facts.has_number_elements()),
+                format!(
+                    "`{name}` must be a number for an alarm with limits (an alarm watches a \
+                     bool, or a number against limits; a structure's alarms are declared on \
+                     its members)"
+                ),
+            )
+        } else {
+            (
+                quote!(#facts.has_bool_elements()),
+                format!(
+                    "`{name}` must be a bool (or an array of bools) for an alarm without \
+                     limits (a structure's alarms are declared on its members)"
+                ),
+            )
+        };
+        out.extend(assert(alarm.at.span(), cond, message));
+    }
     if let Some(span) = v.nonvolatile_at {
         out.extend(assert(
             span,
