@@ -52,6 +52,8 @@ mod csv_write;
 mod emit;
 #[cfg(feature = "export")]
 mod export;
+#[cfg(feature = "export")]
+mod export_alarms;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod parse;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]

@@ -146,3 +146,65 @@ fn csv_alarm_mistakes_name_the_line_and_the_column() {
     }
     assert_eq!(e.len(), expected.len(), "{e:#?}");
 }
+
+#[cfg(feature = "export")]
+#[test]
+fn a_compiled_types_alarms_export_as_json_and_csv_and_import_back() {
+    use plc_core::{GlobalMemory, PlcStruct};
+    use plc_io::import::{export_csv, export_json};
+
+    #[derive(PlcStruct, Debug, Clone)]
+    struct Station {
+        #[plc(alarm(text = "Door open", suppress_when = "off", latched))]
+        door: bool,
+        off: bool,
+    }
+    #[derive(GlobalMemory, Debug, Clone)]
+    struct Gm {
+        #[plc(alarm = "Guard door open")]
+        door: bool,
+        #[plc(alarm = "Air pressure low", alarm_when = false)]
+        air: bool,
+        #[plc(alarm(
+            text = "Oil",
+            high = 80,
+            deadband = 1.5,
+            delay = "1.5s",
+            severity = 600
+        ))]
+        oil: f32,
+        #[plc(alarm(text = "Jam", suppress_when = "door"))]
+        jam: [bool; 2],
+        stations: [Station; 2],
+    }
+    let json = export_json::<Gm>().unwrap();
+    let list: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(list["variables"]["door"]["alarm"], "Guard door open");
+    assert_eq!(list["variables"]["air"]["alarm"]["alarm_when"], false);
+    assert_eq!(list["variables"]["oil"]["alarm"]["delay"], "LTIME#1s500ms");
+    assert_eq!(list["variables"]["jam"]["alarm"]["suppress_when"], "door");
+    let door = &list["types"]["Station"]["variables"]["door"]["alarm"];
+    assert_eq!(
+        (&door["suppress_when"], &door["latched"]),
+        (&"off".into(), &true.into())
+    );
+    let o = Options::default();
+    let code = generate(&json, &o).unwrap().code;
+    let flat: String = code.split_whitespace().collect::<Vec<_>>().join(" ");
+    for attr in [
+        r#"alarm = "Guard door open""#,
+        r#"alarm(text = "Air pressure low", alarm_when = false)"#,
+        r#"alarm( text = "Oil", high = 80.0, deadband = 1.5, delay = "LTIME#1s500ms", severity = 600 )"#,
+        r#"alarm(text = "Jam", suppress_when = "door")"#,
+        r#"alarm(text = "Door open", latched, suppress_when = "off")"#,
+    ] {
+        assert!(flat.contains(attr), "{attr}\nin {flat}");
+    }
+    let csv = export_csv::<Gm>().unwrap();
+    assert!(csv.starts_with(&format!(
+        "{},{}",
+        COLUMNS.join(","),
+        ALARM_COLUMNS.join(",")
+    )));
+    assert_eq!(generate_csv(&csv, &o).unwrap().code, code);
+}
