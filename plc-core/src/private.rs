@@ -300,14 +300,7 @@ impl TypeFacts {
     /// The alarm table's part of a field of this type that declares no alarm itself: its
     /// structure's alarms, once per element (none for a basic type).
     pub const fn alarm_part(self, index: usize, base: usize) -> crate::alarm::table::Part {
-        crate::alarm::table::Part {
-            index,
-            base,
-            table: self.alarms,
-            elements: self.elements,
-            stride: crate::alarm::table::stride(self.leaves, self.elements),
-            nested: true,
-        }
+        crate::alarm::table::nested(self.alarms, self.leaves, self.elements, index, base)
     }
 
     /// Bytes of the type's stored form in the image.

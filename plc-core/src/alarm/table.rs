@@ -42,7 +42,29 @@ pub const fn count(parts: &[Part]) -> usize {
 
 /// Leaves of one element of a type of `leaves` leaves in `elements` elements.
 pub const fn stride(leaves: usize, elements: usize) -> usize {
-    if elements == 0 { 0 } else { leaves / elements }
+    match leaves.checked_div(elements) {
+        Some(n) => n,
+        None => 0,
+    }
+}
+
+/// The part of a field of a structure type (`leaves` and `elements` its type's): `table`,
+/// the structure's alarms, once per element.
+pub const fn nested(
+    table: &'static [AlarmDecl],
+    leaves: usize,
+    elements: usize,
+    index: usize,
+    base: usize,
+) -> Part {
+    Part {
+        index,
+        base,
+        table,
+        elements,
+        stride: stride(leaves, elements),
+        nested: true,
+    }
 }
 
 /// The table of `parts`, in order; `N` is [`count`] of them.

@@ -167,7 +167,7 @@ fn own<L: Clone>(v: &Var<L>, a: &Alarm<L>, issues: &mut Vec<Issue<L>>) {
         push(IssueKind::AlarmBadDelay { text, error }, &d.at);
     }
     if let Some(d) = &a.deadband
-        && !(d.value >= 0.0)
+        && (d.value < 0.0 || d.value.is_nan())
     {
         push(IssueKind::AlarmNegativeDeadband { value: d.value }, &d.at);
     }
