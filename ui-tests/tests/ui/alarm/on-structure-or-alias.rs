@@ -25,3 +25,15 @@ pub struct Gm {
 }
 
 fn main() {}
+
+type Mode = u8;
+
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Suppressed {
+    #[plc(alarm(text = "Door", suppress_when = "mode"))]
+    door: bool,
+    mode: Mode,
+    #[plc(alarm(text = "Fan", suppress_when = "off"))]
+    fan: bool,
+    off: Flag,
+}
