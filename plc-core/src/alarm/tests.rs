@@ -443,5 +443,45 @@ mod properties {
                 }
             }
         }
+
+        /// With operators acknowledging, shelving and unshelving at random: an action is
+        /// refused exactly when the state says it has nothing to act on, a shelved or
+        /// suppressed alarm asks nobody for anything, and a shelf never outlives its end.
+        #[test]
+        fn operator_actions_agree_with_the_state(
+            steps in proptest::collection::vec(
+                (-10.0f64..110.0, any::<bool>(), 0i64..3, 0u8..4), 1..200),
+            delay in 0i64..2,
+        ) {
+            let mut c = limits();
+            c.delay = Time::from_secs(delay);
+            let mut a = One::new(c);
+            for (value, suppressed, dt, action) in steps {
+                a.step_at(dt * S, value, suppressed);
+                let state = a.state();
+                if matches!(state, AlarmState::Shelved | AlarmState::SuppressedByDesign) {
+                    prop_assert!(!state.unacknowledged());
+                }
+                if let Some(shelf) = a.alarms.shelf(0) {
+                    prop_assert!(a.now < shelf.until_ns);
+                }
+                let now = a.now;
+                match action {
+                    1 => prop_assert_eq!(
+                        a.alarms.acknowledge(0, now).is_ok(),
+                        state.unacknowledged()
+                    ),
+                    2 => {
+                        a.alarms.shelve(0, now, Time::from_secs(2), "op").unwrap();
+                        prop_assert_eq!(a.alarms.unacknowledged(), 0);
+                    }
+                    3 => {
+                        let shelved = a.alarms.shelf(0).is_some();
+                        prop_assert_eq!(a.alarms.unshelve(0, now).is_ok(), shelved);
+                    }
+                    _ => {}
+                }
+            }
+        }
     }
 }
