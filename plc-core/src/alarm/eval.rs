@@ -9,7 +9,7 @@
 //! path. No allocation happens unless an event is pushed past the vector's capacity.
 
 use super::decl::{AlarmDecl, AlarmKind, Condition, Level};
-use super::state::{ActionError, AlarmEvent, AlarmState, EventKind, Shelf};
+use super::state::{ActionError, AlarmEvent, AlarmState, EventKind, Shelf, Snapshot};
 use crate::Time;
 use std::vec::Vec;
 
@@ -30,6 +30,21 @@ pub struct Sample {
 }
 
 impl Sample {
+    /// The sample of a value as `GlobalMemory::get` gives it: a bool as 0 or 1, a number as
+    /// itself; text or a duration (which no alarm watches) as not a number, which keeps the
+    /// level an alarm has.
+    pub fn from_value(value: &crate::Value, suppressed: bool) -> Sample {
+        use crate::Value;
+        let value = match *value {
+            Value::Bool(b) => f64::from(u8::from(b)),
+            Value::Int(i) => i as f64,
+            Value::UInt(u) => u as f64,
+            Value::Real(r) => r,
+            Value::Text(_) | Value::Time(_) => f64::NAN,
+        };
+        Sample { value, suppressed }
+    }
+
     /// A bool's sample.
     pub const fn bool(value: bool, suppressed: bool) -> Sample {
         Sample {
@@ -259,6 +274,36 @@ impl Alarms {
             .count()
     }
 
+    /// Alarm `alarm`'s state as [`restore`](Self::restore) takes it back.
+    pub fn snapshot(&self, alarm: usize) -> Snapshot {
+        let s = &self.slots[alarm];
+        Snapshot {
+            level: s.level,
+            acknowledged: s.acked,
+            held: s.held,
+            shelf: s.shelf.clone(),
+            since_ns: s.since,
+        }
+    }
+
+    /// Gives alarm `alarm` a state kept from before (a restart, an online change): an alarm
+    /// nobody acknowledged stays unacknowledged. Its condition is looked at again next cycle:
+    /// one that went meanwhile clears then, as it would have. A latched hold on an alarm
+    /// that is not latched (its declaration changed) is dropped.
+    pub fn restore(&mut self, alarm: usize, state: Snapshot) -> Result<(), ActionError> {
+        let (s, cfg) = self.slot(alarm)?;
+        s.level = state.level;
+        // The level is where the deadband counts from.
+        s.seen = state.level;
+        s.acked = state.acknowledged;
+        s.held = state.held && cfg.latched && state.level != Level::Normal;
+        s.pending = Level::Normal;
+        s.shelf = state.shelf;
+        s.since = state.since_ns;
+        s.deadline = i64::MIN;
+        Ok(())
+    }
+
     fn slot(&mut self, alarm: usize) -> Result<(&mut Slot, &Cfg), ActionError> {
         match (self.slots.get_mut(alarm), self.cfg.get(alarm)) {
             (Some(s), Some(c)) => Ok((s, c)),
@@ -299,7 +344,8 @@ impl Alarms {
     }
 
     /// `by` shelves alarm `alarm` for `duration` (more than 0, at most the longest shelf):
-    /// it is not shown, and comes back by itself when the shelf expires.
+    /// it is not shown, and comes back by itself when the shelf expires, as a new alarm if its
+    /// condition still holds (a latched one's hold is dropped with the rest of its state).
     pub fn shelve(
         &mut self,
         alarm: usize,

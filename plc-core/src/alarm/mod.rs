@@ -40,4 +40,4 @@ pub use eval::{Alarms, DEFAULT_MAX_SHELVE, Sample};
 #[cfg(feature = "std")]
 pub use names::{alarm_paths, resolve_suppress};
 #[cfg(feature = "std")]
-pub use state::{ActionError, AlarmEvent, AlarmState, EventKind, Shelf};
+pub use state::{ActionError, AlarmEvent, AlarmState, EventKind, Shelf, Snapshot};

@@ -135,6 +135,24 @@ pub struct Shelf {
     pub until_ns: i64,
 }
 
+/// What an alarm's state is made of, to keep it across a restart or an online change (the
+/// journal's part): [`Alarms::snapshot`](super::Alarms::snapshot) and
+/// [`Alarms::restore`](super::Alarms::restore). Suppression is not in it: it follows its bool
+/// from the first cycle.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Snapshot {
+    /// The level annunciated (`normal` while not active).
+    pub level: Level,
+    /// Whether nothing waits for an acknowledgement.
+    pub acknowledged: bool,
+    /// A latched alarm whose condition cleared, waiting for its reset.
+    pub held: bool,
+    /// Its shelf, while shelved.
+    pub shelf: Option<Shelf>,
+    /// When it last changed state, UTC nanoseconds.
+    pub since_ns: i64,
+}
+
 /// Why an operator's action was refused. Nothing changed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ActionError {

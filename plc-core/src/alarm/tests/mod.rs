@@ -1,4 +1,4 @@
-//! The evaluator's transitions, one test each, and a property over random values.
+//! The evaluator's transitions, one test each (the properties are in `properties`).
 
 use super::*;
 use crate::Time;
@@ -392,96 +392,59 @@ fn a_declaration_numbers_its_alarms_by_path() {
     assert!(resolve_suppress(Gm::VARIABLES, SuppressWhen::Path("nothing")).is_err());
 }
 
-mod properties {
-    use super::*;
-    use proptest::prelude::*;
-
-    proptest! {
-        /// Whatever the values, suppression and delays: every state is one of the diagram's,
-        /// a raise always comes before its clear, and an alarm is active only at a level its
-        /// value reached.
-        #[test]
-        fn any_values_keep_the_state_machine_consistent(
-            steps in proptest::collection::vec((-10.0f64..110.0, any::<bool>(), 0i64..3), 1..200),
-            delay in 0i64..3,
-            latched in any::<bool>(),
-        ) {
-            let mut c = limits();
-            c.delay = Time::from_secs(delay);
-            c.latched = latched;
-            let mut a = One::new(c);
-            let mut active = false;
-            for (value, suppressed, dt) in steps {
-                for k in a.step_at(dt * S, value, suppressed) {
-                    match k {
-                        EventKind::Raised { level } => {
-                            prop_assert!(!active);
-                            prop_assert!(level != Level::Normal);
-                            active = true;
-                        }
-                        EventKind::Cleared { .. } => {
-                            prop_assert!(active);
-                            active = false;
-                        }
-                        EventKind::Suppressed => active = false,
-                        EventKind::LevelChanged { from, to } => {
-                            prop_assert!(active && from != to);
-                        }
-                        EventKind::ConditionCleared { .. } => prop_assert!(latched && active),
-                        _ => {}
-                    }
-                }
-                if matches!(a.state(), AlarmState::Latched { .. }) {
-                    prop_assert!(latched);
-                    // A reset clears it; the next raise is a raise.
-                    a.alarms.reset(0, a.now).unwrap();
-                    active = false;
-                }
-                prop_assert_eq!(suppressed, a.state() == AlarmState::SuppressedByDesign);
-                if a.alarms.level(0) == Level::HighHigh {
-                    prop_assert!(value >= 94.0);
-                }
-            }
-        }
-
-        /// With operators acknowledging, shelving and unshelving at random: an action is
-        /// refused exactly when the state says it has nothing to act on, a shelved or
-        /// suppressed alarm asks nobody for anything, and a shelf never outlives its end.
-        #[test]
-        fn operator_actions_agree_with_the_state(
-            steps in proptest::collection::vec(
-                (-10.0f64..110.0, any::<bool>(), 0i64..3, 0u8..4), 1..200),
-            delay in 0i64..2,
-        ) {
-            let mut c = limits();
-            c.delay = Time::from_secs(delay);
-            let mut a = One::new(c);
-            for (value, suppressed, dt, action) in steps {
-                a.step_at(dt * S, value, suppressed);
-                let state = a.state();
-                if matches!(state, AlarmState::Shelved | AlarmState::SuppressedByDesign) {
-                    prop_assert!(!state.unacknowledged());
-                }
-                if let Some(shelf) = a.alarms.shelf(0) {
-                    prop_assert!(a.now < shelf.until_ns);
-                }
-                let now = a.now;
-                match action {
-                    1 => prop_assert_eq!(
-                        a.alarms.acknowledge(0, now).is_ok(),
-                        state.unacknowledged()
-                    ),
-                    2 => {
-                        a.alarms.shelve(0, now, Time::from_secs(2), "op").unwrap();
-                        prop_assert_eq!(a.alarms.unacknowledged(), 0);
-                    }
-                    3 => {
-                        let shelved = a.alarms.shelf(0).is_some();
-                        prop_assert_eq!(a.alarms.unshelve(0, now).is_ok(), shelved);
-                    }
-                    _ => {}
-                }
-            }
-        }
-    }
+#[test]
+fn a_restored_state_survives_a_restart_and_meets_the_condition_of_now() {
+    let mut before = One::new(limits());
+    before.step(85.0);
+    before.step(50.0);
+    let kept = before.alarms.snapshot(0);
+    assert_eq!(before.state(), AlarmState::ReturnedUnacknowledged);
+    let mut after = One::new(limits());
+    after.alarms.restore(0, kept.clone()).unwrap();
+    assert_eq!(
+        after.state(),
+        AlarmState::ReturnedUnacknowledged,
+        "still waiting"
+    );
+    assert_eq!(after.step(50.0), []);
+    assert_eq!(after.alarms.snapshot(0), kept);
+    // Active before the restart, normal after it: it clears on the first cycle.
+    before.step(99.0);
+    let mut after = One::new(limits());
+    after.alarms.restore(0, before.alarms.snapshot(0)).unwrap();
+    assert_eq!(after.state(), AlarmState::ActiveUnacknowledged);
+    assert_eq!(
+        after.step(50.0),
+        [EventKind::Cleared {
+            from: Level::HighHigh
+        }]
+    );
+    // Still active: nothing new, and the deadband counts from the kept level.
+    let mut again = One::new(limits());
+    again.alarms.restore(0, before.alarms.snapshot(0)).unwrap();
+    assert_eq!(again.step(94.5), []);
+    assert_eq!(again.alarms.level(0), Level::HighHigh);
+    assert_eq!(
+        again.alarms.restore(1, before.alarms.snapshot(0)),
+        Err(ActionError::Unknown { alarm: 1 })
+    );
 }
+
+#[test]
+fn a_sample_of_any_value_a_program_holds() {
+    use crate::Value;
+    assert_eq!(
+        Sample::from_value(&Value::Bool(true), false),
+        Sample::bool(true, false)
+    );
+    assert_eq!(Sample::from_value(&Value::Int(-3), true).value, -3.0);
+    assert_eq!(Sample::from_value(&Value::UInt(7), false).value, 7.0);
+    assert_eq!(Sample::from_value(&Value::Real(2.5), false).value, 2.5);
+    assert!(
+        Sample::from_value(&Value::Time(Time::from_secs(1)), false)
+            .value
+            .is_nan()
+    );
+}
+
+mod properties;
