@@ -473,6 +473,12 @@ const ROWS: &[Row] = &[
         kinds: &["AlarmSuppressUnknown", "AlarmSuppressNotBool"],
     },
     Row {
+        rule: "suppress_when naming an element of a bool array (fine), one beyond it, the whole array, and into a basic variable",
+        rust: "struct Gm { #[plc(alarm(text = \"A\", suppress_when = \"off[1]\"))] a: bool, #[plc(alarm(text = \"B\", suppress_when = \"off[2]\"))] b: bool, #[plc(alarm(text = \"C\", suppress_when = \"off\"))] c: bool, #[plc(alarm(text = \"D\", suppress_when = \"mode.x\"))] d: bool, off: [bool; 2], mode: bool }",
+        json: Some(r#""a": {"type": "bool", "alarm": {"text": "A", "suppress_when": "off[1]"}}, "b": {"type": "bool", "alarm": {"text": "B", "suppress_when": "off[2]"}}, "c": {"type": "bool", "alarm": {"text": "C", "suppress_when": "off"}}, "d": {"type": "bool", "alarm": {"text": "D", "suppress_when": "mode.x"}}, "off": {"type": "bool", "dims": [2]}, "mode": {"type": "bool"}"#),
+        kinds: &["AlarmSuppressUnknown", "AlarmSuppressNotBool", "AlarmSuppressNotBool"],
+    },
+    Row {
         rule: "alarms on a structure's members, suppressed by a member of the same structure; a path beyond the structure refused",
         rust: "#[derive(PlcStruct)] struct Station { #[plc(alarm(text = \"Door open\", suppress_when = \"out_of_service\"))] door: bool, out_of_service: bool, #[plc(alarm(text = \"Jam\", suppress_when = \"cell.off\"))] jam: bool }",
         json: Some(r#""door": {"type": "bool", "alarm": {"text": "Door open", "suppress_when": "out_of_service"}}, "out_of_service": {"type": "bool"}, "jam": {"type": "bool", "alarm": {"text": "Jam", "suppress_when": "cell.off"}}"#),

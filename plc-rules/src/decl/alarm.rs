@@ -227,9 +227,10 @@ fn limit_order<L: Clone>(a: &Alarm<L>, issues: &mut Vec<Issue<L>>) {
     }
 }
 
-/// `suppress_when` names a bool: a top-level variable (or, in a structure, a member of the
-/// same structure) by its name. A longer path (`stations[2].out_of_service`) is checked as far
-/// as its first name; the rest is resolved when the program starts.
+/// `suppress_when` names a bool: a top-level variable or an element of a bool array (in a
+/// structure, a member of the same structure) by its name. A path into a structure
+/// (`stations[2].out_of_service`) is checked as far as its first name; the rest is resolved
+/// when the program starts.
 fn suppress_target<L: Clone>(
     decl: &Decl<L>,
     by_name: &FnvMap<NoCase, usize>,
@@ -237,42 +238,58 @@ fn suppress_target<L: Clone>(
     issues: &mut Vec<Issue<L>>,
 ) {
     let path = s.value.trim();
-    let first = path
-        .split(['.', '['])
-        .next()
-        .map(str::trim)
-        .unwrap_or_default();
-    let deep = first.len() != path.len();
-    let Some(&t) = by_name.get(&NoCase(first)) else {
-        issues.push(Issue::new(
+    let unknown = |why| {
+        Issue::new(
             IssueKind::AlarmSuppressUnknown {
                 path: path.to_string(),
                 structure: decl.structure,
+                why,
             },
             s.at.clone(),
-        ));
+        )
+    };
+    let mut segments = crate::path::segments(path);
+    let first = match segments.next() {
+        Some(Ok(first)) => first,
+        Some(Err(e)) => return issues.push(unknown(Some(e))),
+        None => return issues.push(unknown(None)),
+    };
+    let Some(&t) = by_name.get(&NoCase(first.name)) else {
+        return issues.push(unknown(None));
+    };
+    let deeper = segments.next().is_some();
+    if decl.structure && (deeper || first.index.is_some()) {
+        // Each instance's alarm is suppressed by its own member: a sibling, by name.
+        return issues.push(unknown(None));
+    }
+    let DeclType::Known(k) = &decl.vars[t].ty.value else {
         return;
     };
-    if deep && decl.structure {
-        issues.push(Issue::new(
-            IssueKind::AlarmSuppressUnknown {
-                path: path.to_string(),
-                structure: true,
-            },
-            s.at.clone(),
-        ));
-        return;
-    }
-    let target = &decl.vars[t];
-    if let (false, DeclType::Known(k)) = (deep, &target.ty.value)
-        && !(k.is_scalar() && k.iec == IecType::Bool)
-    {
-        issues.push(Issue::new(
+    let not_bool = |past: Option<&str>| {
+        Issue::new(
             IssueKind::AlarmSuppressNotBool {
                 path: path.to_string(),
                 ty: k.rust_type(),
+                past: past.map(str::to_string),
             },
             s.at.clone(),
-        ));
+        )
+    };
+    // A basic variable: the whole path can be followed here.
+    if deeper {
+        return issues.push(not_bool(Some(first.name)));
+    }
+    if k.iec != IecType::Bool {
+        return issues.push(not_bool(None));
+    }
+    match first.index {
+        None if !k.is_scalar() => issues.push(not_bool(None)),
+        None => {}
+        Some(index) => {
+            let dims: Vec<usize> = k.dims.iter().map(|&d| d as usize).collect();
+            if let Err(e) = index.flat(&dims) {
+                issues.push(unknown(Some(e)));
+            }
+        }
     }
 }

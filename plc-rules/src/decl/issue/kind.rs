@@ -3,6 +3,7 @@
 
 use crate::address::{AddressError, IecAddress, Size};
 use crate::decl::DelayError;
+use crate::path::PathError;
 use crate::{Direction, IecType, LinkError, NameError, TimeError};
 use std::string::String;
 
@@ -336,12 +337,15 @@ issue_kinds! {
             /// That limit's value.
             below_value: f64,
         },
-        /// `suppress_when` naming no variable (in a structure: no member of it).
+        /// `suppress_when` naming no variable (in a structure: no member of it), or an element
+        /// of a bool array that is not there.
         AlarmSuppressUnknown {
             /// The path given.
             path: String,
             /// Whether the alarm is on a structure's member.
             structure: bool,
+            /// What is wrong with the path, where it is more than an unknown name.
+            why: Option<PathError>,
         },
         /// `suppress_when` naming a variable that is not a bool.
         AlarmSuppressNotBool {
@@ -349,6 +353,8 @@ issue_kinds! {
             path: String,
             /// The variable's Rust type.
             ty: String,
+            /// The basic variable the path goes past (`mode` of `mode.x`), if it does.
+            past: Option<String>,
         },
         /// A link shared by two variables (a warning).
         SharedLink {

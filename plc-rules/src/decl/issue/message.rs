@@ -257,8 +257,18 @@ impl<L> Issue<L> {
                     "at least"
                 }
             ),
-            IssueKind::AlarmSuppressUnknown { path, structure } => {
-                if *structure {
+            IssueKind::AlarmSuppressUnknown {
+                path,
+                structure,
+                why,
+            } => {
+                if let Some(why) = why {
+                    format!(
+                        "{} names no bool: {why}; `suppress_when` names a bool variable or an \
+                         element of a bool array",
+                        q(path)
+                    )
+                } else if *structure {
                     format!(
                         "{} names no member of this structure: inside a structure, \
                          `suppress_when` names a bool member of the same structure",
@@ -272,7 +282,21 @@ impl<L> Issue<L> {
                     )
                 }
             }
-            IssueKind::AlarmSuppressNotBool { path, ty } => format!(
+            IssueKind::AlarmSuppressNotBool {
+                path,
+                ty,
+                past: Some(past),
+            } => format!(
+                "{} goes past {}, a {ty}, which has no members: `suppress_when` names a bool \
+                 variable or an element of a bool array",
+                q(path),
+                q(past)
+            ),
+            IssueKind::AlarmSuppressNotBool {
+                path,
+                ty,
+                past: None,
+            } => format!(
                 "{} is {ty}, not a bool: `suppress_when` names a bool that is true while the \
                  equipment is out of service",
                 q(path)

@@ -21,3 +21,17 @@ pub struct Gm {
 }
 
 fn main() {}
+
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct Elements {
+    #[plc(alarm(text = "Fine", suppress_when = "off[1]"))]
+    a: bool,
+    #[plc(alarm(text = "Beyond the array", suppress_when = "off[2]"))]
+    b: bool,
+    #[plc(alarm(text = "The whole array", suppress_when = "off"))]
+    c: bool,
+    #[plc(alarm(text = "Into a bool", suppress_when = "mode.x"))]
+    d: bool,
+    off: [bool; 2],
+    mode: bool,
+}
