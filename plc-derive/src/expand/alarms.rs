@@ -43,7 +43,28 @@ pub fn expand(c: &Container) -> (TokenStream, TokenStream) {
     if parts.is_empty() {
         return (TokenStream::new(), TokenStream::new());
     }
+    let bases = if c.kind == Kind::PlcStruct {
+        // Each member's first leaf, summed once here: a sum per member would make the code
+        // quadratic in the number of members.
+        let n = c.vars.len();
+        let leaves = (0..n).map(|j| facts(c, j));
+        quote! {
+            const __PLC_ALARM_BASES: [usize; #n] = {
+                let leaves: [usize; #n] = [#(#leaves.leaves(),)*];
+                let mut bases = [0usize; #n];
+                let mut j = 1;
+                while j < #n {
+                    bases[j] = bases[j - 1] + leaves[j - 1];
+                    j += 1;
+                }
+                bases
+            };
+        }
+    } else {
+        TokenStream::new()
+    };
     let items = quote! {
+        #bases
         const __PLC_ALARM_PARTS: &[#p::AlarmPart] = &[#(#parts,)*];
         const __PLC_ALARMS: [#p::AlarmDecl; #p::alarm_count(__PLC_ALARM_PARTS)] =
             #p::alarm_flatten(__PLC_ALARM_PARTS);
@@ -65,11 +86,10 @@ fn facts(c: &Container, i: usize) -> TokenStream {
 /// Member `i`'s first leaf in a structure (each member before it has its type's leaves); 0 for
 /// a program's variable, whose leaves are its own.
 fn leaf_base(c: &Container, i: usize) -> TokenStream {
-    if c.kind == Kind::GlobalMemory {
-        return quote!(0);
+    match c.kind {
+        Kind::GlobalMemory => quote!(0),
+        Kind::PlcStruct => quote!(__PLC_ALARM_BASES[#i]),
     }
-    let before = (0..i).map(|j| facts(c, j));
-    quote!(0 #(+ #before.leaves())*)
 }
 
 /// A number as a literal of type `f64`, a negative one written with its `-`.
