@@ -293,6 +293,12 @@ pub trait GlobalMemory: Sized {
     /// [`layout_hash`] of [`VARIABLES`](Self::VARIABLES).
     const LAYOUT_HASH: u64;
 
+    /// The declared alarms (`#[plc(alarm = "...")]`), one per watched basic value, in
+    /// declaration order: an array of bools has one per element, a structure's member one per
+    /// instance. Empty unless the derive says otherwise, so impls written by hand need not
+    /// name it. See [`alarm`](crate::alarm).
+    const ALARMS: &'static [crate::alarm::AlarmDecl] = &[];
+
     /// Copies each bit-mapped bool out of its source word (the JSON variable-list format: after reading inputs).
     fn unpack_bits(&mut self);
 

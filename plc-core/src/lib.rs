@@ -37,6 +37,7 @@
 #![cfg_attr(not(any(feature = "std", test)), no_std)]
 #![deny(missing_docs)]
 
+pub mod alarm;
 pub mod convert;
 pub mod fb;
 mod fixed_string;

@@ -5,6 +5,10 @@ pub use core;
 pub use plc_rules;
 pub use zerocopy;
 
+pub use crate::alarm::table::{
+    Part as AlarmPart, count as alarm_count, flatten as alarm_flatten, stride as alarm_stride,
+};
+pub use crate::alarm::{AlarmDecl, AlarmKind, Condition, Limits, SuppressWhen};
 pub use crate::global_memory::{hash_range, layout_hash};
 pub use crate::image_bytes::{
     field_at, field_at_mut, image_size, offsets, repr_at, repr_at_mut, run_steps,
@@ -15,7 +19,7 @@ pub use crate::plc_type::sealed::Sealed;
 pub use crate::plc_type::{BitSource, ElementError, PlcScalar, PlcType};
 pub use crate::process_image::ProcessValue;
 
-use crate::{Access, BitMapping, Direction, IecType, SetError, Value};
+use crate::{Access, BitMapping, Direction, IecType, SetError, TypeFamily, Value};
 
 /// The description of a variable of type `T` with every attribute at its default (no link,
 /// address, bit mapping, description, initial value or quantity; internal, read-write,
@@ -263,6 +267,8 @@ pub struct TypeFacts {
     /// A structure or an array of structures: none of the basic types' predicates hold.
     structured: bool,
     depth: usize,
+    leaves: usize,
+    alarms: &'static [crate::alarm::AlarmDecl],
 }
 
 /// The facts of field type `T`.
@@ -275,10 +281,28 @@ pub const fn facts<T: PlcType>() -> TypeFacts {
         repr_size: core::mem::size_of::<T::Repr>(),
         structured: T::TYPE_NAME.is_some(),
         depth: T::DEPTH,
+        leaves: T::LEAVES,
+        alarms: T::ALARMS,
     }
 }
 
 impl TypeFacts {
+    /// Leaves of the type (see `PlcType::LEAVES`).
+    pub const fn leaves(self) -> usize {
+        self.leaves
+    }
+
+    /// Elements of the type (1 for a scalar or structure).
+    pub const fn elements(self) -> usize {
+        self.elements
+    }
+
+    /// The alarm table's part of a field of this type that declares no alarm itself: its
+    /// structure's alarms, once per element (none for a basic type).
+    pub const fn alarm_part(self, index: usize, base: usize) -> crate::alarm::table::Part {
+        crate::alarm::table::nested(self.alarms, self.leaves, self.elements, index, base)
+    }
+
     /// Bytes of the type's stored form in the image.
     pub const fn repr_size(self) -> usize {
         self.repr_size
@@ -302,6 +326,23 @@ impl TypeFacts {
         self.rank <= plc_rules::capacity::MAX_ARRAY_DIMS
             && self.elements <= plc_rules::capacity::MAX_ARRAY_ITEMS
             && string_ok
+    }
+
+    /// Whether the elements are bools (a bool alarm's type).
+    pub const fn has_bool_elements(self) -> bool {
+        !self.structured && matches!(self.iec_type, IecType::Bool)
+    }
+
+    /// Whether the elements are numbers (a limit alarm's type).
+    pub const fn has_number_elements(self) -> bool {
+        !self.structured
+            && matches!(
+                self.iec_type.family(),
+                TypeFamily::SignedInt
+                    | TypeFamily::UnsignedInt
+                    | TypeFamily::Real
+                    | TypeFamily::BitString
+            )
     }
 
     /// Whether the type is a structure or an array of structures.

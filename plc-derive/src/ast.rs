@@ -325,6 +325,21 @@ fn fill_from_attr(
     model.read_only = a.read_only.is_present();
     model.ux = a.ux.is_present();
     model.quantity = a.quantity.as_ref().map(at);
+    model.alarm = a.alarm.map(|x| x.0);
+    if let Some(w) = a.alarm_when {
+        let when = At::new(*w, Loc::Span(w.span()));
+        match &mut model.alarm {
+            None => cx.error(
+                w.span(),
+                "`alarm_when` says when an alarm is active: declare one with `alarm = \"...\"`",
+            ),
+            Some(alarm) if alarm.when.is_some() => cx.error(
+                w.span(),
+                "`alarm_when` is given twice, beside `alarm(...)` and in it: keep one",
+            ),
+            Some(alarm) => alarm.when = Some(when),
+        }
+    }
     if let Some(d) = a.direction {
         match Direction::from_name(&d) {
             Some(dir) => model.direction = Some(At::new(dir, Loc::Span(d.span()))),

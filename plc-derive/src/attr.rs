@@ -81,6 +81,9 @@ pub struct FieldAttr {
     pub iec_type: Option<SpannedValue<String>>,
     pub ux: Switch,
     pub quantity: Option<SpannedValue<String>>,
+    pub alarm: Option<crate::alarm::AlarmAttr>,
+    /// `alarm_when = false` beside `alarm = "..."`: an active-low bool.
+    pub alarm_when: Option<SpannedValue<bool>>,
 }
 
 /// `initial = <literal>` kept as the expression written (darling would parse a string's
@@ -104,19 +107,23 @@ pub fn raw_value(attrs: &[syn::Attribute], key: &str) -> Option<TokenStream> {
             syn::Meta::List(list) => Some(list.tokens.clone()),
             _ => None,
         })
-        .find_map(|tokens| {
-            let tokens: Vec<TokenTree> = tokens.into_iter().collect();
-            let start = tokens.windows(2).position(|w| {
-                matches!(&w[0], TokenTree::Ident(i) if i == key)
-                    && matches!(&w[1], TokenTree::Punct(p) if p.as_char() == '=')
-            })?;
-            let value = tokens[start + 2..]
-                .iter()
-                .take_while(|t| !matches!(t, TokenTree::Punct(p) if p.as_char() == ','))
-                .cloned()
-                .collect::<TokenStream>();
-            (!value.is_empty()).then_some(value)
-        })
+        .find_map(|tokens| value_in(tokens, key))
+}
+
+/// The tokens after `key =` among `tokens` (an attribute's, or a nested list's such as
+/// `alarm(...)`'s), up to the next comma; `None` if the key is absent.
+pub fn value_in(tokens: TokenStream, key: &str) -> Option<TokenStream> {
+    let tokens: Vec<TokenTree> = tokens.into_iter().collect();
+    let start = tokens.windows(2).position(|w| {
+        matches!(&w[0], TokenTree::Ident(i) if i == key)
+            && matches!(&w[1], TokenTree::Punct(p) if p.as_char() == '=')
+    })?;
+    let value = tokens[start + 2..]
+        .iter()
+        .take_while(|t| !matches!(t, TokenTree::Punct(p) if p.as_char() == ','))
+        .cloned()
+        .collect::<TokenStream>();
+    (!value.is_empty()).then_some(value)
 }
 
 /// A key without a value (`nonvolatile`, `read_only`, `unaligned`). Unlike darling's `Flag`, a

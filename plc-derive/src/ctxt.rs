@@ -94,7 +94,8 @@ fn darling_message(message: &str) -> String {
     if let Some((text, key)) = message.rsplit_once(" at ")
         && known(key)
     {
-        return if text.contains(&format!("`{key}`")) {
+        // `alarm(...)`'s messages are this crate's own and name their key.
+        return if text.contains(&format!("`{key}`")) || key == "alarm" {
             text.to_string()
         } else if let (true, Some(expected)) = (text.starts_with("Unexpected"), expects(key)) {
             format!("`{key}` takes {expected}")

@@ -8,6 +8,7 @@
 
 #[cfg(test)]
 mod agreement;
+mod alarm;
 mod ast;
 mod attr;
 mod bus;

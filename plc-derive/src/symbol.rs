@@ -8,7 +8,7 @@ pub const PLC: &str = "plc";
 pub fn field_keys() -> impl Iterator<Item = &'static str> {
     plc_rules::decl::ATTRIBUTE_KEYS
         .iter()
-        .chain(["name", "iec_type"].iter())
+        .chain(["name", "iec_type", "alarm_when"].iter())
         .copied()
 }
 
@@ -27,6 +27,8 @@ pub fn expects(key: &str) -> Option<&'static str> {
         "name" => "a string",
         "iec_type" => "a string such as \"WORD\"",
         "quantity" => "a string such as \"force\"",
+        "alarm" => "its text, `alarm = \"Guard door open\"`, or `alarm(text = \"...\", ...)`",
+        "alarm_when" => "`true` or `false`",
         "crate" => "a path as a string, such as \"::plc_core\"",
         "byte_order" => "\"little\" or \"big\"",
         "bus" => "the path of a bus description as a string, such as \"bus/machine.toml\"",

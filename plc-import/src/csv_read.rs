@@ -9,6 +9,7 @@
 //! type rather than a variable's path, so one type used by many variables is declared once,
 //! and a sheet reads back as the JSON list's `types` section reads.
 
+use super::csv_alarm::{self, ALARM_COLUMNS};
 use super::parse::{Parsed, TypeDef};
 use serde_json::Value;
 use std::collections::HashMap;
@@ -203,7 +204,9 @@ fn cell_value(col: &str, cell: &str, ty: &str) -> Option<Value> {
     Some(match col {
         "initial" => initial(c, ty),
         "bit" | "max_length" => number(c),
-        "nonvolatile" | "read_only" | "ux" => flag(c),
+        "nonvolatile" | "read_only" | "ux" | "alarm_latched" | "alarm_when" => flag(c),
+        "alarm_severity" | "alarm_low_low" | "alarm_low" | "alarm_high" | "alarm_high_high"
+        | "alarm_deadband" => number(c),
         "dims" => dims(c),
         _ => Value::String(c.to_string()),
     })
@@ -215,7 +218,8 @@ fn header(record: &csv::StringRecord) -> Result<Vec<&'static str>, Vec<String>> 
     let mut errors = Vec::new();
     for (i, h) in record.iter().enumerate() {
         let h = h.trim();
-        match COLUMNS.iter().find(|c| c.eq_ignore_ascii_case(h)) {
+        let known = COLUMNS.iter().chain(&ALARM_COLUMNS);
+        match known.clone().find(|c| c.eq_ignore_ascii_case(h)) {
             Some(c) if cols.contains(c) => {
                 errors.push(format!("line 1: column {c:?} is named twice"));
             }
@@ -223,7 +227,7 @@ fn header(record: &csv::StringRecord) -> Result<Vec<&'static str>, Vec<String>> 
             None => errors.push(format!(
                 "line 1, column {}: unknown column {h:?}: use {} ({HEADER_HINT})",
                 i + 1,
-                COLUMNS.join(", ")
+                known.copied().collect::<Vec<_>>().join(", ")
             )),
         }
     }
@@ -323,6 +327,7 @@ pub fn parse(text: &str) -> Result<Table, Vec<String>> {
                 fields.insert((*col).to_string(), v);
             }
         }
+        csv_alarm::gather(&mut fields);
         let Some(name) = name else {
             table.row_errors.push(format!(
                 "line {line}, column name: empty: every row needs the variable's name"

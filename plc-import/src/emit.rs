@@ -258,6 +258,9 @@ fn field(v: &Var<ListAt>, rust_type: &str, origin: &str) -> String {
     if let Some(q) = &v.quantity {
         keys.push(format!("quantity = {:?}", q.value));
     }
+    if let Some(a) = &v.alarm {
+        keys.push(crate::alarm_attr::attribute(a));
+    }
     if description.is_empty() {
         keys.push("description = \"\"".into());
     } else if as_key {

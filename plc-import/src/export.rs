@@ -161,11 +161,18 @@ fn type_json(name: &str, v: &VarDescriptor, types: &mut Types, depth: usize) -> 
 /// assert!(json.contains("\"nonvolatile\": true"));
 /// ```
 pub fn export_json<T: GlobalMemory>() -> Result<String, String> {
-    let value = descriptor_to_json(&LayoutDescriptor::of::<T>())?;
-    serde_json::to_string_pretty(&value).map_err(|e| e.to_string())
+    serde_json::to_string_pretty(&type_to_json::<T>()?).map_err(|e| e.to_string())
 }
 
-/// The CSV variable list of a descriptor: the columns of [`COLUMNS`](super::COLUMNS), the
+/// The list of a compiled type: its descriptor's, and its alarms, which only the type has.
+fn type_to_json<T: GlobalMemory>() -> Result<Value, String> {
+    let mut value = descriptor_to_json(&LayoutDescriptor::of::<T>())?;
+    super::export_alarms::add(&mut value, T::VARIABLES, T::ALARMS);
+    Ok(value)
+}
+
+/// The CSV variable list of a descriptor: the columns of [`COLUMNS`](super::COLUMNS) (and
+/// [`ALARM_COLUMNS`](super::ALARM_COLUMNS) if a variable has an alarm), the
 /// same content as [`descriptor_to_json`] (each type as a `STRUCT` row and its members' rows,
 /// before the variables), with its errors.
 pub fn descriptor_to_csv(desc: &LayoutDescriptor) -> Result<String, String> {
@@ -190,5 +197,5 @@ pub fn descriptor_to_csv(desc: &LayoutDescriptor) -> Result<String, String> {
 /// );
 /// ```
 pub fn export_csv<T: GlobalMemory>() -> Result<String, String> {
-    descriptor_to_csv(&LayoutDescriptor::of::<T>())
+    Ok(super::csv_write::to_csv(&type_to_json::<T>()?))
 }

@@ -12,8 +12,9 @@
 //! assert!(generated.code.contains("#[plc(source = \"impact67_0_digital_inputs\", bit = 0"));
 //! ```
 //!
-//! The same variables as CSV ([`COLUMNS`]; RFC 4180 quoting, a header line naming the columns
-//! in any order, empty cells for what a variable does not declare):
+//! The same variables as CSV ([`COLUMNS`], and [`ALARM_COLUMNS`] for alarms; RFC 4180 quoting,
+//! a header line naming the columns in any order, empty cells for what a variable does not
+//! declare):
 //!
 //! ```
 //! let csv = "name,type,link,source,bit,description\r\n\
@@ -39,6 +40,10 @@
 
 // The importer is feature `import`, the export feature `export`. The export writes the CSV
 // reader's columns, so the reader (and the parsed form it reads into) compile with either.
+#[cfg(feature = "import")]
+mod alarm_attr;
+#[cfg_attr(not(feature = "import"), allow(dead_code))]
+mod csv_alarm;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod csv_read;
 #[cfg(feature = "export")]
@@ -47,6 +52,8 @@ mod csv_write;
 mod emit;
 #[cfg(feature = "export")]
 mod export;
+#[cfg(feature = "export")]
+mod export_alarms;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]
 mod parse;
 #[cfg_attr(not(feature = "import"), allow(dead_code))]
@@ -54,6 +61,7 @@ mod standard;
 #[cfg(feature = "import")]
 mod validate;
 
+pub use csv_alarm::ALARM_COLUMNS;
 pub use csv_read::COLUMNS;
 #[cfg(feature = "export")]
 pub use export::{descriptor_to_csv, descriptor_to_json, export_csv, export_json};
@@ -170,7 +178,11 @@ pub fn generate_csv(csv: &str, options: &Options) -> Result<Generated, ImportErr
         };
         let line = lines(p.at.ty, p.at.var).map_or_else(String::new, |l| format!("line {l}, "));
         match &p.at.field {
-            Some(f) => format!("{line}variable {name}, column {f}: {}", p.message),
+            Some(f) => format!(
+                "{line}variable {name}, column {}: {}",
+                csv_alarm::column_of(f),
+                p.message
+            ),
             None => format!("{line}variable {name}: {}", p.message),
         }
     };

@@ -27,6 +27,7 @@ impl<T: PlcType, const N: usize> PlcType for [T; N] {
     const STRING_CAPACITY: usize = T::STRING_CAPACITY;
     const LEAVES: usize = N * T::LEAVES;
     const MEMBERS: &'static [crate::VarInfo] = T::MEMBERS;
+    const ALARMS: &'static [crate::alarm::AlarmDecl] = T::ALARMS;
     const TYPE_NAME: Option<&'static str> = T::TYPE_NAME;
     const DEPTH: usize = T::DEPTH;
     type Repr = [T::Repr; N];

@@ -86,6 +86,11 @@ pub trait PlcType: Clone + sealed::Sealed + 'static {
     /// A structure's members (`#[derive(PlcStruct)]`), offsets from the structure's start;
     /// for an array of structures, one element's; empty for basic types.
     const MEMBERS: &'static [crate::VarInfo] = &[];
+    /// A structure's alarms (`#[plc(alarm = "...")]` on its members), leaves counted from
+    /// the structure's start; for an array of structures, one element's; empty for basic
+    /// types. A program's table holds a copy per instance
+    /// ([`GlobalMemory::ALARMS`](crate::GlobalMemory::ALARMS)).
+    const ALARMS: &'static [crate::alarm::AlarmDecl] = &[];
     /// A structure's type name (`"Axis"`, `"TON"`); `None` for basic types.
     const TYPE_NAME: Option<&'static str> = None;
     /// Structure levels: 0 for a basic type, 1 plus its deepest member's for a structure.

@@ -81,6 +81,7 @@ pub fn expand(c: &Container) -> TokenStream {
             }
         }
     }
+    suppress_checks(c, &mut out);
     out
 }
 
@@ -143,6 +144,28 @@ fn structure_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenS
             ),
         ));
     }
+    if let Some(alarm) = &m.alarm {
+        // The model's alarm rules need the type: for one only the compiler knows, these.
+        let (cond, message) = if alarm.has_limits() {
+            (
+                quote!(#facts.has_number_elements()),
+                format!(
+                    "`{name}` must be a number for an alarm with limits (an alarm watches a \
+                     bool, or a number against limits; a structure's alarms are declared on \
+                     its members)"
+                ),
+            )
+        } else {
+            (
+                quote!(#facts.has_bool_elements()),
+                format!(
+                    "`{name}` must be a bool (or an array of bools) for an alarm without \
+                     limits (a structure's alarms are declared on its members)"
+                ),
+            )
+        };
+        out.extend(assert(alarm.at.span(), cond, message));
+    }
     if let Some(span) = v.nonvolatile_at {
         out.extend(assert(
             span,
@@ -150,6 +173,38 @@ fn structure_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenS
             format!(
                 "`{name}` is a structure: it cannot be `nonvolatile` as a whole; mark the members \
                  to keep `nonvolatile` in the structure's declaration"
+            ),
+        ));
+    }
+}
+
+/// A `suppress_when` naming a field whose type only the compiler knows (an alias): the
+/// model could not tell whether it is a bool.
+fn suppress_checks(c: &Container, out: &mut TokenStream) {
+    let p = private(c);
+    for m in &c.decl.vars {
+        let Some(s) = m.alarm.as_ref().and_then(|a| a.suppress_when.as_ref()) else {
+            continue;
+        };
+        let path = s.value.trim();
+        let target = c
+            .decl
+            .vars
+            .iter()
+            .position(|t| t.name.value.eq_ignore_ascii_case(path));
+        let Some(t) = target
+            .map(|j| &c.vars[j])
+            .filter(|t| t.syn_type == SynType::Unknown)
+        else {
+            continue;
+        };
+        let ty = t.ty;
+        out.extend(assert(
+            s.at.span(),
+            quote_spanned!(t.ty_span()=> #p::facts::<#ty>().is_bool()),
+            format!(
+                "`{path}` must be a bool: `suppress_when` names a bool that is true while the \
+                 equipment is out of service"
             ),
         ));
     }

@@ -3,6 +3,7 @@
 //! `plc_core::__private` so the code works under `#![no_implicit_prelude]`.
 
 mod access;
+mod alarms;
 mod asserts;
 mod bits;
 mod default;
@@ -48,12 +49,14 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
         };
     }
     let image_struct = image::image_struct(&c);
+    let (alarm_items, alarm_assoc) = alarms::expand(&c);
     if kind == Kind::PlcStruct {
-        let structure = structure::expand(&c, &alias_bounds(&c));
+        let structure = structure::expand(&c, &alias_bounds(&c), &alarm_assoc);
         return quote! {
             const _: () = {
                 #image_struct
                 #asserts
+                #alarm_items
                 #structure
             };
         };
@@ -80,11 +83,13 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
             #tracked
             #image_struct
             #asserts
+            #alarm_items
 
             #[automatically_derived]
             impl #krate::GlobalMemory for #ident #bounds {
                 type Image = #image_ident;
                 #(#body)*
+                #alarm_assoc
             }
 
             #[automatically_derived]

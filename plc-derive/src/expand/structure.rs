@@ -11,8 +11,8 @@ use proc_macro2::{Literal, TokenStream};
 use quote::quote;
 
 /// `bounds`: `where` clauses assuming the member types only the compiler knows are PLC types
-/// (their one error comes from their assertion).
-pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
+/// (their one error comes from their assertion); `alarms`: the associated `ALARMS`, if any.
+pub fn expand(c: &Container, bounds: &TokenStream, alarms: &TokenStream) -> TokenStream {
     let p = private(c);
     let krate = &c.krate;
     let ident = c.ident;
@@ -56,6 +56,7 @@ pub fn expand(c: &Container, bounds: &TokenStream) -> TokenStream {
                 ::core::option::Option::Some(#type_name);
             const DEPTH: usize = 1 + #p::max_depth(&[#(<#tys as #p::PlcType>::DEPTH,)*]);
             type Repr = #image;
+            #alarms
 
             #[inline]
             fn to_repr(&self) -> #image {

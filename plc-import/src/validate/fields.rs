@@ -273,6 +273,15 @@ impl Reader<'_> {
                 ),
             );
         }
+        if model.alarm.take().is_some() {
+            self.err(
+                "alarm",
+                format!(
+                    "{name} is a structure: declare alarms on its members, in the structure's \
+                     declaration (each instance then has its own)"
+                ),
+            );
+        }
         if model.source.take().is_some() | model.bit.take().is_some() {
             let key = if self.obj.contains_key("source") {
                 "source"

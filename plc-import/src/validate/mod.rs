@@ -12,6 +12,7 @@
 //! variable of a structure type cannot have as a whole (`initial`, `nonvolatile`, `link`,
 //! `at`, a bit mapping), in the words of the derive's own checks.
 
+mod alarm;
 mod blocks;
 mod fields;
 mod graph;

@@ -125,6 +125,7 @@ fn read_var(
     model.read_only = r.flag("read_only");
     model.ux = r.flag("ux");
     model.quantity = r.string("quantity");
+    model.alarm = r.alarm();
     if structured.is_some() {
         r.structure_as_a_whole(&mut model);
     }

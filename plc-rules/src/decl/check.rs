@@ -65,6 +65,7 @@ pub fn check<L: Clone>(decl: &Decl<L>) -> Checked<L> {
     directions(decl, &mut vars, &mut issues);
     initial_and_iec_type(decl, &mut issues);
     shared_links(decl, &mut issues);
+    super::alarm::alarms(decl, &mut issues);
     Checked { issues, vars }
 }
 

@@ -30,10 +30,12 @@
 //! assert_eq!(issue.message(&Plain), "16 is out of range for source `inputs` (u16 has bits 0..=15)");
 //! ```
 
+mod alarm;
 mod check;
 mod issue;
 mod keys;
 
+pub use alarm::{Alarm, DEFAULT_SEVERITY, DelayError, LIMIT_KEYS, parse_delay};
 pub use check::{Checked, Resolved, check, initial_misfit, type_rules};
 pub use issue::{Expected, Issue, IssueKind, KIND_NAMES, Wording};
 
@@ -198,6 +200,9 @@ pub struct Var<L> {
     pub ux: bool,
     /// `quantity = "force"`: the physical quantity a display uses to pick units.
     pub quantity: Option<Located<String, L>>,
+    /// `alarm = ".."` or `alarm(...)`: an alarm on the variable (for an array of bools, one
+    /// per element; on a structure's member, one per instance).
+    pub alarm: Option<Alarm<L>>,
 }
 
 impl<L> Var<L> {
@@ -223,6 +228,7 @@ impl<L> Var<L> {
             description: String::new(),
             ux: false,
             quantity: None,
+            alarm: None,
         }
     }
 }
@@ -243,6 +249,7 @@ pub const ATTRIBUTE_KEYS: &[&str] = &[
     "direction",
     "ux",
     "quantity",
+    "alarm",
 ];
 
 /// A whole declaration: the variables in order, and the settings that rules depend on.

@@ -16,8 +16,10 @@ struct __PlcVarsImage;
 
 #[derive(GlobalMemory, Debug, Clone)]
 pub struct Gm {
-    #[plc(initial = 1)]
+    #[plc(initial = 1, alarm(text = "Speed", low = -100, high = 100, severity = 700))]
     speed: i32,
+    #[plc(alarm = "Stop", alarm_when = false)]
+    run: bool,
     #[plc(at = "%IW0")]
     input: u16,
 }

@@ -2,6 +2,8 @@
 //! names ([`IssueKind::name`], [`KIND_NAMES`]) taken from the one list of its variants.
 
 use crate::address::{AddressError, IecAddress, Size};
+use crate::decl::DelayError;
+use crate::path::PathError;
 use crate::{Direction, IecType, LinkError, NameError, TimeError};
 use std::string::String;
 
@@ -282,6 +284,77 @@ issue_kinds! {
             len: usize,
             /// The capacity.
             capacity: u64,
+        },
+        /// An alarm with empty text: operators would see an alarm without a message.
+        AlarmEmptyText,
+        /// A severity outside OPC UA's 1..=1000.
+        AlarmSeverity {
+            /// The severity given.
+            value: i64,
+        },
+        /// A `delay` that is not a duration of 0 or more.
+        AlarmBadDelay {
+            /// The delay as written.
+            text: String,
+            /// What is wrong.
+            error: DelayError,
+        },
+        /// A negative `deadband`.
+        AlarmNegativeDeadband {
+            /// The deadband given.
+            value: f64,
+        },
+        /// An alarm on a STRING or a duration, which has no active state or limits.
+        AlarmOnType {
+            /// The element's Rust type.
+            ty: String,
+            /// Its IEC type.
+            iec: IecType,
+        },
+        /// A limit or a deadband on a bool, whose alarm is its value.
+        AlarmLimitOnBool {
+            /// The key given (`high`, `deadband`).
+            key: &'static str,
+        },
+        /// `alarm_when` on a number, whose alarm is its limits.
+        AlarmWhenOnNumber {
+            /// The variable's IEC type.
+            iec: IecType,
+        },
+        /// An alarm on a number without limits.
+        AlarmWithoutLimits {
+            /// The variable's IEC type.
+            iec: IecType,
+        },
+        /// A limit not above the one below it (low_low <= low < high <= high_high).
+        AlarmLimitOrder {
+            /// The limit's key.
+            key: &'static str,
+            /// Its value.
+            value: f64,
+            /// The key of the nearest limit below it.
+            below: &'static str,
+            /// That limit's value.
+            below_value: f64,
+        },
+        /// `suppress_when` naming no variable (in a structure: no member of it), or an element
+        /// of a bool array that is not there.
+        AlarmSuppressUnknown {
+            /// The path given.
+            path: String,
+            /// Whether the alarm is on a structure's member.
+            structure: bool,
+            /// What is wrong with the path, where it is more than an unknown name.
+            why: Option<PathError>,
+        },
+        /// `suppress_when` naming a variable that is not a bool.
+        AlarmSuppressNotBool {
+            /// The path given.
+            path: String,
+            /// The variable's Rust type.
+            ty: String,
+            /// The basic variable the path goes past (`mode` of `mode.x`), if it does.
+            past: Option<String>,
         },
         /// A link shared by two variables (a warning).
         SharedLink {

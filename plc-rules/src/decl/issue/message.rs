@@ -212,6 +212,95 @@ impl<L> Issue<L> {
                 "{len} bytes do not fit max_length {capacity} (a FixedString<{capacity}>): \
                  shorten the text or raise the capacity"
             ),
+            IssueKind::AlarmEmptyText => "an alarm needs text: the message operators see \
+                                          when it is raised (IEC 62682), such as \"Guard door \
+                                          open\""
+                .to_string(),
+            IssueKind::AlarmSeverity { value } => format!(
+                "severity {value} is out of range: an alarm's severity is 1..=1000 (OPC UA, IEC \
+                 62541-9; 1 the least urgent, 500 when not given)"
+            ),
+            IssueKind::AlarmBadDelay { text, error } => {
+                format!("{text:?} is not a delay: {error}")
+            }
+            IssueKind::AlarmNegativeDeadband { value } => format!(
+                "deadband {value} is negative: a deadband is how far a value must come back past \
+                 a limit before its level clears, 0 or more"
+            ),
+            IssueKind::AlarmOnType { ty, iec } => format!(
+                "no alarm can be declared on {ty} ({iec}): an alarm watches a bool, or a number \
+                 against limits (see the repository's docs/alarms.md)"
+            ),
+            IssueKind::AlarmLimitOnBool { key } => format!(
+                "`{key}` is for alarms on numbers: a bool's alarm is active when it is true (or \
+                 false, with `alarm_when = false`); remove `{key}`"
+            ),
+            IssueKind::AlarmWhenOnNumber { iec } => format!(
+                "`alarm_when` is for alarms on bools: an alarm on a number ({iec}) is active \
+                 beyond its limits; remove `alarm_when`"
+            ),
+            IssueKind::AlarmWithoutLimits { iec } => format!(
+                "an alarm on a number ({iec}) needs limits: give `high`, `high_high`, `low` \
+                 or `low_low`, the values that raise it"
+            ),
+            IssueKind::AlarmLimitOrder {
+                key,
+                value,
+                below,
+                below_value,
+            } => format!(
+                "`{key} = {value}` must be {} `{below} = {below_value}`: limits go low_low <= \
+                 low < high <= high_high",
+                if below.starts_with("low") && key.starts_with("high") {
+                    "above"
+                } else {
+                    "at least"
+                }
+            ),
+            IssueKind::AlarmSuppressUnknown {
+                path,
+                structure,
+                why,
+            } => {
+                if let Some(why) = why {
+                    format!(
+                        "{} names no bool: {why}; `suppress_when` names a bool variable or an \
+                         element of a bool array",
+                        q(path)
+                    )
+                } else if *structure {
+                    format!(
+                        "{} names no member of this structure: inside a structure, \
+                         `suppress_when` names a bool member of the same structure",
+                        q(path)
+                    )
+                } else {
+                    format!(
+                        "{} names no variable: `suppress_when` names a bool variable (a path \
+                         such as `stations[2].out_of_service` is checked when the program starts)",
+                        q(path)
+                    )
+                }
+            }
+            IssueKind::AlarmSuppressNotBool {
+                path,
+                ty,
+                past: Some(past),
+            } => format!(
+                "{} goes past {}, a {ty}, which has no members: `suppress_when` names a bool \
+                 variable or an element of a bool array",
+                q(path),
+                q(past)
+            ),
+            IssueKind::AlarmSuppressNotBool {
+                path,
+                ty,
+                past: None,
+            } => format!(
+                "{} is {ty}, not a bool: `suppress_when` names a bool that is true while the \
+                 equipment is out of service",
+                q(path)
+            ),
             IssueKind::SharedLink { link, first } => format!(
                 "{link:?} is also linked by {}: fine for an input; two variables writing one \
                  output entry are refused when the bus starts",
