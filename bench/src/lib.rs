@@ -2,6 +2,7 @@
 //! `cargo bench -p plc-bench`). Method and results: BENCHMARKS.md.
 #![deny(missing_docs)]
 
+pub mod alarms;
 pub mod bus;
 pub mod commissioning;
 pub mod cycle;

@@ -2,7 +2,7 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua,commissioning,flood,drives`
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua,commissioning,flood,drives,alarms`
 //! runs some groups of figures.
 //! `cycle_10k`, `derive`, `tools` and `opcua` compile generated crates: their first run takes
 //! minutes.
@@ -27,7 +27,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 13] = [
+const GROUPS: [&str; 14] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -41,6 +41,7 @@ const GROUPS: [&str; 13] = [
     "commissioning",
     "flood",
     "drives",
+    "alarms",
 ];
 
 /// Groups that run only when asked for (`--full`, or by name in `--only`).
@@ -119,6 +120,10 @@ fn main() {
             "commissioning" => match plc_bench::commissioning::run(quick, cycle_batches) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("commissioning: {e}")),
+            },
+            "alarms" => match plc_bench::alarms::run(cycle_batches) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&format!("alarms: {e}")),
             },
             "flood" => match plc_bench::commissioning::flood() {
                 Ok(lines) => print!("{lines}"),
