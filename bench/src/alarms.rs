@@ -37,8 +37,10 @@ const ITERS: u32 = 2000;
 
 /// Runs the group with `batches` batches each side; its `name: value` lines.
 pub fn run(batches: usize) -> Result<String, String> {
-    let mut gm = Alarmed1k::default();
-    gm.temperatures = [40.0; 100];
+    let gm = Alarmed1k {
+        temperatures: [40.0; 100],
+        ..Alarmed1k::default()
+    };
     let decls = Alarmed1k::ALARMS;
     if decls.len() != 1000 {
         return Err(format!("{} alarms declared, not 1,000", decls.len()));

@@ -23,8 +23,10 @@ use std::time::{Duration, Instant};
 /// How often a reader re-checks that the owner is alive.
 const LIVENESS_EVERY: Duration = Duration::from_millis(20);
 /// How long a write waits for the owner's answer at least and at most: fifty of its cycles
-/// in between.
-const WRITE_PATIENCE: (Duration, Duration) = (Duration::from_secs(1), Duration::from_secs(10));
+/// in between. At least two seconds: on a loaded two-core machine a fast program's answer
+/// once took longer than one (a test's request queued behind a burst of refused ones), and
+/// a person waits two seconds as readily as one.
+const WRITE_PATIENCE: (Duration, Duration) = (Duration::from_secs(2), Duration::from_secs(10));
 
 pub(crate) struct View {
     pub seg: AttachedSegment,
