@@ -41,6 +41,9 @@ pub(super) struct JournalFile {
     /// The file's length after the last whole write: a write that fails halfway is cut back
     /// to it, so the next record starts a line of its own.
     len: u64,
+    /// Writes so far, for the test hook.
+    #[cfg(feature = "fault-injection")]
+    writes: u64,
 }
 
 impl JournalFile {
@@ -67,6 +70,8 @@ impl JournalFile {
             capacity,
             records: contents.records_in_file(),
             len,
+            #[cfg(feature = "fault-injection")]
+            writes: 0,
         };
         if journal.needs_compaction() {
             journal.compact()?;
@@ -82,6 +87,11 @@ impl JournalFile {
     /// Appends whole lines (`count` records), in one write. On an error nothing of them
     /// stays in the file.
     pub fn append(&mut self, lines: &[u8], count: usize) -> io::Result<()> {
+        #[cfg(feature = "fault-injection")]
+        {
+            self.writes += 1;
+            stall_halfway(&mut self.file, lines, self.writes)?;
+        }
         if let Err(e) = self.file.write_all(lines) {
             let _ = self.file.set_len(self.len);
             return Err(e);
@@ -332,4 +342,24 @@ fn remove_stale_temps(path: &Path) {
             let _ = fs::remove_file(entry.path());
         }
     }
+}
+
+/// Test hook (feature `fault-injection`, which only tests enable): with the environment
+/// variable `PLC_JOURNAL_FAULT=stall`, the 20th write of a batch of more than one record
+/// stops halfway and the writer sleeps from then on, so a test can kill the process with its
+/// last record torn, as a kill in the middle of a write (or a power cut) leaves it. Without
+/// the feature there is no such hook: a production program never stalls because of its
+/// environment.
+#[cfg(feature = "fault-injection")]
+fn stall_halfway(file: &mut File, lines: &[u8], writes: u64) -> io::Result<()> {
+    if writes >= 20
+        && lines.iter().filter(|&&b| b == b'\n').count() > 1
+        && std::env::var("PLC_JOURNAL_FAULT").is_ok_and(|v| v == "stall")
+    {
+        file.write_all(&lines[..lines.len() / 2])?;
+        loop {
+            std::thread::sleep(std::time::Duration::from_secs(3600));
+        }
+    }
+    Ok(())
 }
