@@ -20,13 +20,18 @@ pub(super) fn slack(capacity: usize) -> usize {
     (capacity / 4).max(1)
 }
 
-/// The largest file a journal of `capacity` records can be: its records with their slack,
-/// as many alarm states, the header, every line at its longest. A larger file is no journal
-/// this program wrote, and is not read into memory.
+/// The most records a file holds: when compactions fail (the directory became unsafe, the
+/// disk is full) records past this are only counted, so the file stays within [`max_bytes`].
+pub(super) fn hard_limit(capacity: usize) -> usize {
+    capacity.saturating_add(slack(capacity).saturating_mul(2))
+}
+
+/// The largest file a journal of `capacity` records can be: its records up to the
+/// [`hard_limit`], as many alarm states as the capacity, the header, every line at its
+/// longest. A larger file is no journal this program wrote, and is not read into memory.
 pub(super) fn max_bytes(capacity: usize) -> u64 {
-    let lines = capacity
-        .saturating_mul(2)
-        .saturating_add(slack(capacity))
+    let lines = hard_limit(capacity)
+        .saturating_add(capacity)
         .saturating_add(1);
     (lines as u64).saturating_mul(MAX_LINE as u64)
 }
@@ -57,6 +62,12 @@ impl JournalFile {
             .ok_or_else(|| io_error(path, io::ErrorKind::NotFound.into()))?;
         let bytes = read_all(path, &file, capacity)?;
         let contents = Contents::from_bytes(&bytes, capacity);
+        if bytes.is_empty() {
+            // A new (or empty) file: its directory entry must survive a power cut too.
+            File::open(plc_files::dir_of(path))
+                .and_then(|d| d.sync_all())
+                .map_err(|e| io_error(path, e))?;
+        }
         let mut len = bytes.len() as u64;
         if let Some(torn) = contents.torn() {
             file.set_len(torn.offset)
@@ -109,6 +120,12 @@ impl JournalFile {
     /// Whether the file holds its slack over the capacity.
     pub fn needs_compaction(&self) -> bool {
         self.records > self.capacity + slack(self.capacity)
+    }
+
+    /// Whether `count` more records would take the file past its [`hard_limit`] (only when
+    /// compactions fail).
+    pub fn full(&self, count: usize) -> bool {
+        self.records.saturating_add(count) > hard_limit(self.capacity)
     }
 
     /// Rewrites the file whole (temporary file, fsync, rename): a header with the count of
@@ -179,6 +196,9 @@ impl JournalFile {
 /// Reads the journal at `path` without changing it (`None` if there is none): for a tool
 /// that shows the history of a running program.
 pub(super) fn read_only(path: &Path, capacity: usize) -> Result<Option<Contents>, JournalError> {
+    if !plc_files::dir_of(path).exists() {
+        return Ok(None);
+    }
     checked_dir(path, false)?;
     let Some(file) = open_checked(path, false, capacity)? else {
         return Ok(None);

@@ -8,10 +8,10 @@
 //! Text, one record a line, each line checked on its own:
 //!
 //! ```text
-//! 1c0e9a4f {"journal":"plc-vars alarm journal","version":1,"dropped":1250}
-//! 5b7f0d21 {"state":"oil","level":"high","acknowledged":false,"held":false,"since":1764950400000000000}
-//! 93d2c8e0 {"seq":1251,"t":1764950401000000000,"path":"door","ev":"raised","level":"active","value":1.0}
-//! 0f4a61b7 {"seq":1252,"t":1764950405000000000,"path":"door","ev":"acknowledged","by":{"uid":1000,"user":"anna","comment":"checked"}}
+//! fde8fe9f {"journal":"plc-vars alarm journal","version":1,"dropped":1250}
+//! 2d106143 {"state":"oil","level":"high","acknowledged":false,"held":false,"since":1764950400000000000}
+//! 7d075397 {"seq":1251,"t":1764950401000000000,"path":"door","ev":"raised","level":"active","value":1.0}
+//! 83d67a7c {"seq":1252,"t":1764950405000000000,"path":"door","ev":"acknowledged","by":{"uid":1000,"user":"anna","comment":"checked"}}
 //! ```
 //!
 //! Each line starts with the CRC-32 of the JSON after the space. Why lines of JSON rather than

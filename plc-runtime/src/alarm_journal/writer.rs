@@ -124,6 +124,17 @@ impl JournalSender {
     }
 }
 
+/// Records encoded, not yet appended, and whether the file needs a sync.
+struct Out {
+    buf: Vec<u8>,
+    /// Records in `buf`.
+    count: usize,
+    /// Appended, not yet synced.
+    dirty: bool,
+    last_sync: Instant,
+    failed_compaction: Option<Instant>,
+}
+
 /// The writer thread's state.
 pub(super) struct Writer {
     pub file: JournalFile,
@@ -137,19 +148,25 @@ impl Writer {
     /// Runs until stopped (or every sender is gone); the error of the last sync, if it failed.
     pub fn run(mut self) -> Result<(), JournalError> {
         let interval = self.options.sync_interval;
-        let mut buf = Vec::with_capacity(64 * 1024);
-        let mut dirty = false;
-        let mut last_sync = Instant::now();
+        // Written in chunks of at most the compaction's slack, a compaction between them if
+        // due: a batch of any size fits below the hard limit.
+        let chunk = super::file::slack(self.options.capacity);
+        let mut out = Out {
+            buf: Vec::with_capacity(64 * 1024),
+            count: 0,
+            dirty: false,
+            last_sync: Instant::now(),
+            failed_compaction: None,
+        };
         let mut window = (Instant::now(), 0usize);
         let mut flushes = Vec::new();
         loop {
-            let wait = if dirty {
-                (last_sync + interval).saturating_duration_since(Instant::now())
+            let wait = if out.dirty {
+                (out.last_sync + interval).saturating_duration_since(Instant::now())
             } else {
                 Duration::from_secs(3600)
             };
             let mut stop = false;
-            let mut count = 0;
             let first = match self.rx.recv_timeout(wait) {
                 Ok(m) => Some(m),
                 Err(RecvTimeoutError::Timeout) => None,
@@ -160,8 +177,10 @@ impl Writer {
             };
             // What else is queued now, at most a queue's worth: a flood cannot hold the
             // batch open forever.
-            let rest = std::iter::from_fn(|| self.rx.try_recv().ok()).take(self.options.queue);
-            for msg in first.into_iter().chain(rest.collect::<Vec<_>>()) {
+            let rest: Vec<Msg> = std::iter::from_fn(|| self.rx.try_recv().ok())
+                .take(self.options.queue)
+                .collect();
+            for msg in first.into_iter().chain(rest) {
                 match msg {
                     Msg::Flush(tx) => flushes.push(tx),
                     Msg::Stop => stop = true,
@@ -171,43 +190,23 @@ impl Writer {
                         }
                         if window.1 >= self.options.per_second {
                             self.count(&msg);
-                        } else if self.encode(&msg, &mut buf) {
+                        } else if self.encode(&msg, &mut out.buf) {
                             window.1 += 1;
-                            count += 1;
+                            out.count += 1;
+                            if out.count >= chunk {
+                                self.write_out(&mut out);
+                            }
                         }
                     }
                 }
             }
-            count += self.summary(&mut buf);
-            if count > 0 {
-                match self.file.append(&buf, count) {
-                    Ok(()) => dirty = true,
-                    Err(e) => {
-                        log::error!(target: "plc_runtime::alarm_journal",
-                            "alarm journal {}: {count} records not written: {e}; they are \
-                             counted in the next summary record",
-                            self.file.path().display());
-                        for _ in 0..count {
-                            self.counters.count(false, i64::MIN);
-                        }
-                    }
-                }
-                buf.clear();
+            if !self.file.full(out.count + 1) {
+                out.count += self.summary(&mut out.buf);
             }
-            if self.file.needs_compaction() {
-                match self.file.compact() {
-                    // The rewrite was synced whole.
-                    Ok(()) => {
-                        dirty = false;
-                        last_sync = Instant::now();
-                    }
-                    Err(e) => log::error!(target: "plc_runtime::alarm_journal",
-                        "{e}; the journal grows until a compaction succeeds"),
-                }
-            }
-            let due = stop || !flushes.is_empty() || last_sync.elapsed() >= interval;
+            self.write_out(&mut out);
+            let due = stop || !flushes.is_empty() || out.last_sync.elapsed() >= interval;
             let mut result = Ok(());
-            if dirty && due {
+            if out.dirty && due {
                 result = self.file.sync().map_err(|error| JournalError::Io {
                     path: self.file.path().to_owned(),
                     error,
@@ -215,14 +214,62 @@ impl Writer {
                 if let Err(e) = &result {
                     log::error!(target: "plc_runtime::alarm_journal", "{e}");
                 }
-                dirty = false;
-                last_sync = Instant::now();
+                out.dirty = false;
+                out.last_sync = Instant::now();
             }
             for tx in flushes.drain(..) {
                 let _ = tx.send(());
             }
             if stop {
                 return result;
+            }
+        }
+    }
+
+    /// Appends what `out` holds, compacting first if the file is due for it. While
+    /// compactions fail (tried again once per interval) the file grows to its hard limit,
+    /// then records are only counted, for the summary written once one succeeds.
+    fn write_out(&mut self, out: &mut Out) {
+        let interval = self.options.sync_interval;
+        let retry = out
+            .failed_compaction
+            .is_none_or(|t: Instant| t.elapsed() >= interval);
+        if self.file.needs_compaction() && retry {
+            match self.file.compact() {
+                // The rewrite was synced whole.
+                Ok(()) => {
+                    out.dirty = false;
+                    out.last_sync = Instant::now();
+                    out.failed_compaction = None;
+                }
+                Err(e) => {
+                    log::error!(target: "plc_runtime::alarm_journal",
+                        "{e}; the journal grows to its limit, then only counts transitions, \
+                         until a compaction succeeds");
+                    out.failed_compaction = Some(Instant::now());
+                }
+            }
+        }
+        let count = std::mem::take(&mut out.count);
+        if count == 0 {
+            return;
+        }
+        let written = if self.file.full(count) {
+            Err(std::io::Error::other("full, and not compacted"))
+        } else {
+            self.file.append(&out.buf, count)
+        };
+        out.buf.clear();
+        match written {
+            Ok(()) => out.dirty = true,
+            Err(e) => {
+                log::error!(target: "plc_runtime::alarm_journal",
+                    "alarm journal {}: {count} records not written: {e}; they are counted in \
+                     the next summary record",
+                    self.file.path().display());
+                for _ in 0..count {
+                    self.counters.count(false, i64::MIN);
+                }
             }
         }
     }

@@ -128,3 +128,49 @@ fn a_file_over_the_capacity_is_compacted_when_opened() {
     assert!(text.contains(r#""dropped":200"#));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn when_compactions_fail_the_file_stops_at_its_limit_and_counts_the_rest() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = private_dir("bound-failing");
+    let file = dir.join("j.alarms");
+    let journal = AlarmJournal::open_with(&file, options(20)).unwrap();
+    let sender = journal.sender(vec!["a".to_string()]);
+    // A directory others may write: compactions refuse to rewrite the file in it.
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o777)).unwrap();
+    for t in 0..100 {
+        sender.record(&raised(0, t), 1.0);
+        if t % 10 == 0 {
+            journal.flush().unwrap();
+        }
+    }
+    journal.flush().unwrap();
+    let records = std::fs::read_to_string(&file).unwrap().lines().count();
+    assert!(
+        records <= 20 + 2 * 5,
+        "{records} records: never past the hard limit"
+    );
+    assert!(sender.summarised() > 0);
+    // Fixed: the next batch compacts, and the summary says what was only counted.
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700)).unwrap();
+    std::thread::sleep(Duration::from_millis(60));
+    sender.record(&raised(0, 100), 1.0);
+    journal.finish().unwrap();
+    let c = read_journal(&file, 20).unwrap().unwrap();
+    let counted: u64 = c
+        .records()
+        .iter()
+        .map(|r| match r.entry {
+            crate::alarm_journal::Entry::Summarised { transitions, .. } => transitions,
+            _ => 0,
+        })
+        .sum();
+    assert!(counted > 0, "the summary says how many: {:?}", c.records());
+    assert!(
+        c.records()
+            .iter()
+            .any(|r| r.time_ns == 100 && r.path == "a"),
+        "written again"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
