@@ -164,7 +164,9 @@ fn killed_mid_write_the_journal_reads_whole_records_and_goes_on() {
         } {
             assert!(
                 start.elapsed() < Duration::from_secs(60),
-                "the child wrote nothing"
+                "round {round}: the child wrote too little: {} of {}",
+                written(),
+                last_seq + 3 * CAPACITY as u64
             );
             assert!(child.try_wait().unwrap().is_none(), "the child ended");
             std::thread::sleep(Duration::from_millis(5));

@@ -366,7 +366,7 @@ fn remove_stale_temps(path: &Path) {
 
 /// Test hook (feature `fault-injection`, which only tests enable): with the environment
 /// variable `PLC_JOURNAL_FAULT=stall`, the 20th write of a batch of more than one record
-/// stops halfway and the writer sleeps from then on, so a test can kill the process with its
+/// stops inside its second record and the writer sleeps from then on, so a test can kill the process with its
 /// last record torn, as a kill in the middle of a write (or a power cut) leaves it. Without
 /// the feature there is no such hook: a production program never stalls because of its
 /// environment.
@@ -376,7 +376,10 @@ fn stall_halfway(file: &mut File, lines: &[u8], writes: u64) -> io::Result<()> {
         && lines.iter().filter(|&&b| b == b'\n').count() > 1
         && std::env::var("PLC_JOURNAL_FAULT").is_ok_and(|v| v == "stall")
     {
-        file.write_all(&lines[..lines.len() / 2])?;
+        // The first line and ten bytes of the second (every line is longer: its checksum
+        // alone is nine), so the cut is surely inside a record.
+        let first = lines.iter().position(|&b| b == b'\n').unwrap_or(0);
+        file.write_all(&lines[..first + 11])?;
         loop {
             std::thread::sleep(std::time::Duration::from_secs(3600));
         }
