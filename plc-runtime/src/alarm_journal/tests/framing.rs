@@ -180,3 +180,24 @@ fn from_event_names_the_operator_and_no_one_for_an_expired_shelf() {
         }
     );
 }
+
+#[test]
+fn the_format_example_in_the_module_docs_reads() {
+    // The lines an auditor sees first: they must be what the reader takes.
+    let docs = include_str!("../mod.rs");
+    let example: Vec<&str> = docs
+        .lines()
+        .filter_map(|l| l.strip_prefix("//! "))
+        .filter(|l| {
+            l.len() > 10 && l.as_bytes()[8] == b' ' && l[..8].bytes().all(|b| b.is_ascii_hexdigit())
+        })
+        .collect();
+    assert_eq!(example.len(), 4);
+    for l in example {
+        assert!(
+            decode(l.as_bytes()).is_ok(),
+            "{l}: {:?}",
+            decode(l.as_bytes())
+        );
+    }
+}
