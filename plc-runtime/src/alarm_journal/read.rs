@@ -154,11 +154,9 @@ impl Contents {
     /// ```
     pub fn history(&self, since_ns: Option<i64>) -> impl Iterator<Item = &Record> + '_ {
         let since = since_ns.unwrap_or(i64::MIN);
-        // Records are in the order written, and times only move on: skip to the first one.
-        let first = self.records.partition_point(|r| r.time_ns < since);
-        self.records[first..]
-            .iter()
-            .filter(move |r| r.time_ns >= since)
+        // Every record looked at: the wall clock can be set back, so times in the file need
+        // not be in order (the records are, by `seq`).
+        self.records.iter().filter(move |r| r.time_ns >= since)
     }
 
     /// Records dropped by the bound, oldest first, in all the journal's history.

@@ -96,3 +96,18 @@ fn history_since_a_time() {
     assert_eq!(c.history(None).count(), 10);
     assert_eq!(c.history(Some(11)).count(), 0);
 }
+
+#[test]
+fn history_since_a_time_when_the_clock_was_set_back() {
+    use super::super::frame::Item;
+    use super::raised;
+    let mut bytes = Vec::new();
+    for (seq, t) in [(1, 100), (2, 50), (3, 120)] {
+        let mut r = raised(seq, "door");
+        r.time_ns = t;
+        bytes.extend(line(Item::Record(r)));
+    }
+    let c = Contents::from_bytes(&bytes, 10);
+    let seqs: Vec<u64> = c.history(Some(90)).map(|r| r.seq).collect();
+    assert_eq!(seqs, [1, 3]);
+}
