@@ -191,6 +191,25 @@ impl Drop for AlarmJournal {
     }
 }
 
+/// Where the journal of a program with retain file `retain` goes unless told otherwise:
+/// beside it, the same name with the extension `alarms` (`alarms.journal` for a retain file
+/// that has that extension already, so that the two are never one file).
+///
+/// ```
+/// use plc_runtime::alarm_journal::beside_retain;
+/// use std::path::Path;
+/// assert_eq!(beside_retain(Path::new("state/press.retain")), Path::new("state/press.alarms"));
+/// assert_eq!(beside_retain(Path::new("press")), Path::new("press.alarms"));
+/// assert_eq!(beside_retain(Path::new("odd.alarms")), Path::new("odd.alarms.journal"));
+/// ```
+pub fn beside_retain(retain: &Path) -> PathBuf {
+    if retain.extension().is_some_and(|e| e == "alarms") {
+        retain.with_extension("alarms.journal")
+    } else {
+        retain.with_extension("alarms")
+    }
+}
+
 /// Reads the journal at `path` (keeping `capacity` records) without writing to it: `None` if
 /// there is none. The same checks as [`AlarmJournal::open`]: no link followed, this user's
 /// own private file, no larger than a journal can be.

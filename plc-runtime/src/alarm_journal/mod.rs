@@ -89,7 +89,7 @@ mod writer;
 mod tests;
 
 pub use frame::MAX_LINE;
-pub use journal::{AlarmJournal, JournalOptions, read_journal};
+pub use journal::{AlarmJournal, JournalOptions, beside_retain, read_journal};
 pub use read::{Contents, Damage, Torn};
 pub use record::{Entry, Operator, Record};
 pub use replay::{RestoreReport, restore};
