@@ -226,30 +226,41 @@ impl Writer {
         }
     }
 
-    /// Appends what `out` holds, compacting first if the file is due for it. While
+    /// Appends what `out` holds, with a compaction before if the file is due for one (to make
+    /// room) and after (so the file is within its capacity and slack between batches). While
     /// compactions fail (tried again once per interval) the file grows to its hard limit,
     /// then records are only counted, for the summary written once one succeeds.
     fn write_out(&mut self, out: &mut Out) {
+        self.compact_if_due(out);
+        self.append(out);
+        self.compact_if_due(out);
+    }
+
+    fn compact_if_due(&mut self, out: &mut Out) {
         let interval = self.options.sync_interval;
         let retry = out
             .failed_compaction
             .is_none_or(|t: Instant| t.elapsed() >= interval);
-        if self.file.needs_compaction() && retry {
-            match self.file.compact() {
-                // The rewrite was synced whole.
-                Ok(()) => {
-                    out.dirty = false;
-                    out.last_sync = Instant::now();
-                    out.failed_compaction = None;
-                }
-                Err(e) => {
-                    log::error!(target: "plc_runtime::alarm_journal",
-                        "{e}; the journal grows to its limit, then only counts transitions, \
-                         until a compaction succeeds");
-                    out.failed_compaction = Some(Instant::now());
-                }
+        if !self.file.needs_compaction() || !retry {
+            return;
+        }
+        match self.file.compact() {
+            // The rewrite was synced whole.
+            Ok(()) => {
+                out.dirty = false;
+                out.last_sync = Instant::now();
+                out.failed_compaction = None;
+            }
+            Err(e) => {
+                log::error!(target: "plc_runtime::alarm_journal",
+                    "{e}; the journal grows to its limit, then only counts transitions, \
+                     until a compaction succeeds");
+                out.failed_compaction = Some(Instant::now());
             }
         }
+    }
+
+    fn append(&mut self, out: &mut Out) {
         let count = std::mem::take(&mut out.count);
         if count == 0 {
             return;

@@ -83,8 +83,9 @@ fn compaction_keeps_the_capacity_the_count_and_an_old_unacknowledged_alarm() {
 
     let text = std::fs::read_to_string(&file).unwrap();
     let lines = text.lines().count();
+    // The header, the states at the cut (`old`, `busy`), the records.
     assert!(
-        lines <= capacity + capacity / 4 + 3,
+        lines <= 1 + 2 + capacity + capacity / 4,
         "{lines} lines: never more than the capacity and its slack"
     );
     assert!(
