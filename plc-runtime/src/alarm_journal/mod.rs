@@ -77,6 +77,7 @@
 //! # Ok::<(), alarm_journal::JournalError>(())
 //! ```
 
+mod display;
 mod file;
 mod frame;
 mod journal;

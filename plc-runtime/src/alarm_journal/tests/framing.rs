@@ -201,3 +201,33 @@ fn the_format_example_in_the_module_docs_reads() {
         );
     }
 }
+
+#[test]
+fn a_record_reads_to_people_without_a_terminals_control_characters() {
+    let r = Record {
+        seq: 9,
+        time_ns: 0,
+        path: "door\u{1b}[2J".into(),
+        entry: Entry::Shelved {
+            by: Operator::new(None, "eve\u{7}").with_comment("a\nb"),
+            until_ns: 3_600_000_000_000,
+        },
+    };
+    assert_eq!(
+        r.to_string(),
+        r#"1970-01-01 00:00:00 UTC #9 door?[2J: shelved until 1970-01-01 01:00:00 UTC by eve?: "a\nb""#
+    );
+    let s = Record {
+        seq: 10,
+        time_ns: 0,
+        path: String::new(),
+        entry: Entry::Summarised {
+            transitions: 5,
+            actions: 1,
+        },
+    };
+    assert!(
+        s.to_string()
+            .contains("#10 5 transitions and 1 operator actions not recorded")
+    );
+}
