@@ -26,12 +26,20 @@ pub(super) fn hard_limit(capacity: usize) -> usize {
     capacity.saturating_add(slack(capacity).saturating_mul(2))
 }
 
+/// The most alarm states a compaction writes: one per alarm not normal at the cut, which
+/// the number of alarms bounds, not the capacity (a small journal of a large program keeps
+/// them all); past this many (a program with more alarms not normal at once) the rest are
+/// left out, and logged.
+pub(super) fn max_states(capacity: usize) -> usize {
+    capacity.max(10_000)
+}
+
 /// The largest file a journal of `capacity` records can be: its records up to the
-/// [`hard_limit`], as many alarm states as the capacity, the header, every line at its
-/// longest. A larger file is no journal this program wrote, and is not read into memory.
+/// [`hard_limit`], its [`max_states`], the header, every line at its longest. A larger file
+/// is no journal this program wrote, and is not read into memory.
 pub(super) fn max_bytes(capacity: usize) -> u64 {
     let lines = hard_limit(capacity)
-        .saturating_add(capacity)
+        .saturating_add(max_states(capacity))
         .saturating_add(1);
     (lines as u64).saturating_mul(MAX_LINE as u64)
 }
@@ -169,12 +177,19 @@ impl JournalFile {
             },
             &mut out,
         );
-        // As many states as records at most, so the file stays within `max_bytes`.
-        for (path, state) in states
+        let notable: Vec<_> = states
             .into_iter()
             .filter(|(_, s)| replay::notable(s))
-            .take(self.capacity)
-        {
+            .collect();
+        let limit = max_states(self.capacity);
+        if notable.len() > limit {
+            log::warn!(target: "plc_runtime::alarm_journal",
+                "alarm journal {}: {} alarms not normal where the file was cut, only {limit} \
+                 kept (the file's limit): the others start normal after a restart unless a \
+                 record kept names them",
+                self.path.display(), notable.len());
+        }
+        for (path, state) in notable.into_iter().take(limit) {
             encode(&Item::State { path, state }, &mut out);
         }
         for line in &units[cut..] {

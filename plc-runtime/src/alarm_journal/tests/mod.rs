@@ -1,6 +1,7 @@
 //! The journal's tests, one concern a file; what they share is here.
 
 mod bound;
+mod compaction;
 mod damage;
 mod framing;
 mod hostile;
