@@ -18,6 +18,9 @@ pub struct Damage {
     pub offset: u64,
     /// Its length in bytes, without the newline.
     pub len: usize,
+    /// The number (`seq`) of the last whole record before it, if any: the damaged one was
+    /// most likely the next.
+    pub after: Option<u64>,
     /// What is wrong with it.
     pub why: String,
 }
@@ -26,9 +29,13 @@ impl fmt::Display for Damage {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "line {} (byte {}, {} bytes) is damaged: {}",
-            self.line, self.offset, self.len, self.why
-        )
+            "line {} (byte {}, {} bytes",
+            self.line, self.offset, self.len
+        )?;
+        if let Some(seq) = self.after {
+            write!(f, ", after record #{seq}")?;
+        }
+        write!(f, ") is damaged: {}", self.why)
     }
 }
 
@@ -112,6 +119,7 @@ impl Contents {
                     line: i + 1,
                     offset: line.offset,
                     len: line.len,
+                    after: c.records.last().map(|r| r.seq),
                     why: "a header that is not the first line".into(),
                 }),
                 Ok(Item::State { path, state }) => {
@@ -126,6 +134,7 @@ impl Contents {
                     line: i + 1,
                     offset: line.offset,
                     len: line.len,
+                    after: c.records.last().map(|r| r.seq),
                     why,
                 }),
             }

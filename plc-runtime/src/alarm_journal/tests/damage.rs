@@ -27,7 +27,12 @@ fn a_byte_flipped_in_the_middle_damages_one_record_the_others_read() {
     let d = &c.damage()[0];
     assert_eq!((d.line, d.offset), (50, starts[49] as u64));
     assert!(d.why.contains("checksum"), "{}", d.why);
+    assert_eq!(d.after, Some(49));
     assert!(d.to_string().starts_with("line 50 (byte "), "{d}");
+    assert!(
+        d.to_string().contains("after record #49) is damaged"),
+        "{d}"
+    );
     assert!(c.torn().is_none());
     assert_eq!(c.next_seq(), 101);
 }
