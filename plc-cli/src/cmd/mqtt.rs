@@ -1,0 +1,84 @@
+//! `plc mqtt serve SEGMENT...`: a Sparkplug B edge node (plc-sparkplug) publishing running
+//! programs to an MQTT broker until Ctrl-C.
+
+use super::Error;
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::atomic::AtomicBool;
+
+/// `plc mqtt ...`.
+#[derive(clap::Subcommand)]
+pub enum MqttCommand {
+    /// Publishes running programs to an MQTT broker as a Sparkplug B edge node until Ctrl-C:
+    /// each program a device named by its segment, every value a metric named by its path,
+    /// sent when it changes (docs/sparkplug.md).
+    Serve {
+        /// Segment names of running programs.
+        #[arg(required = true)]
+        segments: Vec<String>,
+        /// The broker, mqtt://HOST:PORT.
+        #[arg(long)]
+        broker: String,
+        /// The Sparkplug group id.
+        #[arg(long)]
+        group: String,
+        /// The edge node id.
+        #[arg(long)]
+        node: String,
+        /// The primary host application's id: births wait until its STATE says online.
+        #[arg(long)]
+        primary_host: Option<String>,
+        /// Let device commands (DCMD) write, through the programs' own write checks.
+        #[arg(long)]
+        commands: bool,
+        /// Send a number only when it moved by more than this since it was last sent (0:
+        /// every change).
+        #[arg(long, default_value_t = 0.0)]
+        deadband: f64,
+        /// At most this many values per second of one metric.
+        #[arg(long)]
+        max_rate: Option<f64>,
+        /// The store directory (bdSeq); default under $XDG_STATE_HOME or ~/.local/state.
+        #[arg(long)]
+        store: Option<PathBuf>,
+        /// MQTT user name.
+        #[arg(long)]
+        user: Option<String>,
+        /// A file whose first line is the MQTT password (never on the command line).
+        #[arg(long)]
+        password_file: Option<PathBuf>,
+    },
+}
+
+pub fn run(command: MqttCommand) -> Result<(), Error> {
+    let MqttCommand::Serve {
+        segments,
+        broker,
+        group,
+        node,
+        primary_host,
+        commands,
+        deadband,
+        max_rate,
+        store,
+        user,
+        password_file,
+    } = command;
+    let options = plc_sparkplug::ServeOptions {
+        segments,
+        broker,
+        group,
+        node,
+        primary_host,
+        commands,
+        deadband,
+        max_rate,
+        store,
+        user,
+        password_file,
+    };
+    let stop = Arc::new(AtomicBool::new(false));
+    plc_shm::stop_on_signals(&stop).map_err(|e| format!("cannot take SIGINT and SIGTERM: {e}"))?;
+    plc_sparkplug::serve(&options, &stop)?;
+    Ok(())
+}
