@@ -1,0 +1,449 @@
+//! `plc mqtt serve` against a real broker and an independent Sparkplug B host: mosquitto
+//! (Debian's package, which `scripts/test.sh` installs) started on a loopback port, and
+//! `tests/sparkplug_host.py` (paho-mqtt and pysparkplug, in the virtual environment
+//! `scripts/test.sh` makes under `target/` and names in `PLC_SPARKPLUG_PYTHON`), which prints
+//! every message it receives as a JSON line and sends what the test asks on its stdin.
+//! Without either the tests say so and skip.
+
+mod common;
+mod owner;
+
+use common::{ChildGuard, SpawnGuarded, plc, stdout, wait_until};
+use owner::Owner;
+use serde_json::{Value, json};
+use std::io::{BufRead, BufReader, Write};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::mpsc::{Receiver, channel};
+use std::time::{Duration, Instant};
+
+#[test]
+fn owner_role() {
+    if std::env::var("PLC_TEST_ROLE").as_deref() == Ok("owner") {
+        owner::run();
+    }
+}
+
+/// The venv's python and mosquitto, or why the test cannot run.
+fn parts() -> Option<(PathBuf, PathBuf)> {
+    let python = match std::env::var_os("PLC_SPARKPLUG_PYTHON") {
+        Some(p) if !p.is_empty() => PathBuf::from(p),
+        _ => {
+            eprintln!(
+                "skipped: PLC_SPARKPLUG_PYTHON is not set: run the tests with scripts/test.sh, \
+                 which installs the Sparkplug test host (pysparkplug) into target/sparkplug-venv"
+            );
+            return None;
+        }
+    };
+    let mosquitto = std::env::var_os("PATH")
+        .into_iter()
+        .flat_map(|p| std::env::split_paths(&p).collect::<Vec<_>>())
+        .chain([PathBuf::from("/usr/sbin")])
+        .map(|d| d.join("mosquitto"))
+        .find(|p| p.is_file());
+    let Some(mosquitto) = mosquitto else {
+        eprintln!("skipped: mosquitto is not installed: scripts/test.sh installs it");
+        return None;
+    };
+    Some((python, mosquitto))
+}
+
+fn test_dir(what: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("plc-sparkplug-{what}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("test directory");
+    dir
+}
+
+fn free_port() -> u16 {
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
+    listener.local_addr().expect("its address").port()
+}
+
+/// mosquitto on a loopback port of its own; as root it stays root (`user root`), so it can
+/// read the configuration in the test's directory.
+fn broker(mosquitto: &Path, dir: &Path) -> (ChildGuard, u16) {
+    let port = free_port();
+    let conf = dir.join("mosquitto.conf");
+    std::fs::write(
+        &conf,
+        format!("listener {port} 127.0.0.1\nallow_anonymous true\nuser root\n"),
+    )
+    .expect("mosquitto.conf");
+    let log = std::fs::File::create(dir.join("mosquitto.log")).expect("log file");
+    let child = Command::new(mosquitto)
+        .arg("-c")
+        .arg(&conf)
+        .stdout(log.try_clone().expect("log file"))
+        .stderr(log)
+        .spawn_guarded()
+        .expect("mosquitto starts");
+    wait_until("mosquitto to listen", || {
+        std::net::TcpStream::connect(("127.0.0.1", port)).is_ok()
+    });
+    (child, port)
+}
+
+/// The Python host: its child, its stdin, and its lines.
+struct Host {
+    child: ChildGuard,
+    lines: Receiver<Value>,
+    seen: Vec<Value>,
+}
+
+impl Host {
+    fn start(python: &Path, port: u16, group: &str, id: &str) -> Host {
+        let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/sparkplug_host.py");
+        let mut child = Command::new(python)
+            .arg(script)
+            .args(["127.0.0.1", &port.to_string(), group, id])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn_guarded()
+            .expect("python starts");
+        let out = child.stdout.take().expect("stdout");
+        let (tx, lines) = channel();
+        std::thread::spawn(move || {
+            for line in BufReader::new(out).lines().map_while(Result::ok) {
+                match serde_json::from_str::<Value>(&line) {
+                    Ok(v) => {
+                        if tx.send(v).is_err() {
+                            return;
+                        }
+                    }
+                    Err(_) => eprintln!("host: {line}"),
+                }
+            }
+        });
+        let mut host = Host {
+            child,
+            lines,
+            seen: Vec::new(),
+        };
+        host.expect("the host subscribed", |v| v["ready"] == true);
+        host
+    }
+
+    fn send(&mut self, cmd: Value) {
+        let stdin = self.child.stdin.as_mut().expect("stdin");
+        writeln!(stdin, "{cmd}").expect("the host takes a command");
+        let op = cmd["op"].clone();
+        self.expect("the host to send it", |v| v["done"] == op);
+    }
+
+    /// The next line that `pred` accepts (the ones before are kept in `seen`), within 30 s.
+    fn expect(&mut self, what: &str, pred: impl Fn(&Value) -> bool) -> Value {
+        self.within(what, Duration::from_secs(30), pred)
+            .unwrap_or_else(|| panic!("timed out waiting for {what}"))
+    }
+
+    fn within(
+        &mut self,
+        what: &str,
+        limit: Duration,
+        pred: impl Fn(&Value) -> bool,
+    ) -> Option<Value> {
+        let deadline = Instant::now() + limit;
+        loop {
+            let left = deadline.checked_duration_since(Instant::now())?;
+            let v = self.lines.recv_timeout(left).ok()?;
+            assert!(
+                v.get("error").is_none(),
+                "{what}: the host could not decode {v}"
+            );
+            self.seen.push(v.clone());
+            if pred(&v) {
+                return Some(v);
+            }
+        }
+    }
+
+    /// Drops what arrived so far.
+    fn drain(&mut self) {
+        while self.lines.try_recv().is_ok() {}
+    }
+}
+
+fn is(kind: &'static str) -> impl Fn(&Value) -> bool {
+    move |v| v["type"] == kind
+}
+
+fn metric<'a>(msg: &'a Value, name: &str) -> &'a Value {
+    msg["metrics"]
+        .as_array()
+        .and_then(|ms| ms.iter().find(|m| m["name"] == name))
+        .unwrap_or_else(|| panic!("no metric {name} in {msg}"))
+}
+
+fn has_metric(v: &Value, name: &str, value: &Value) -> bool {
+    v["metrics"]
+        .as_array()
+        .is_some_and(|ms| ms.iter().any(|m| m["name"] == name && m["value"] == *value))
+}
+
+/// `plc mqtt serve` for `segment`, its log in `dir/serve-N.log`.
+fn serve(dir: &Path, n: usize, port: u16, segment: &str, extra: &[&str]) -> ChildGuard {
+    let log = std::fs::File::create(dir.join(format!("serve-{n}.log"))).expect("log file");
+    Command::new(env!("CARGO_BIN_EXE_plc"))
+        .args(["mqtt", "serve", segment, "--broker"])
+        .arg(format!("mqtt://127.0.0.1:{port}"))
+        .args(["--group", "plant", "--node", "line1", "--store"])
+        .arg(dir.join("store"))
+        .args(extra)
+        .stdout(log.try_clone().expect("log file"))
+        .stderr(log)
+        .spawn_guarded()
+        .expect("plc mqtt serve starts")
+}
+
+fn log_of(dir: &Path, n: usize) -> String {
+    std::fs::read_to_string(dir.join(format!("serve-{n}.log"))).unwrap_or_default()
+}
+
+fn wait_log(dir: &Path, n: usize, text: &str) {
+    let deadline = Instant::now() + Duration::from_secs(30);
+    while !log_of(dir, n).contains(text) {
+        assert!(
+            Instant::now() < deadline,
+            "serve-{n}.log never said `{text}`:\n{}",
+            log_of(dir, n)
+        );
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+/// A value as `plc get` prints it (`name = value`).
+fn get(segment: &str, name: &str) -> String {
+    let out = stdout(&plc(&["get", segment, name]));
+    let line = out.trim();
+    line.split_once(" = ").map_or(line, |(_, v)| v).to_string()
+}
+
+#[test]
+fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() {
+    let Some((python, mosquitto)) = parts() else {
+        return;
+    };
+    let dir = test_dir("host");
+    let (_broker, port) = broker(&mosquitto, &dir);
+    let program = Owner::start("spb_host");
+    let seg = program.segment.clone();
+    let mut host = Host::start(&python, port, "plant", "scada");
+
+    let mut edge = serve(&dir, 1, port, &seg, &[]);
+    let nbirth = host.expect("NBIRTH", is("NBIRTH"));
+    assert_eq!(nbirth["seq"], 0);
+    assert_eq!(
+        metric(&nbirth, "bdSeq")["value"],
+        0,
+        "a fresh store starts at 0"
+    );
+    assert_eq!(metric(&nbirth, "bdSeq")["datatype"], "INT64");
+    let rebirth = metric(&nbirth, "Node Control/Rebirth");
+    assert_eq!(
+        (&rebirth["datatype"], &rebirth["value"]),
+        (&json!("BOOLEAN"), &json!(false))
+    );
+
+    let dbirth = host.expect("DBIRTH", is("DBIRTH"));
+    assert_eq!(dbirth["device"], seg.as_str());
+    assert_eq!(dbirth["seq"], 1);
+    let expected = [
+        ("inputs", "UINT16", true),
+        ("door_closed", "BOOLEAN", true),
+        ("speed_setpoint", "UINT16", false),
+        ("speed_actual", "UINT16", true),
+        ("serial", "UINT32", true),
+        ("recipe", "STRING", false),
+        ("counter", "UINT64", false),
+        ("table[0]", "INT16", false),
+        ("table[2]", "INT16", false),
+        ("dwell", "INT64", false),
+    ];
+    for (name, datatype, read_only) in expected {
+        let m = metric(&dbirth, name);
+        assert_eq!(m["datatype"], datatype, "{name}");
+        assert_eq!(m["properties"]["readOnly"], read_only, "{name}");
+    }
+    assert_eq!(metric(&dbirth, "speed_setpoint")["value"], 100);
+    assert_eq!(metric(&dbirth, "serial")["value"], 7);
+    assert_eq!(metric(&dbirth, "recipe")["value"], "none");
+    assert_eq!(metric(&dbirth, "dwell")["value"], 1_500_000_000i64);
+    assert_eq!(metric(&dbirth, "dwell")["properties"]["engUnit"], "ns");
+    assert_eq!(
+        metric(&dbirth, "inputs")["properties"]["description"],
+        "Digital inputs"
+    );
+    let metrics = dbirth["metrics"].as_array().expect("metrics");
+    let mut aliases: Vec<u64> = metrics
+        .iter()
+        .map(|m| m["alias"].as_u64().expect("alias"))
+        .collect();
+    aliases.sort_unstable();
+    aliases.dedup();
+    assert_eq!(
+        aliases.len(),
+        metrics.len(),
+        "every metric has its own alias"
+    );
+    // Values carry the cycle's time: within a minute of now, not zero.
+    let now_ms = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .expect("clock")
+        .as_millis() as i64;
+    let ts = metric(&dbirth, "counter")["timestamp"]
+        .as_i64()
+        .expect("timestamp");
+    assert!(
+        (now_ms - ts).abs() < 60_000,
+        "timestamp {ts} vs now {now_ms}"
+    );
+
+    // Data by exception: the counter moves every cycle; a value set arrives once set.
+    host.expect("DDATA of the counter", |v| {
+        v["type"] == "DDATA"
+            && v["metrics"]
+                .as_array()
+                .is_some_and(|ms| ms.iter().any(|m| m["name"] == "counter"))
+    });
+    assert!(plc(&["set", &seg, "speed_setpoint=250"]).status.success());
+    host.expect("DDATA of speed_setpoint", |v| {
+        v["type"] == "DDATA" && has_metric(v, "speed_setpoint", &json!(250))
+    });
+
+    // A rebirth request: births again, same bdSeq, seq from 0.
+    host.send(json!({"op": "rebirth", "node": "line1"}));
+    let again = host.expect("NBIRTH after rebirth", is("NBIRTH"));
+    assert_eq!(
+        (&again["seq"], &metric(&again, "bdSeq")["value"]),
+        (&json!(0), &json!(0))
+    );
+    host.expect("DBIRTH after rebirth", is("DBIRTH"));
+
+    // Without --commands a DCMD writes nothing.
+    host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "name": "speed_setpoint",
+                     "datatype": "UINT16", "value": 333}),
+    );
+    wait_log(&dir, 1, "commands are off (start with --commands)");
+    assert_eq!(get(&seg, "speed_setpoint"), "250");
+
+    // Hostile node commands: no protobuf, megabytes, an unknown metric. Refused, logged.
+    host.send(json!({"op": "raw", "topic": "spBv1.0/plant/NCMD/line1", "hex": "deadbeef00ff"}));
+    wait_log(&dir, 1, "not a Sparkplug B payload");
+    host.send(json!({"op": "raw", "topic": "spBv1.0/plant/NCMD/line1", "fill": 3 << 20}));
+    wait_log(&dir, 1, "bytes, more than");
+
+    // kill -9: the broker sends the Will, the NDEATH with the birth's bdSeq.
+    edge.signal(libc::SIGKILL);
+    let death = host.expect("NDEATH", is("NDEATH"));
+    assert_eq!(death["bdSeq"], 0);
+    drop(edge);
+
+    // A restart goes on with the next bdSeq; now with commands.
+    let mut edge = serve(&dir, 2, port, &seg, &["--commands"]);
+    let nbirth = host.expect("NBIRTH after restart", is("NBIRTH"));
+    assert_eq!(metric(&nbirth, "bdSeq")["value"], 1);
+    let dbirth = host.expect("DBIRTH after restart", is("DBIRTH"));
+    let alias = metric(&dbirth, "speed_setpoint")["alias"].clone();
+
+    // A DCMD by alias (as hosts send them once a birth gave one) writes through the program's
+    // own checks; the change comes back as data.
+    host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "alias": alias,
+                     "datatype": "UINT16", "value": 333}),
+    );
+    host.expect("DDATA of the written speed_setpoint", |v| {
+        v["type"] == "DDATA" && has_metric(v, "speed_setpoint", &json!(333))
+    });
+    assert_eq!(get(&seg, "speed_setpoint"), "333");
+    // A read-only variable, a wrong datatype, an unknown name, bytes that are no protobuf:
+    // refused and logged, nothing written, the node goes on publishing.
+    host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "name": "serial",
+                     "datatype": "UINT32", "value": 9}),
+    );
+    wait_log(&dir, 2, "metric `serial`");
+    host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "name": "speed_setpoint",
+                     "datatype": "STRING", "value": "fast"}),
+    );
+    wait_log(&dir, 2, "must be in the payload's int_value field");
+    host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "name": "nonesuch",
+                     "datatype": "UINT16", "value": 1}),
+    );
+    wait_log(&dir, 2, "no metric is named `nonesuch`");
+    host.send(
+        json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "fill": 100}),
+    );
+    wait_log(&dir, 2, "not a Sparkplug B payload");
+    assert_eq!(get(&seg, "serial"), "7");
+    assert_eq!(get(&seg, "speed_setpoint"), "333");
+    host.drain();
+    host.expect("DDATA after the hostile commands", is("DDATA"));
+
+    // The program stopping is the device's death; its return a new birth.
+    drop(program);
+    host.expect("DDEATH", |v| {
+        v["type"] == "DDEATH" && v["device"] == seg.as_str()
+    });
+    let program = Owner::start("spb_host");
+    let reborn = host.expect("DBIRTH of the returned program", is("DBIRTH"));
+    assert_eq!(metric(&reborn, "speed_setpoint")["value"], 100);
+
+    // A clean stop says the node's death itself.
+    assert!(
+        edge.terminate().is_ok_and(|s| s.success()),
+        "{}",
+        log_of(&dir, 2)
+    );
+    let death = host.expect("NDEATH at a clean stop", is("NDEATH"));
+    assert_eq!(death["bdSeq"], 1);
+    drop(program);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn births_wait_for_the_primary_host_and_its_going_offline_ends_the_session() {
+    let Some((python, mosquitto)) = parts() else {
+        return;
+    };
+    let dir = test_dir("primary");
+    let (_broker, port) = broker(&mosquitto, &dir);
+    let program = Owner::start("spb_primary");
+    let mut host = Host::start(&python, port, "plant", "scada");
+    host.send(json!({"op": "state", "online": false, "timestamp": 1000}));
+    let mut edge = serve(
+        &dir,
+        1,
+        port,
+        &program.segment,
+        &["--primary-host", "scada"],
+    );
+    wait_log(&dir, 1, "primary host offline");
+    assert!(
+        host.within("no birth", Duration::from_secs(2), is("NBIRTH"))
+            .is_none(),
+        "a birth before the primary host is online"
+    );
+    host.send(json!({"op": "state", "online": true, "timestamp": 2000}));
+    let nbirth = host.expect("NBIRTH once the host is online", is("NBIRTH"));
+    assert_eq!(metric(&nbirth, "bdSeq")["value"], 0);
+    host.expect("DBIRTH", is("DBIRTH"));
+    // A stale STATE (older than the last) changes nothing.
+    host.send(json!({"op": "state", "online": false, "timestamp": 1500}));
+    wait_log(&dir, 1, "a stale STATE ignored");
+    // Offline: the node dies and reconnects, and is born again (next bdSeq) when the host is
+    // back.
+    host.send(json!({"op": "state", "online": false, "timestamp": 3000}));
+    let death = host.expect("NDEATH when the host went offline", is("NDEATH"));
+    assert_eq!(death["bdSeq"], 0);
+    host.send(json!({"op": "state", "online": true, "timestamp": 4000}));
+    let nbirth = host.expect("NBIRTH when the host is back", is("NBIRTH"));
+    assert_eq!(metric(&nbirth, "bdSeq")["value"], 1);
+    assert!(edge.terminate().is_ok_and(|s| s.success()));
+    drop(program);
+    let _ = std::fs::remove_dir_all(&dir);
+}
