@@ -89,6 +89,8 @@ fn broker(mosquitto: &Path, dir: &Path) -> (ChildGuard, u16) {
 struct Host {
     child: ChildGuard,
     lines: Receiver<Value>,
+    /// Lines that arrived while a command was being sent, not yet looked at.
+    pending: std::collections::VecDeque<Value>,
     seen: Vec<Value>,
 }
 
@@ -119,6 +121,7 @@ impl Host {
         let mut host = Host {
             child,
             lines,
+            pending: Default::default(),
             seen: Vec::new(),
         };
         host.expect("the host subscribed", |v| v["ready"] == true);
@@ -129,13 +132,46 @@ impl Host {
         let stdin = self.child.stdin.as_mut().expect("stdin");
         writeln!(stdin, "{cmd}").expect("the host takes a command");
         let op = cmd["op"].clone();
-        self.expect("the host to send it", |v| v["done"] == op);
+        // What arrives before the host says it sent the command (a birth it caused, for
+        // one) is kept for the expectations that follow.
+        let deadline = Instant::now() + Duration::from_secs(30);
+        loop {
+            let left = deadline
+                .checked_duration_since(Instant::now())
+                .unwrap_or_else(|| panic!("the host never sent {cmd}"));
+            let v = self
+                .lines
+                .recv_timeout(left)
+                .unwrap_or_else(|_| panic!("the host never sent {cmd}"));
+            if v["done"] == op {
+                return;
+            }
+            self.pending.push_back(v);
+        }
     }
 
     /// The next line that `pred` accepts (the ones before are kept in `seen`), within 30 s.
     fn expect(&mut self, what: &str, pred: impl Fn(&Value) -> bool) -> Value {
-        self.within(what, Duration::from_secs(30), pred)
-            .unwrap_or_else(|| panic!("timed out waiting for {what}"))
+        match self.within(what, Duration::from_secs(30), pred) {
+            Some(v) => v,
+            None => {
+                let tail: Vec<String> = self
+                    .seen
+                    .iter()
+                    .rev()
+                    .take(5)
+                    .map(|v| {
+                        let mut t = v.to_string();
+                        t.truncate(300);
+                        t
+                    })
+                    .collect();
+                panic!(
+                    "timed out waiting for {what}; the last lines, newest first:\n{}",
+                    tail.join("\n")
+                )
+            }
+        }
     }
 
     fn within(
@@ -146,8 +182,13 @@ impl Host {
     ) -> Option<Value> {
         let deadline = Instant::now() + limit;
         loop {
-            let left = deadline.checked_duration_since(Instant::now())?;
-            let v = self.lines.recv_timeout(left).ok()?;
+            let v = match self.pending.pop_front() {
+                Some(v) => v,
+                None => {
+                    let left = deadline.checked_duration_since(Instant::now())?;
+                    self.lines.recv_timeout(left).ok()?
+                }
+            };
             assert!(
                 v.get("error").is_none(),
                 "{what}: the host could not decode {v}"
@@ -161,6 +202,7 @@ impl Host {
 
     /// Drops what arrived so far.
     fn drain(&mut self) {
+        self.pending.clear();
         while self.lines.try_recv().is_ok() {}
     }
 }
@@ -443,6 +485,66 @@ fn births_wait_for_the_primary_host_and_its_going_offline_ends_the_session() {
     host.send(json!({"op": "state", "online": true, "timestamp": 4000}));
     let nbirth = host.expect("NBIRTH when the host is back", is("NBIRTH"));
     assert_eq!(metric(&nbirth, "bdSeq")["value"], 1);
+    assert!(edge.terminate().is_ok_and(|s| s.success()));
+    drop(program);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The counter's values in the DDATA that `host` receives within `limit`, with their
+/// timestamps.
+fn counter_values(host: &mut Host, limit: Duration) -> Vec<(i64, i64)> {
+    let mut seen = Vec::new();
+    let deadline = Instant::now() + limit;
+    while let Some(left) = deadline.checked_duration_since(Instant::now()) {
+        let Some(v) = host.within("DDATA", left, is("DDATA")) else {
+            break;
+        };
+        for m in v["metrics"].as_array().into_iter().flatten() {
+            if m["name"] == "counter" {
+                seen.push((
+                    m["value"].as_i64().expect("a number"),
+                    m["timestamp"].as_i64().expect("a timestamp"),
+                ));
+            }
+        }
+    }
+    seen
+}
+
+#[test]
+fn the_deadband_and_the_rate_limit_hold_back_small_and_frequent_changes() {
+    let Some((python, mosquitto)) = parts() else {
+        return;
+    };
+    let dir = test_dir("deadband");
+    let (_broker, port) = broker(&mosquitto, &dir);
+    // The counter goes up by one every 5 ms cycle.
+    let program = Owner::start("spb_deadband");
+    let mut host = Host::start(&python, port, "plant", "scada");
+
+    let mut edge = serve(&dir, 1, port, &program.segment, &["--deadband", "50"]);
+    host.expect("DBIRTH", is("DBIRTH"));
+    let values = counter_values(&mut host, Duration::from_secs(2));
+    assert!(values.len() >= 2, "the counter is sent at all: {values:?}");
+    for w in values.windows(2) {
+        assert!(
+            w[1].0 - w[0].0 > 50,
+            "a change within the deadband was sent: {values:?}"
+        );
+    }
+    assert!(edge.terminate().is_ok_and(|s| s.success()));
+    host.expect("NDEATH", is("NDEATH"));
+
+    let mut edge = serve(&dir, 2, port, &program.segment, &["--max-rate", "4"]);
+    host.expect("DBIRTH", is("DBIRTH"));
+    let values = counter_values(&mut host, Duration::from_secs(2));
+    assert!(values.len() >= 2, "the counter is sent at all: {values:?}");
+    assert!(values.len() <= 10, "at most 4 a second: {values:?}");
+    for w in values.windows(2) {
+        // Cycle times: a held change goes out at least 250 ms after the last one sent (its
+        // cycle may be a little earlier than the send).
+        assert!(w[1].1 - w[0].1 >= 240, "values too close: {values:?}");
+    }
     assert!(edge.terminate().is_ok_and(|s| s.success()));
     drop(program);
     let _ = std::fs::remove_dir_all(&dir);

@@ -316,7 +316,7 @@ mod tests {
         ];
         for (ty, v) in cases {
             let p = to_payload(DataType::of(ty), &v).unwrap_or_else(|| panic!("{ty:?}"));
-            assert_eq!(from_payload(ty, Some(&p)), Ok(v.clone()), "{ty:?}");
+            assert_eq!(from_payload(ty, Some(&p)), Ok(v), "{ty:?}");
         }
     }
 
