@@ -1,13 +1,12 @@
 //! The store directory: the last birth/death sequence number (bdSeq) used, so a restarted edge
 //! node goes on with the next and a host never takes a new session's death for an old one's.
 
-use std::fs::{self, File, OpenOptions};
-use std::io::{Read, Write};
+use std::fs::{self, OpenOptions};
+use std::io::Read;
 use std::os::unix::fs::{OpenOptionsExt, PermissionsExt};
 use std::path::{Path, PathBuf};
 
 const FILE: &str = "bdseq";
-const TEMP: &str = "bdseq.tmp";
 /// More than any valid file holds ("255\n"): a larger one is not ours.
 const MAX_LEN: u64 = 16;
 
@@ -76,39 +75,21 @@ impl Store {
             .map_err(|_| bad(format!("holds `{}`, not a number 0..255", text.trim())))
     }
 
-    /// Stores `bd_seq`: written to a new file beside it, synced, and renamed over the old one,
-    /// so a crash leaves the old number or the new, never half of one.
+    /// Stores `bd_seq` whole or not at all (plc-files: a new private temporary file, never
+    /// through a link, synced, renamed over the old one, the directory synced), so a crash
+    /// leaves the old number or the new, never half of one.
     pub fn save_bd_seq(&self, bd_seq: u8) -> Result<(), String> {
-        let temp = self.dir.join(TEMP);
-        let fail = |e: std::io::Error| {
+        plc_files::write_atomically(
+            &self.dir.join(FILE),
+            format!("{bd_seq}\n").as_bytes(),
+            0o600,
+        )
+        .map_err(|e| {
             format!(
                 "cannot store bdSeq in {}: {e}; check the store directory's permissions",
                 self.dir.display()
             )
-        };
-        // A stale temporary file (a crash between write and rename) is ours to replace; a link
-        // planted there is removed, never followed.
-        match fs::remove_file(&temp) {
-            Ok(()) => {}
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-            Err(e) => return Err(fail(e)),
-        }
-        let mut file: File = OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .mode(0o600)
-            .custom_flags(libc::O_NOFOLLOW)
-            .open(&temp)
-            .map_err(fail)?;
-        file.write_all(format!("{bd_seq}\n").as_bytes())
-            .and_then(|()| file.sync_all())
-            .map_err(fail)?;
-        fs::rename(&temp, self.dir.join(FILE)).map_err(fail)?;
-        // The rename itself survives a power loss only once the directory is synced.
-        if let Ok(d) = File::open(&self.dir) {
-            let _ = d.sync_all();
-        }
-        Ok(())
+        })
     }
 
     /// The bdSeq for the next session: one after the last stored (255 wraps to 0), stored
@@ -156,7 +137,12 @@ mod tests {
         assert_eq!(again.next_bd_seq(), Ok(2));
         again.save_bd_seq(255).unwrap();
         assert_eq!(again.next_bd_seq(), Ok(0));
-        assert!(!dir.join(TEMP).exists());
+        let names: Vec<_> = fs::read_dir(&dir)
+            .unwrap()
+            .flatten()
+            .map(|e| e.file_name())
+            .collect();
+        assert_eq!(names, ["bdseq"], "no temporary file left");
         fs::remove_dir_all(&dir).unwrap();
     }
 
@@ -185,8 +171,6 @@ mod tests {
                 .contains("a link is refused")
         );
         // Writing replaces the link, never writes through it.
-        fs::remove_file(dir.join(FILE)).unwrap();
-        std::os::unix::fs::symlink(&target, dir.join(TEMP)).unwrap();
         store.save_bd_seq(9).unwrap();
         assert_eq!(fs::read_to_string(&target).unwrap(), "7\n");
         assert_eq!(store.last_bd_seq(), Ok(Some(9)));
