@@ -22,6 +22,7 @@ pub mod node;
 pub mod proto;
 pub mod session;
 pub mod store;
+pub mod tls;
 pub mod topic;
 
 use std::path::PathBuf;
@@ -53,6 +54,12 @@ pub struct ServeOptions {
     pub user: Option<String>,
     /// The file whose first line is the MQTT password.
     pub password_file: Option<PathBuf>,
+    /// The CA certificate (PEM) of an `mqtts://` broker.
+    pub ca: Option<PathBuf>,
+    /// The client certificate (PEM) for an `mqtts://` broker that asks for one.
+    pub cert: Option<PathBuf>,
+    /// The client certificate's private key (PEM).
+    pub key: Option<PathBuf>,
 }
 
 /// Runs the edge node until `stop` is set (then it publishes its death and disconnects).
@@ -100,7 +107,21 @@ fn check(o: &ServeOptions) -> Result<session::Broker, String> {
             "--max-rate must be above 0 and at most 1000 values per second, not {r}"
         ));
     }
-    let (host, port) = parse_broker(&o.broker)?;
+    let (host, port, secure) = parse_broker(&o.broker)?;
+    let tls = if secure {
+        Some(tls::client_config(&tls::TlsFiles {
+            ca: o.ca.as_deref(),
+            cert: o.cert.as_deref(),
+            key: o.key.as_deref(),
+        })?)
+    } else if o.ca.is_some() || o.cert.is_some() || o.key.is_some() {
+        return Err(format!(
+            "--ca, --cert and --key are for TLS: give the broker as mqtts://, not {}",
+            o.broker
+        ));
+    } else {
+        None
+    };
     let login = match (&o.user, &o.password_file) {
         (Some(u), Some(f)) => Some((u.clone(), read_password(f)?)),
         (Some(u), None) => Some((u.clone(), String::new())),
@@ -112,38 +133,42 @@ fn check(o: &ServeOptions) -> Result<session::Broker, String> {
         port,
         client_id: format!("plc-sparkplug-{}-{}", o.group, o.node),
         login,
+        tls,
     })
 }
 
-/// `mqtt://HOST[:PORT]` as host and port.
+/// `mqtt://HOST[:PORT]` (port 1883 by default) or `mqtts://HOST[:PORT]` (TLS, port 8883) as
+/// host, port and whether it is TLS.
 ///
 /// ```
-/// assert_eq!(plc_sparkplug::parse_broker("mqtt://10.0.0.5:1884"), Ok(("10.0.0.5".into(), 1884)));
-/// assert_eq!(plc_sparkplug::parse_broker("mqtt://broker"), Ok(("broker".into(), 1883)));
-/// assert!(plc_sparkplug::parse_broker("mqtts://broker").unwrap_err().contains("TLS"));
+/// use plc_sparkplug::parse_broker;
+/// assert_eq!(parse_broker("mqtt://10.0.0.5:1884"), Ok(("10.0.0.5".into(), 1884, false)));
+/// assert_eq!(parse_broker("mqtt://broker"), Ok(("broker".into(), 1883, false)));
+/// assert_eq!(parse_broker("mqtts://broker"), Ok(("broker".into(), 8883, true)));
+/// assert_eq!(parse_broker("mqtt://[::1]:1884"), Ok(("::1".into(), 1884, false)));
+/// assert!(parse_broker("tcp://broker").unwrap_err().contains("mqtt://HOST:PORT"));
 /// ```
-pub fn parse_broker(url: &str) -> Result<(String, u16), String> {
-    if url.starts_with("mqtts://") {
+pub fn parse_broker(url: &str) -> Result<(String, u16, bool), String> {
+    let (rest, secure, default_port) = if let Some(r) = url.strip_prefix("mqtts://") {
+        (r, true, 8883)
+    } else if let Some(r) = url.strip_prefix("mqtt://") {
+        (r, false, 1883)
+    } else {
         return Err(format!(
-            "--broker {url}: TLS is not built in yet: use mqtt:// on a trusted network, or a \
-             TLS-terminating proxy on this machine"
-        ));
-    }
-    let Some(rest) = url.strip_prefix("mqtt://") else {
-        return Err(format!(
-            "--broker {url}: give the broker as mqtt://HOST:PORT (e.g. mqtt://127.0.0.1:1883)"
+            "--broker {url}: give the broker as mqtt://HOST:PORT, or mqtts://HOST:PORT for TLS \
+             (e.g. mqtt://127.0.0.1:1883)"
         ));
     };
     let rest = rest.trim_end_matches('/');
     let (host, port) = match rest.rsplit_once(':') {
         // An IPv6 address is bracketed: [::1]:1883.
-        Some((h, p)) if !p.contains(']') => {
+        Some((h, p)) if !p.contains(']') && (!h.contains(':') || h.ends_with(']')) => {
             let port = p.parse::<u16>().ok().filter(|&p| p > 0).ok_or_else(|| {
                 format!("--broker {url}: the port `{p}` is not a number 1..65535")
             })?;
             (h, port)
         }
-        _ => (rest, 1883),
+        _ => (rest, default_port),
     };
     let host = host.trim_start_matches('[').trim_end_matches(']');
     if host.is_empty() || host.contains(['/', '?', '@']) {
@@ -152,7 +177,7 @@ pub fn parse_broker(url: &str) -> Result<(String, u16), String> {
              --user and --password-file)"
         ));
     }
-    Ok((host.to_string(), port))
+    Ok((host.to_string(), port, secure))
 }
 
 /// The password: the file's first line (never the command line, which others can see).

@@ -3,7 +3,9 @@
 //! is not resumed: the node starts a new one with the next bdSeq, as the specification wants
 //! for every new MQTT session.
 
-use rumqttc::{Client, Connection, Event, LastWill, MqttOptions, Packet, QoS};
+use rumqttc::{
+    Client, Connection, Event, LastWill, MqttOptions, Packet, QoS, TlsConfiguration, Transport,
+};
 use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
 use std::time::Duration;
 
@@ -29,6 +31,8 @@ pub struct Broker {
     pub client_id: String,
     /// User and password, when the broker asks for them.
     pub login: Option<(String, String)>,
+    /// TLS, for an `mqtts://` broker.
+    pub tls: Option<std::sync::Arc<rustls::ClientConfig>>,
 }
 
 /// What the connection thread reports.
@@ -66,6 +70,11 @@ impl Session {
             .set_clean_session(true)
             .set_max_packet_size(MAX_INCOMING, MAX_OUTGOING)
             .set_last_will(LastWill::new(will_topic, will, QoS::AtLeastOnce, false));
+        if let Some(config) = &broker.tls {
+            options.set_transport(Transport::tls_with_config(TlsConfiguration::Rustls(
+                config.clone(),
+            )));
+        }
         if let Some((user, password)) = &broker.login {
             options.set_credentials(user, password);
         }

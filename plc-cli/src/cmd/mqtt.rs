@@ -16,7 +16,7 @@ pub enum MqttCommand {
         /// Segment names of running programs.
         #[arg(required = true)]
         segments: Vec<String>,
-        /// The broker, mqtt://HOST:PORT.
+        /// The broker, mqtt://HOST:PORT, or mqtts://HOST:PORT for TLS (with --ca).
         #[arg(long)]
         broker: String,
         /// The Sparkplug group id.
@@ -47,6 +47,15 @@ pub enum MqttCommand {
         /// A file whose first line is the MQTT password (never on the command line).
         #[arg(long)]
         password_file: Option<PathBuf>,
+        /// The CA certificate (PEM) that signed an mqtts:// broker's certificate.
+        #[arg(long)]
+        ca: Option<PathBuf>,
+        /// A client certificate (PEM) for a broker that asks for one (with --key).
+        #[arg(long)]
+        cert: Option<PathBuf>,
+        /// The client certificate's private key (PEM).
+        #[arg(long)]
+        key: Option<PathBuf>,
     },
 }
 
@@ -63,6 +72,9 @@ pub fn run(command: MqttCommand) -> Result<(), Error> {
         store,
         user,
         password_file,
+        ca,
+        cert,
+        key,
     } = command;
     let options = plc_sparkplug::ServeOptions {
         segments,
@@ -76,6 +88,9 @@ pub fn run(command: MqttCommand) -> Result<(), Error> {
         store,
         user,
         password_file,
+        ca,
+        cert,
+        key,
     };
     let stop = Arc::new(AtomicBool::new(false));
     plc_shm::stop_on_signals(&stop).map_err(|e| format!("cannot take SIGINT and SIGTERM: {e}"))?;
