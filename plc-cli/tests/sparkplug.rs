@@ -181,6 +181,20 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
         json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "fill": 100}),
     );
     wait_log(&dir, 2, "not a Sparkplug B payload");
+    // A thousand commands as fast as the host sends them: each refused and counted.
+    let started = Instant::now();
+    host.send(
+        json!({"op": "flood", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"),
+                     "hex": "0a03", "count": 1000}),
+    );
+    let flood = started.elapsed();
+    // The log shows at most 10 lines in 10 s; the first after that window counts them all.
+    std::thread::sleep(Duration::from_secs(10));
+    host.send(
+        json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "hex": "ff"}),
+    );
+    wait_log(&dir, 2, "(1005 refused so far)");
+    eprintln!("1000 malformed commands sent in {flood:?}");
     assert_eq!(get(&seg, "serial"), "7");
     assert_eq!(get(&seg, "speed_setpoint"), "333");
     host.drain();

@@ -1,7 +1,7 @@
 """An independent Sparkplug B host for plc-cli/tests/sparkplug.rs: paho-mqtt subscribes to a
 group's messages, pysparkplug decodes them, and each arrives on stdout as one JSON line. The
 test drives it with JSON lines on stdin: commands (NCMD rebirth, DCMD writes, raw bytes) and
-the host's STATE.
+the host's STATE, and floods of raw messages.
 
 usage: sparkplug_host.py HOST PORT GROUP HOST_ID
 """
@@ -127,6 +127,12 @@ for raw_line in sys.stdin:
         client.publish(topic, payload, qos=1).wait_for_publish()
     elif op == "raw":
         data = bytes.fromhex(cmd.get("hex", "")) + b"\xff" * cmd.get("fill", 0)
+        client.publish(cmd["topic"], data, qos=1).wait_for_publish()
+    elif op == "flood":
+        # As fast as the client sends: QoS 0, then one QoS 1 to know they all left.
+        data = bytes.fromhex(cmd["hex"])
+        for _ in range(cmd["count"] - 1):
+            client.publish(cmd["topic"], data, qos=0)
         client.publish(cmd["topic"], data, qos=1).wait_for_publish()
     elif op == "state":
         payload = json.dumps({"online": cmd["online"], "timestamp": cmd.get("timestamp", now)})
