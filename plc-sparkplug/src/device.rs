@@ -124,8 +124,14 @@ impl Device {
     }
 
     /// A DDATA payload of the metrics that changed beyond the deadband (and whose rate limit
-    /// lets them go), by alias only; `None` when nothing is to be sent.
-    pub fn changes(&mut self, policy: &DataPolicy) -> Result<Option<Payload>, String> {
+    /// lets them go), by alias only; `None` when nothing is to be sent. `historical` ones (for
+    /// the store, sent after a later birth) carry names, which stay true if the program comes
+    /// back with another declaration, and `is_historical`.
+    pub fn changes(
+        &mut self,
+        policy: &DataPolicy,
+        historical: bool,
+    ) -> Result<Option<Payload>, String> {
         let (ts, cycle) = self.value_time();
         let held = policy.min_interval > Duration::ZERO;
         // Without a new cycle nothing changed, unless a change is being held by the rate limit.
@@ -150,10 +156,15 @@ impl Device {
                 continue;
             }
             let mut m = Metric {
-                alias: Some(alias as u64),
                 timestamp: Some(ts),
                 ..Metric::default()
             };
+            if historical {
+                m.name = Some(e.at.path.clone());
+                m.is_historical = Some(true);
+            } else {
+                m.alias = Some(alias as u64);
+            }
             set_value(&mut m, e.datatype, value.as_ref());
             e.sent = value;
             e.sent_at = Some(now);

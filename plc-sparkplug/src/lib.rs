@@ -17,6 +17,7 @@
 #![deny(missing_docs)]
 
 pub mod device;
+pub mod forward;
 pub mod metric;
 pub mod node;
 pub mod proto;
@@ -48,8 +49,12 @@ pub struct ServeOptions {
     pub deadband: f64,
     /// At most this many values per second per metric.
     pub max_rate: Option<f64>,
-    /// The store directory (bdSeq); `None` for the user's state directory.
+    /// The store directory (bdSeq, data waiting for a birth); `None` for the user's state
+    /// directory.
     pub store: Option<PathBuf>,
+    /// The bound of the data waiting in the store, in bytes; `None` for
+    /// [`forward::DEFAULT_MAX`].
+    pub store_max: Option<u64>,
     /// The MQTT user name.
     pub user: Option<String>,
     /// The file whose first line is the MQTT password.
@@ -75,7 +80,8 @@ pub fn serve(options: &ServeOptions, stop: &Arc<AtomicBool>) -> Result<(), Strin
     log::info!(target: "plc_sparkplug",
         "edge node {}/{}: {} device(s), store {}", options.group, options.node,
         options.segments.len(), dir.display());
-    node::Node::new(options.clone(), broker, store).run(stop)
+    let forward = forward::Forward::open(&dir, options.store_max.unwrap_or(forward::DEFAULT_MAX));
+    node::Node::new(options.clone(), broker, store, forward).run(stop)
 }
 
 /// Checks the options: ids, broker address, deadband, rate, password file.
@@ -105,6 +111,14 @@ fn check(o: &ServeOptions) -> Result<session::Broker, String> {
     {
         return Err(format!(
             "--max-rate must be above 0 and at most 1000 values per second, not {r}"
+        ));
+    }
+    if let Some(m) = o.store_max
+        && m < forward::MIN_MAX
+    {
+        return Err(format!(
+            "--store-max {m} is too small: give at least {} bytes",
+            forward::MIN_MAX
         ));
     }
     let (host, port, secure) = parse_broker(&o.broker)?;

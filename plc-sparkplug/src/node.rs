@@ -3,6 +3,7 @@
 
 use crate::ServeOptions;
 use crate::device::{DataPolicy, Device, now_ms};
+use crate::forward::Forward;
 use crate::metric::{DataType, bool_property};
 use crate::proto::{Metric, MetricValue, Payload};
 use crate::session::{Broker, Incoming, Session};
@@ -42,6 +43,7 @@ pub struct Node {
     opts: ServeOptions,
     broker: Broker,
     store: Store,
+    forward: Forward,
     policy: DataPolicy,
     slots: Vec<Slot>,
     session: Option<Session>,
@@ -56,8 +58,8 @@ pub struct Node {
 }
 
 impl Node {
-    /// A node for `opts`, its bdSeq kept in `store`.
-    pub fn new(opts: ServeOptions, broker: Broker, store: Store) -> Node {
+    /// A node for `opts`, its bdSeq kept in `store`, data waiting for a birth in `forward`.
+    pub fn new(opts: ServeOptions, broker: Broker, store: Store, forward: Forward) -> Node {
         let now = Instant::now();
         let policy = DataPolicy {
             deadband: opts.deadband,
@@ -80,6 +82,7 @@ impl Node {
             opts,
             broker,
             store,
+            forward,
             policy,
             slots,
             session: None,
@@ -136,6 +139,16 @@ impl Node {
             // Not connected: keep the devices' state current (deaths and returns are only
             // logged), at the same pace.
             std::thread::sleep(wait);
+        }
+        if let Some(s) = &self.session {
+            let dropped = s.dropped.swap(0, Ordering::Relaxed);
+            if dropped > 0 {
+                self.refused += dropped;
+                let n = self.refused;
+                REFUSALS.warn(|| {
+                    format!("{dropped} message(s) dropped unread: more arrived than the node takes ({n} refused so far)")
+                });
+            }
         }
         if self.connected && self.host_online && !self.births_sent {
             self.births();
@@ -257,6 +270,41 @@ impl Node {
             self.slots[i].born = false;
             self.device_birth(i);
         }
+        self.forward_stored();
+    }
+
+    /// Sends what the store kept while no birth was out, oldest first, as DDATA of historical
+    /// values (each with its own cycle's time), after the births.
+    fn forward_stored(&mut self) {
+        if self.forward.is_empty() {
+            return;
+        }
+        let records = self.forward.take();
+        let (mut sent, mut orphans) = (0usize, 0usize);
+        for (device, mut payload) in records {
+            if !self.slots.iter().any(|s| s.name == device && s.born) {
+                // A device no longer served, or not running now: its past has no birth to
+                // belong to.
+                orphans += 1;
+                continue;
+            }
+            payload.seq = Some(self.next_seq());
+            let topic = self.topic(MessageType::DData, Some(&device));
+            let result = self
+                .session
+                .as_ref()
+                .map_or(Err("no session".to_string()), |s| {
+                    s.publish_waiting(&topic, payload.encode_to_vec())
+                });
+            if let Err(e) = result {
+                self.lose(&e);
+                break;
+            }
+            sent += 1;
+        }
+        log::info!(target: "plc_sparkplug",
+            "{sent} stored record(s) sent as historical data{}",
+            if orphans > 0 { format!(", {orphans} of devices not running dropped") } else { String::new() });
     }
 
     fn device_birth(&mut self, i: usize) {
@@ -287,12 +335,22 @@ impl Node {
             let alive = self.slots[i].device.as_ref().map(Device::alive);
             match alive {
                 Some(true) => {
-                    if !self.births_sent || !self.slots[i].born {
+                    // With no birth out the changes go to the store, to follow the next births.
+                    let historical = !self.births_sent;
+                    if !historical && !self.slots[i].born {
                         continue;
                     }
                     let policy = self.policy;
-                    let changes = self.slots[i].device.as_mut().map(|d| d.changes(&policy));
+                    let changes = self.slots[i]
+                        .device
+                        .as_mut()
+                        .map(|d| d.changes(&policy, historical));
                     match changes {
+                        Some(Ok(Some(p))) if historical => {
+                            if let Err(e) = self.forward.push(&self.slots[i].name, &p) {
+                                log::warn!(target: "plc_sparkplug", "{e}");
+                            }
+                        }
                         Some(Ok(Some(p))) => {
                             let id = self.slots[i].name.clone();
                             self.send(MessageType::DData, Some(&id), p);

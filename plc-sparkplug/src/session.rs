@@ -6,11 +6,13 @@
 use rumqttc::{
     Client, Connection, Event, LastWill, MqttOptions, Packet, QoS, TlsConfiguration, Transport,
 };
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{Receiver, SyncSender, TrySendError, sync_channel};
 use std::time::Duration;
 
-/// Messages received and not yet handled at most: beyond, the connection thread waits, and
-/// TCP makes the broker wait (a flood of commands cannot grow the node's memory).
+/// Messages received and not yet handled at most: beyond, they are dropped and counted (a
+/// flood of commands cannot grow the node's memory, nor stop the connection).
 const QUEUED: usize = 1024;
 /// Requests (publishes) waiting for the connection thread at most.
 const REQUESTS: usize = 4096;
@@ -55,6 +57,8 @@ pub enum Incoming {
 pub struct Session {
     client: Client,
     events: Receiver<Incoming>,
+    /// Messages dropped because the node was behind.
+    pub dropped: Arc<AtomicU64>,
     /// The bdSeq of this session's NBIRTH and Will.
     pub bd_seq: u8,
 }
@@ -80,9 +84,11 @@ impl Session {
         }
         let (client, connection) = Client::new(options, REQUESTS);
         let (tx, events) = sync_channel(QUEUED);
+        let dropped = Arc::new(AtomicU64::new(0));
+        let counter = dropped.clone();
         std::thread::Builder::new()
             .name("mqtt".into())
-            .spawn(move || run(connection, tx))
+            .spawn(move || run(connection, tx, counter))
             .map_or_else(
                 |e| log::error!(target: "plc_sparkplug", "cannot start the MQTT thread: {e}"),
                 drop,
@@ -90,6 +96,7 @@ impl Session {
         Session {
             client,
             events,
+            dropped,
             bd_seq,
         }
     }
@@ -110,6 +117,15 @@ impl Session {
     /// theirs); an error when the connection cannot keep up: the node then ends the session.
     pub fn publish(&self, topic: &str, payload: Vec<u8>) -> Result<(), String> {
         self.send(topic, QoS::AtMostOnce, payload)
+    }
+
+    /// Sends a message (QoS 0), waiting while the connection is behind: for the store's
+    /// replay, which may be far more than the request queue holds. Ends with an error when the
+    /// connection thread ended.
+    pub fn publish_waiting(&self, topic: &str, payload: Vec<u8>) -> Result<(), String> {
+        self.client
+            .publish(topic, QoS::AtMostOnce, false, payload)
+            .map_err(|_| "the connection to the broker is gone".into())
     }
 
     /// Sends a message with QoS 1 (the node's own death, before a clean disconnect).
@@ -146,7 +162,10 @@ impl Session {
 }
 
 /// The connection thread: drives the connection until it fails or the session is dropped.
-fn run(mut connection: Connection, tx: SyncSender<Incoming>) {
+/// It never waits for the node: a message that finds the queue full (a flood of commands the
+/// node cannot keep up with) is dropped and counted, so the connection keeps flowing and the
+/// node's blocking sends (the replay of the store) always end.
+fn run(mut connection: Connection, tx: SyncSender<Incoming>, dropped: Arc<AtomicU64>) {
     for event in connection.iter() {
         let report = match event {
             Ok(Event::Incoming(Packet::ConnAck(_))) => Incoming::Connected,
@@ -156,17 +175,15 @@ fn run(mut connection: Connection, tx: SyncSender<Incoming>) {
             },
             Ok(_) => continue,
             Err(e) => {
-                let _ = tx.send(Incoming::Lost(e.to_string()));
+                // If the queue is full the node sees the thread end instead: the same.
+                let _ = tx.try_send(Incoming::Lost(e.to_string()));
                 return;
             }
         };
-        // Blocks while the node is behind (bounded queue); ends when the node dropped us.
         match tx.try_send(report) {
             Ok(()) => {}
-            Err(TrySendError::Full(r)) => {
-                if tx.send(r).is_err() {
-                    return;
-                }
+            Err(TrySendError::Full(_)) => {
+                dropped.fetch_add(1, Ordering::Relaxed);
             }
             Err(TrySendError::Disconnected(_)) => return,
         }

@@ -38,9 +38,14 @@ pub enum MqttCommand {
         /// At most this many values per second of one metric.
         #[arg(long)]
         max_rate: Option<f64>,
-        /// The store directory (bdSeq); default under $XDG_STATE_HOME or ~/.local/state.
+        /// The store directory (bdSeq, and data that changed while no birth was out); default
+        /// under $XDG_STATE_HOME or ~/.local/state.
         #[arg(long)]
         store: Option<PathBuf>,
+        /// The bound of the data kept in the store, in bytes (default 64 MiB); when full the
+        /// oldest half is dropped and counted.
+        #[arg(long)]
+        store_max: Option<u64>,
         /// MQTT user name.
         #[arg(long)]
         user: Option<String>,
@@ -70,6 +75,7 @@ pub fn run(command: MqttCommand) -> Result<(), Error> {
         deadband,
         max_rate,
         store,
+        store_max,
         user,
         password_file,
         ca,
@@ -86,6 +92,7 @@ pub fn run(command: MqttCommand) -> Result<(), Error> {
         deadband,
         max_rate,
         store,
+        store_max,
         user,
         password_file,
         ca,
