@@ -29,6 +29,8 @@ const EVENTS_PER_TICK: usize = 256;
 
 /// Warnings about commands, at a bounded rate.
 static REFUSALS: plc_shm::LogLimit = plc_shm::LogLimit::new("plc_sparkplug");
+/// Warnings about the store, which could fail every tick.
+static STORE_FAILURES: plc_shm::LogLimit = plc_shm::LogLimit::new("plc_sparkplug");
 
 struct Slot {
     name: String,
@@ -348,7 +350,7 @@ impl Node {
                     match changes {
                         Some(Ok(Some(p))) if historical => {
                             if let Err(e) = self.forward.push(&self.slots[i].name, &p) {
-                                log::warn!(target: "plc_sparkplug", "{e}");
+                                STORE_FAILURES.warn(|| e);
                             }
                         }
                         Some(Ok(Some(p))) => {

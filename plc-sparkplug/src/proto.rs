@@ -176,3 +176,62 @@ pub struct PropertySetList {
     #[prost(message, repeated, tag = "1")]
     pub propertyset: Vec<PropertySet>,
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use prost::Message;
+
+    /// Commands are network input: any bytes decode to a payload or an error, never a panic,
+    /// and whatever decodes goes through the value conversion without one either.
+    #[test]
+    fn arbitrary_bytes_never_panic_the_decoder_or_the_conversion() {
+        let mut x: u64 = 0x9E37_79B9_7F4A_7C15;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let valid = Payload {
+            timestamp: Some(1),
+            metrics: vec![Metric {
+                name: Some("speed".into()),
+                alias: Some(3),
+                datatype: Some(6),
+                value: Some(MetricValue::IntValue(7)),
+                ..Metric::default()
+            }],
+            seq: Some(2),
+            ..Payload::default()
+        }
+        .encode_to_vec();
+        for round in 0..20_000 {
+            let len = (next() % 64) as usize;
+            let mut bytes: Vec<u8> = if round % 2 == 0 {
+                (0..len).map(|_| next() as u8).collect()
+            } else {
+                // A valid payload with a few bytes changed: deeper into the decoder.
+                let mut b = valid.clone();
+                for _ in 0..1 + next() % 3 {
+                    let i = (next() as usize) % b.len();
+                    b[i] = next() as u8;
+                }
+                b
+            };
+            bytes.truncate(len.max(1) * 2);
+            if let Ok(p) = Payload::decode(bytes.as_slice()) {
+                for m in &p.metrics {
+                    for ty in [
+                        plc_core::IecType::Sint,
+                        plc_core::IecType::Ltime,
+                        plc_core::IecType::String,
+                    ] {
+                        let _ = crate::metric::from_payload(ty, m.value.as_ref());
+                    }
+                }
+            }
+        }
+        assert!(Payload::decode(valid.as_slice()).is_ok());
+    }
+}
