@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of the workspace. Some tests drive real system tools: `plc watch` runs in
-# tmux, and the simulated EtherCAT bus is also tested over a veth pair (iproute2). Install them
-# when missing and we may (root, or passwordless sudo); tests that still lack them say so and skip.
+# tmux, the simulated EtherCAT bus is also tested over a veth pair (iproute2), and the Sparkplug
+# edge node publishes to a real MQTT broker (mosquitto). Install them when missing and we may
+# (root, or passwordless sudo); tests that still lack them say so and skip.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,6 +11,10 @@ as_root=()
 need=()
 command -v tmux >/dev/null 2>&1 || need+=(tmux)
 command -v ip >/dev/null 2>&1 || need+=(iproute2)
+# Debian installs the broker in /usr/sbin, which a user's PATH may not hold.
+command -v mosquitto >/dev/null 2>&1 || [[ -x /usr/sbin/mosquitto ]] || need+=(mosquitto)
+# The TLS test makes its certificates with openssl.
+command -v openssl >/dev/null 2>&1 || need+=(openssl)
 if ((${#need[@]})); then
   if command -v apt-get >/dev/null 2>&1 && { [[ $(id -u) == 0 ]] || sudo -n true 2>/dev/null; }; then
     echo "scripts/test.sh: installing ${need[*]}"
@@ -36,5 +41,17 @@ if ! "$venv/bin/python" -c "import asyncua, sys; sys.exit(asyncua.__version__ !=
   "$venv/bin/pip" install -q --disable-pip-version-check "asyncua==$asyncua_version"
 fi
 export PLC_OPCUA_PYTHON="$PWD/$venv/bin/python"
+
+# The Sparkplug B edge node is tested against an independent host: pysparkplug (on paho-mqtt),
+# in a virtual environment of its own under target/, found by the test through
+# PLC_SPARKPLUG_PYTHON.
+pysparkplug_version=0.6.1
+spb_venv=target/sparkplug-venv
+if ! "$spb_venv/bin/python" -c "import pysparkplug, sys; sys.exit(pysparkplug.__version__ != '$pysparkplug_version')" 2>/dev/null; then
+  echo "scripts/test.sh: installing python pysparkplug $pysparkplug_version into $spb_venv"
+  python3 -m venv "$spb_venv"
+  "$spb_venv/bin/pip" install -q --disable-pip-version-check "pysparkplug==$pysparkplug_version"
+fi
+export PLC_SPARKPLUG_PYTHON="$PWD/$spb_venv/bin/python"
 
 cargo test --workspace "$@"

@@ -17,6 +17,7 @@
 //! plc bus scan --sim EK1100,EL1004,EL2889                # the same on the simulated bus
 //! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
 //! plc opcua user add users.txt operator              # password from standard input
+//! plc mqtt serve tensile_tester --broker mqtt://127.0.0.1:1883 --group plant --node line1
 //! ```
 
 mod cmd;
@@ -168,6 +169,11 @@ enum Command {
         #[command(subcommand)]
         command: OpcuaCommand,
     },
+    /// A Sparkplug B edge node publishing running programs to an MQTT broker.
+    Mqtt {
+        #[command(subcommand)]
+        command: cmd::mqtt::MqttCommand,
+    },
 }
 
 #[derive(Subcommand)]
@@ -291,7 +297,8 @@ fn main() -> ExitCode {
     // Whatever plc-io logs while a command runs, as plain lines on stderr; `RUST_LOG`
     // chooses other levels and crates.
     env_logger::Builder::from_env(
-        env_logger::Env::default().default_filter_or("plc_io=info,plc_opcua=info"),
+        env_logger::Env::default()
+            .default_filter_or("plc_io=info,plc_opcua=info,plc_sparkplug=info"),
     )
     .format(|out, record| {
         use std::io::Write;
@@ -377,6 +384,7 @@ fn main() -> ExitCode {
                     command: OpcuaUserCommand::Add { file, name },
                 },
         } => cmd::opcua::add_user(&file, &name),
+        Command::Mqtt { command } => cmd::mqtt::run(command),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -7,6 +7,7 @@ pub mod get;
 pub mod import;
 pub mod list;
 pub mod log;
+pub mod mqtt;
 pub mod opcua;
 pub mod set;
 pub mod trace;
