@@ -7,6 +7,7 @@ mod clock;
 mod context;
 mod cycle;
 pub(crate) mod placement;
+mod private_dir;
 #[cfg(feature = "cycle-probe")]
 pub mod probe;
 pub mod retain;

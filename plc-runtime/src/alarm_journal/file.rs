@@ -324,36 +324,12 @@ fn checked_dir(path: &Path, create: bool) -> Result<(), JournalError> {
             .map_err(|e| io_error(dir, e))?;
     }
     let meta = fs::symlink_metadata(dir).map_err(|e| io_error(dir, e))?;
-    let unsafe_dir = |problem: String, fix: String| JournalError::Unsafe {
-        path: dir.to_owned(),
-        problem,
-        fix,
-    };
-    if !meta.is_dir() {
-        return Err(unsafe_dir(
-            "is not a directory (a symbolic link is not followed)".into(),
-            format!(
-                "give the real directory instead, or remove the link (`rm {}`)",
-                dir.display()
-            ),
-        ));
-    }
-    if meta.uid() != euid() {
-        return Err(unsafe_dir(
-            format!(
-                "belongs to uid {}, not to this program's uid {}",
-                meta.uid(),
-                euid()
-            ),
-            "use a directory of the program's own user".into(),
-        ));
-    }
-    let mode = meta.permissions().mode() & 0o7777;
-    if mode & 0o022 != 0 {
-        return Err(unsafe_dir(
-            format!("has mode {mode:04o}: other users may write it"),
-            format!("make it private (`chmod 700 {}`)", dir.display()),
-        ));
+    if let Some((problem, fix)) = crate::private_dir::problem(dir, &meta, euid()) {
+        return Err(JournalError::Unsafe {
+            path: dir.to_owned(),
+            problem,
+            fix,
+        });
     }
     Ok(())
 }

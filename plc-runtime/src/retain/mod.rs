@@ -277,36 +277,12 @@ impl RetainStore {
             path: dir.clone(),
             error,
         })?;
-        let unsafe_dir = |problem: String, fix: String| RetainError::Unsafe {
-            path: dir.clone(),
-            problem,
-            fix,
-        };
-        if !meta.is_dir() {
-            return Err(unsafe_dir(
-                "is not a directory (a symbolic link is not followed)".into(),
-                format!(
-                    "give the real directory instead, or remove the link (`rm {}`)",
-                    dir.display()
-                ),
-            ));
-        }
-        if meta.uid() != euid() {
-            return Err(unsafe_dir(
-                format!(
-                    "belongs to uid {}, not to this program's uid {}",
-                    meta.uid(),
-                    euid()
-                ),
-                "use a directory of the program's own user".into(),
-            ));
-        }
-        let mode = meta.permissions().mode() & 0o7777;
-        if mode & 0o022 != 0 {
-            return Err(unsafe_dir(
-                format!("has mode {mode:04o}: other users may write it"),
-                format!("make it private (`chmod 700 {}`)", dir.display()),
-            ));
+        if let Some((problem, fix)) = crate::private_dir::problem(&dir, &meta, euid()) {
+            return Err(RetainError::Unsafe {
+                path: dir.clone(),
+                problem,
+                fix,
+            });
         }
         Ok(dir)
     }

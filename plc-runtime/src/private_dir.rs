@@ -1,0 +1,38 @@
+//! What makes a directory unfit to hold a program's own files (retained values, the alarm
+//! journal): a link in its place, another user's, or one others may write. Each problem comes
+//! with what to do, for the caller's error.
+
+use std::fs::Metadata;
+use std::os::unix::fs::{MetadataExt, PermissionsExt};
+use std::path::Path;
+
+/// The problem with directory `dir` (whose `symlink_metadata` is `meta`) and its fix, if the
+/// program's user `uid` should not keep its files there.
+pub(crate) fn problem(dir: &Path, meta: &Metadata, uid: u32) -> Option<(String, String)> {
+    if !meta.is_dir() {
+        return Some((
+            "is not a directory (a symbolic link is not followed)".into(),
+            format!(
+                "give the real directory instead, or remove the link (`rm {}`)",
+                dir.display()
+            ),
+        ));
+    }
+    if meta.uid() != uid {
+        return Some((
+            format!(
+                "belongs to uid {}, not to this program's uid {uid}",
+                meta.uid()
+            ),
+            "use a directory of the program's own user".into(),
+        ));
+    }
+    let mode = meta.permissions().mode() & 0o7777;
+    if mode & 0o022 != 0 {
+        return Some((
+            format!("has mode {mode:04o}: other users may write it"),
+            format!("make it private (`chmod 700 {}`)", dir.display()),
+        ));
+    }
+    None
+}
