@@ -3,7 +3,7 @@
 //! at them. Whether the alarm makes sense on its field is the model's rule
 //! (`plc_rules::decl`); here is only the syntax.
 
-use crate::ast::{At, Loc};
+use crate::loc::{At, Loc};
 use darling::FromMeta;
 use plc_rules::decl::{Alarm, LIMIT_KEYS};
 use quote::ToTokens;
@@ -107,7 +107,7 @@ fn from_list<'a>(
         };
         let value = &nv.value;
         // The whole of `-0.5` as written, not syn's literal spanned by the `-` alone.
-        let written = crate::attr::value_in(list.tokens.clone(), &key)
+        let written = crate::raw_value::value_in(list.tokens.clone(), &key)
             .map_or_else(|| loc(value), Loc::Tokens);
         let read = match key.as_str() {
             "text" => string(value, "text").map(|t| text = Some(t)),

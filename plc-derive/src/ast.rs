@@ -3,11 +3,11 @@
 //! declaration model (`plc_rules::decl`), each keeping the span of what the user wrote so the
 //! checker's issues point at it, beside what only the Rust code has (serde_derive's `ast`).
 
-use crate::attr::{self, ContainerAttr, FieldAttr};
+use crate::attr::{ContainerAttr, FieldAttr};
 use crate::ctxt::Ctxt;
 use crate::initial::Initial;
 pub use crate::kind::Kind;
-pub use crate::loc::Loc;
+pub use crate::loc::{At, Loc};
 use crate::types::{self, SynType};
 use darling::util::SpannedValue;
 use darling::{FromDeriveInput, FromField};
@@ -18,9 +18,6 @@ use proc_macro2::{Span, TokenStream};
 use quote::quote;
 use syn::spanned::Spanned;
 use syn::{Data, DeriveInput, Fields, Ident, Type};
-
-/// A value and the span of the tokens it came from.
-pub type At<T> = Located<T, Loc>;
 
 pub struct Container<'a> {
     pub kind: Kind,
@@ -296,13 +293,15 @@ fn fill_from_attr(
     model.source = a.source.as_ref().map(at);
     model.bit = a.bit.map(|b| {
         // The whole of `-1`, not only its `-`.
-        let loc = attr::raw_value(attrs, "bit").map_or(Loc::Span(b.span()), Loc::Tokens);
+        let loc =
+            crate::raw_value::raw_value(attrs, "bit").map_or(Loc::Span(b.span()), Loc::Tokens);
         At::new(*b, loc)
     });
     model.at = a.at.as_ref().map(at);
     if let Some(init) = a.initial {
         let expr = &init.0;
-        let written = attr::raw_value(attrs, "initial").unwrap_or_else(|| quote!(#expr));
+        let written =
+            crate::raw_value::raw_value(attrs, "initial").unwrap_or_else(|| quote!(#expr));
         match Initial::parse(expr, written) {
             Ok(i) => {
                 model.initial = Some(At::new(i.to_decl(), Loc::Tokens(i.tokens.clone())));

@@ -18,6 +18,7 @@ mod expand;
 mod initial;
 mod kind;
 mod loc;
+mod raw_value;
 mod symbol;
 mod types;
 
