@@ -2,9 +2,9 @@
 //! Prints one `name: value` line per figure, ratios measured side by side in the same run
 //! (machines here are shared and noisy), then `plc-bench: ok`. Method in BENCHMARKS.md.
 //!
-//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua,commissioning,flood,drives,alarms`
+//! `--only cycle,structures,cycle_10k,snapshot,process_image,derive,import,bus,tools,opcua,commissioning,flood,drives,alarms,sparkplug`
 //! runs some groups of figures.
-//! `cycle_10k`, `derive`, `tools` and `opcua` compile generated crates: their first run takes
+//! `cycle_10k`, `derive`, `tools`, `opcua` and `sparkplug` compile generated crates: their first run takes
 //! minutes.
 //! `--full` adds the opt-in group `cycle_100k` (a 100,000-variable crate: its build takes far
 //! longer than CI can spend), which `--only cycle_100k` also names.
@@ -27,7 +27,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 14] = [
+const GROUPS: [&str; 15] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -42,6 +42,7 @@ const GROUPS: [&str; 14] = [
     "flood",
     "drives",
     "alarms",
+    "sparkplug",
 ];
 
 /// Groups that run only when asked for (`--full`, or by name in `--only`).
@@ -124,6 +125,10 @@ fn main() {
             "alarms" => match plc_bench::alarms::run(cycle_batches) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("alarms: {e}")),
+            },
+            "sparkplug" => match plc_bench::sparkplug::run(quick) {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&format!("sparkplug: {e}")),
             },
             "flood" => match plc_bench::commissioning::flood() {
                 Ok(lines) => print!("{lines}"),

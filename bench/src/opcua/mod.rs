@@ -33,16 +33,15 @@
 
 mod client;
 mod notify;
-mod placement;
 mod ratio;
 mod read;
 mod server;
 
 use super::owner::{self, Owner};
+use crate::placement::Placement;
 use client::{Client, namespace};
 use notify::{Wakeups, notify_latency};
 use opcua::types::NodeId;
-use placement::Placement;
 use plc_io::shm::DynSegment;
 use ratio::cycle_ratio;
 use read::read_all;

@@ -2,14 +2,14 @@
 //! subscriptions, against windows in which they hold none, from the owner's status block.
 
 use super::client::{Client, parameters};
-use crate::owner::PERIOD;
+use crate::owner_cycle::{self, Cycles, Window};
 use opcua::client::DataChangeCallback;
 use opcua::types::{MonitoredItemCreateRequest, MonitoringMode, NodeId, TimestampsToReturn};
 use plc_io::shm::DynSegment;
 use std::fmt::Write;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The owner's cycle time with and without the clients' subscriptions.
 pub(super) struct Load {
@@ -50,25 +50,6 @@ impl Load {
     }
 }
 
-/// The owner's cycle time over some windows: the median of the windows' medians and means.
-struct Cycles {
-    median_us: f64,
-    mean_us: f64,
-}
-
-impl Cycles {
-    fn of(windows: &[Window]) -> Cycles {
-        let median = |mut v: Vec<f64>| {
-            v.sort_by(f64::total_cmp);
-            v[v.len() / 2]
-        };
-        Cycles {
-            median_us: median(windows.iter().map(|w| w.median_us).collect()),
-            mean_us: median(windows.iter().map(|w| w.mean_us).collect()),
-        }
-    }
-}
-
 /// `shares[i]`: the nodes client `i` monitors.
 pub(super) async fn cycle_ratio(
     clients: &[Client],
@@ -81,7 +62,7 @@ pub(super) async fn cycle_ratio(
     let (mut idle, mut busy) = (Vec::new(), Vec::new());
     let mut received = (0u64, Duration::ZERO);
     for _ in 0..rounds.max(1) {
-        idle.push(owner_cycle_us(seg, WINDOW).await);
+        idle.push(owner_cycle_us(seg, WINDOW));
         let mut subscriptions = Vec::new();
         for (c, share) in clients.iter().zip(shares) {
             let counter = values.clone();
@@ -124,7 +105,7 @@ pub(super) async fn cycle_ratio(
         // The initial values of every item delivered before the window starts.
         tokio::time::sleep(Duration::from_millis(500)).await;
         let before = values.load(Ordering::Relaxed);
-        busy.push(owner_cycle_us(seg, WINDOW).await);
+        busy.push(owner_cycle_us(seg, WINDOW));
         received.0 += values.load(Ordering::Relaxed) - before;
         received.1 += WINDOW;
         for (c, id) in subscriptions {
@@ -139,47 +120,8 @@ pub(super) async fn cycle_ratio(
     })
 }
 
-/// The owner's cycle times in one window.
-struct Window {
-    /// The median of the cycles sampled.
-    median_us: f64,
-    /// The mean of all cycles of the window.
-    mean_us: f64,
-}
-
-/// The owner's cycle time over the next `window`, from its status block: the time of the
-/// last cycle, sampled every millisecond or so (each cycle at most once), and the mean of all
-/// the window's cycles from the running mean times the cycle count at both ends. A cycle the
-/// machine preempts for milliseconds moves the mean by as much as a thousand cycles of
-/// work; the median is the typical cycle.
-async fn owner_cycle_us(seg: &DynSegment, window: Duration) -> Window {
-    let total = |seg: &DynSegment| {
-        let s = seg.status();
-        (
-            s.cycle_count,
-            s.stats.mean.as_secs_f64() * s.cycle_count as f64,
-        )
-    };
-    let (c1, t1) = total(seg);
-    let end = Instant::now() + window;
-    let mut seen = c1;
-    let mut last = Vec::new();
-    while Instant::now() < end {
-        let s = seg.status();
-        if s.cycle_count != seen {
-            seen = s.cycle_count;
-            last.push(s.stats.last.as_secs_f64() * 1e6);
-        }
-        tokio::time::sleep(PERIOD).await;
-    }
-    let (c2, t2) = total(seg);
-    last.sort_by(f64::total_cmp);
-    Window {
-        median_us: last.get(last.len() / 2).copied().unwrap_or(f64::NAN),
-        mean_us: if c2 > c1 {
-            (t2 - t1) / (c2 - c1) as f64 * 1e6
-        } else {
-            f64::NAN
-        },
-    }
+/// The owner's cycle time over the next `window`, this worker given up meanwhile (the runtime
+/// moves the clients' tasks to the other).
+fn owner_cycle_us(seg: &DynSegment, window: Duration) -> Window {
+    tokio::task::block_in_place(|| owner_cycle::sample(seg, window))
 }

@@ -1,8 +1,8 @@
 //! The server process: `plc opcua serve` on the program's segment, started on the others'
 //! CPUs, waited for until it listens, stopped when dropped.
 
-use super::placement::Placement;
 use crate::owner;
+use crate::placement::Placement;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command};
 use std::time::{Duration, Instant};
