@@ -16,10 +16,11 @@ pub(super) enum Seen {
     /// A birth (NBIRTH or DBIRTH).
     Birth(MessageType, Birth),
     /// A DDATA: its live values' latencies (ms from the value's cycle time to its decoding
-    /// here) and how many values were historical.
+    /// here), how many values were historical, and its size on the wire.
     Data {
         latencies_ms: Vec<f64>,
         historical: usize,
+        bytes: usize,
         at: Instant,
     },
     /// Any other message (deaths, commands, STATE).
@@ -198,6 +199,7 @@ fn seen_of(topic: &str, bytes: &[u8]) -> Seen {
             Seen::Data {
                 latencies_ms,
                 historical,
+                bytes: bytes.len(),
                 at,
             }
         }

@@ -11,7 +11,10 @@
 //! - `spb_values_per_s_10k`: the live values the host decoded from DDATA per second, over the
 //!   windows in which the node ran; `spb_latency_p50_ms_10k`, `spb_latency_p99_ms_10k`: each
 //!   value's latency from its cycle's time (the metric's timestamp, whole milliseconds, so
-//!   the figure reads up to 1 ms high) to its decoding in the host.
+//!   the figure reads up to 1 ms high) to its decoding in the host. `spb_ddata_bytes_per_s_10k`,
+//!   `spb_ddata_per_s_10k`: the DDATA payloads' bytes and messages per second; `spb_node_cpu_percent_10k`,
+//!   `spb_broker_cpu_percent_10k`: the node's and mosquitto's CPU time meanwhile, in percent
+//!   of one CPU (one subscriber: the host).
 //! - `cycle_with_mqtt_ratio`: the main example's cycle time (its own `stats.last`, sampled
 //!   about once a millisecond, median of a window) while the edge node publishes it, against
 //!   windows without the node; alternating windows of 2 s, the median of each side's windows
@@ -34,7 +37,7 @@ use crate::placement::Placement;
 use host::{Birth, Host, Seen};
 use plc_io::shm::DynSegment;
 use plc_sparkplug::topic::MessageType;
-use processes::{Broker, Node, dir_bytes, peak_rss};
+use processes::{Broker, Node, cpu_time, dir_bytes, peak_rss};
 use std::fmt::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -86,7 +89,7 @@ pub fn run(quick: bool) -> Result<String, String> {
     let seg = DynSegment::attach(&segment).map_err(|e| e.to_string())?;
     let store = work.join("store-10k");
     run.births(&segment, &store, &mut out)?;
-    run.ratio(&seg, &store, rounds, true)?
+    run.ratio(&seg, &store, &broker, rounds, true)?
         .write(&mut out, "_10k");
     let outage = if quick { 5 } else { 10 };
     run.outage(&segment, &store, &mut broker, outage, &mut out)?;
@@ -105,7 +108,7 @@ pub fn run(quick: bool) -> Result<String, String> {
         &segment,
     )?;
     let seg = DynSegment::attach(&segment).map_err(|e| e.to_string())?;
-    run.ratio(&seg, &main.join("store"), rounds, false)?
+    run.ratio(&seg, &main.join("store"), &broker, rounds, false)?
         .write(&mut out, "");
     drop((seg, program));
     let _ = writeln!(
@@ -177,27 +180,39 @@ impl Run<'_> {
         &mut self,
         seg: &DynSegment,
         store: &Path,
+        broker: &Broker,
         rounds: usize,
         data: bool,
     ) -> Result<Load, String> {
         let (mut idle, mut busy) = (Vec::new(), Vec::new());
-        let (mut values, mut latencies) = (0usize, Vec::new());
+        let (mut values, mut bytes, mut messages) = (0usize, 0usize, 0usize);
+        let mut latencies = Vec::new();
+        let (mut node_cpu, mut broker_cpu) = (Duration::ZERO, Duration::ZERO);
+        let cpu = |pid: Option<u32>| pid.and_then(cpu_time).unwrap_or_default();
         for _ in 0..rounds {
             idle.push(owner_cycle::sample(seg, WINDOW));
             let (node, _) = self.node(seg.name(), store)?;
             std::thread::sleep(Duration::from_millis(500));
             self.host.drain();
+            let (node_before, broker_before) = (cpu(Some(node.pid())), cpu(broker.pid()));
             let start = Instant::now();
             busy.push(owner_cycle::sample(seg, WINDOW));
             let end = Instant::now();
+            node_cpu += cpu(Some(node.pid())).saturating_sub(node_before);
+            broker_cpu += cpu(broker.pid()).saturating_sub(broker_before);
             while let Ok(seen) = self.host.next(Duration::ZERO) {
                 if let Seen::Data {
-                    latencies_ms, at, ..
+                    latencies_ms,
+                    bytes: size,
+                    at,
+                    ..
                 } = seen
                     && at >= start
                     && at <= end
                 {
                     values += latencies_ms.len();
+                    bytes += size;
+                    messages += 1;
                     latencies.extend(latencies_ms);
                 }
             }
@@ -210,13 +225,18 @@ impl Run<'_> {
                 .get((latencies.len() as f64 * q) as usize)
                 .copied()
         };
+        let busy_s = (WINDOW * rounds as u32).as_secs_f64();
         Ok(Load {
             idle: Cycles::of(&idle),
             busy: Cycles::of(&busy),
             data: data.then(|| Data {
-                values_per_s: values as f64 / (WINDOW * rounds as u32).as_secs_f64(),
+                values_per_s: values as f64 / busy_s,
+                bytes_per_s: bytes as f64 / busy_s,
+                messages_per_s: messages as f64 / busy_s,
                 p50_ms: at(0.5).unwrap_or(f64::NAN),
                 p99_ms: at(0.99).unwrap_or(f64::NAN),
+                node_cpu: node_cpu.as_secs_f64() / busy_s,
+                broker_cpu: broker_cpu.as_secs_f64() / busy_s,
             }),
         })
     }
@@ -247,6 +267,7 @@ impl Run<'_> {
                     historical,
                     latencies_ms,
                     at,
+                    ..
                 } => {
                     forwarded += historical;
                     if !latencies_ms.is_empty() {
@@ -294,8 +315,13 @@ struct Load {
 /// The values the host decoded while the node ran.
 struct Data {
     values_per_s: f64,
+    bytes_per_s: f64,
+    messages_per_s: f64,
     p50_ms: f64,
     p99_ms: f64,
+    /// The node's and the broker's CPU time per second of the windows.
+    node_cpu: f64,
+    broker_cpu: f64,
 }
 
 impl Load {
@@ -310,6 +336,18 @@ impl Load {
         let _ = writeln!(out, "cycle_with_mqtt_mean_ratio{suffix}: {mean:.2}");
         if let Some(d) = &self.data {
             let _ = writeln!(out, "spb_values_per_s{suffix}: {:.0}", d.values_per_s);
+            let _ = writeln!(out, "spb_ddata_bytes_per_s{suffix}: {:.0}", d.bytes_per_s);
+            let _ = writeln!(out, "spb_ddata_per_s{suffix}: {:.1}", d.messages_per_s);
+            let _ = writeln!(
+                out,
+                "spb_node_cpu_percent{suffix}: {:.1}",
+                d.node_cpu * 100.0
+            );
+            let _ = writeln!(
+                out,
+                "spb_broker_cpu_percent{suffix}: {:.1}",
+                d.broker_cpu * 100.0
+            );
             let _ = writeln!(out, "spb_latency_p50_ms{suffix}: {:.1}", d.p50_ms);
             let _ = writeln!(out, "spb_latency_p99_ms{suffix}: {:.1}", d.p99_ms);
         }
