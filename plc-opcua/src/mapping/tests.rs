@@ -30,6 +30,8 @@ fn var(
         direction,
         ux: false,
         quantity: None,
+        unit: None,
+        deadband: None,
         type_name: None,
         members: vec![],
     }

@@ -49,6 +49,13 @@ pub struct VarDescriptor {
     /// The physical quantity a display uses to pick units (`"force"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quantity: Option<String>,
+    /// The engineering unit of the value (`"mm"`), for numbers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<String>,
+    /// The reporting deadband: how far the value must move before a publisher sends a change
+    /// (`None`: the publisher's default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub deadband: Option<f64>,
     /// A structured variable's type name (`"Axis"`, `"TON"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub type_name: Option<String>,
@@ -154,6 +161,8 @@ impl From<&VarInfo> for VarDescriptor {
             direction: v.direction,
             ux: v.ux,
             quantity: v.quantity.map(str::to_string),
+            unit: v.unit.map(str::to_string),
+            deadband: v.deadband,
             type_name: v.is_structured().then(|| v.type_name().to_string()),
             members: v.members().iter().map(VarDescriptor::from).collect(),
         }
@@ -319,6 +328,8 @@ mod tests {
             direction: Direction::Internal,
             ux: false,
             quantity: None,
+            unit: None,
+            deadband: None,
             type_name: None,
             members: vec![],
         }
@@ -383,5 +394,20 @@ mod tests {
         c.variables[0].type_name = Some("T".into());
         assert_ne!(a.computed_hash(), b.computed_hash());
         assert_ne!(a.computed_hash(), c.computed_hash());
+    }
+
+    #[test]
+    fn unit_and_deadband_are_written_only_where_declared_and_read_back() {
+        let mut force = var("force", 0, 4);
+        force.unit = Some("kN".into());
+        force.deadband = Some(0.5);
+        let plain = var("count", 4, 4);
+        let json = serde_json::to_string(&descriptor(vec![force, plain], 8)).unwrap();
+        assert!(json.contains(r#""unit":"kN","deadband":0.5"#), "{json}");
+        assert_eq!(json.matches("unit").count(), 1, "{json}");
+        let back: LayoutDescriptor = serde_json::from_str(&json).unwrap();
+        assert_eq!(back.variables[0].unit.as_deref(), Some("kN"));
+        assert_eq!(back.variables[0].deadband, Some(0.5));
+        assert_eq!((&back.variables[1].unit, back.variables[1].deadband), (&None, None));
     }
 }
