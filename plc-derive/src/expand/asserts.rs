@@ -196,7 +196,7 @@ fn reporting_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenS
         let Some(at) = at else { continue };
         let message = format!(
             "`{key}` is for numbers (integers, REAL and LREAL, alone or in arrays): the type of \
-             `{name}` is not one; remove `{key}`, or declare it on the members of a structure"
+             `{name}` is not one; remove `{key}` (a structure takes it on its members)"
         );
         let cond = quote_spanned!(v.ty_span()=> #p::facts::<#ty>().has_number_elements());
         out.extend(match &at {
