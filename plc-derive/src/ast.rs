@@ -327,8 +327,8 @@ fn fill_from_attr(
     model.unit = a.unit.as_ref().map(at);
     model.deadband = a.deadband.map(|d| {
         // The whole of `-0.5`, not only its `-`.
-        let loc = crate::raw_value::raw_value(attrs, "deadband")
-            .map_or(Loc::Span(d.span()), Loc::Tokens);
+        let loc =
+            crate::raw_value::raw_value(attrs, "deadband").map_or(Loc::Span(d.span()), Loc::Tokens);
         At::new(d.as_ref().0, loc)
     });
     model.alarm = a.alarm.map(|x| x.0);

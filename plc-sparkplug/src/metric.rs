@@ -395,26 +395,10 @@ mod tests {
     /// A descriptor of one variable of type `iec`, with a unit and a deadband if given.
     fn var(iec: IecType, unit: Option<&str>, deadband: Option<f64>) -> plc_shm::VarDescriptor {
         plc_shm::VarDescriptor {
-            name: "v".into(),
-            iec_type: iec,
-            rust_type: iec.rust_name().into(),
-            offset: 0,
-            size: 8,
-            dims: vec![],
-            bit: None,
-            link: None,
-            address: None,
-            description: String::new(),
-            initial: None,
-            nonvolatile: false,
-            access: plc_core::Access::ReadWrite,
-            direction: plc_core::Direction::Internal,
-            ux: false,
             quantity: Some("force".into()),
             unit: unit.map(str::to_string),
             deadband,
-            type_name: None,
-            members: vec![],
+            ..plc_shm::VarDescriptor::basic("v", iec, 0, 8)
         }
     }
 
@@ -442,6 +426,9 @@ mod tests {
         assert_eq!(deadband(&var(IecType::Real, None, None), 2.0), 2.0);
         // A damaged descriptor's: the default, not a value sent every cycle.
         assert_eq!(deadband(&var(IecType::Real, None, Some(-1.0)), 2.0), 2.0);
-        assert_eq!(deadband(&var(IecType::Real, None, Some(f64::NAN)), 2.0), 2.0);
+        assert_eq!(
+            deadband(&var(IecType::Real, None, Some(f64::NAN)), 2.0),
+            2.0
+        );
     }
 }

@@ -76,6 +76,45 @@ pub struct BitDescriptor {
 
 /// The same answers as [`VarInfo`]'s, from the same helpers.
 impl VarDescriptor {
+    /// A scalar of type `iec_type`, `size` bytes at `offset`, with every attribute at its
+    /// default (internal, read-write; no bit mapping, link, address, description, initial
+    /// value, quantity, unit or deadband): for tools and tests that describe a variable
+    /// without a program's Rust type. Set the rest with struct update syntax.
+    ///
+    /// ```
+    /// use plc_core::IecType;
+    /// use plc_shm::VarDescriptor;
+    /// let force = VarDescriptor {
+    ///     unit: Some("kN".into()),
+    ///     ..VarDescriptor::basic("force", IecType::Real, 0, 4)
+    /// };
+    /// assert_eq!((force.rust_type.as_str(), force.deadband), ("f32", None));
+    /// ```
+    pub fn basic(name: &str, iec_type: IecType, offset: usize, size: usize) -> VarDescriptor {
+        VarDescriptor {
+            name: name.to_string(),
+            iec_type,
+            rust_type: iec_type.rust_name().to_string(),
+            offset,
+            size,
+            dims: Vec::new(),
+            bit: None,
+            link: None,
+            address: None,
+            description: String::new(),
+            initial: None,
+            nonvolatile: false,
+            access: Access::ReadWrite,
+            direction: Direction::Internal,
+            ux: false,
+            quantity: None,
+            unit: None,
+            deadband: None,
+            type_name: None,
+            members: Vec::new(),
+        }
+    }
+
     /// Number of elements (1 for a scalar). Saturating: a damaged descriptor must not overflow
     /// (`check_variables` refuses it).
     pub fn elements(&self) -> usize {
@@ -311,28 +350,7 @@ mod tests {
     use super::*;
 
     fn var(name: &str, offset: usize, size: usize) -> VarDescriptor {
-        VarDescriptor {
-            name: name.into(),
-            iec_type: IecType::Udint,
-            rust_type: "u32".into(),
-            offset,
-            size,
-            dims: vec![],
-            bit: None,
-            link: None,
-            address: None,
-            description: String::new(),
-            initial: None,
-            nonvolatile: false,
-            access: Access::ReadWrite,
-            direction: Direction::Internal,
-            ux: false,
-            quantity: None,
-            unit: None,
-            deadband: None,
-            type_name: None,
-            members: vec![],
-        }
+        VarDescriptor::basic(name, IecType::Udint, offset, size)
     }
 
     fn structure(name: &str, offset: usize, members: Vec<VarDescriptor>) -> VarDescriptor {
@@ -408,6 +426,9 @@ mod tests {
         let back: LayoutDescriptor = serde_json::from_str(&json).unwrap();
         assert_eq!(back.variables[0].unit.as_deref(), Some("kN"));
         assert_eq!(back.variables[0].deadband, Some(0.5));
-        assert_eq!((&back.variables[1].unit, back.variables[1].deadband), (&None, None));
+        assert_eq!(
+            (&back.variables[1].unit, back.variables[1].deadband),
+            (&None, None)
+        );
     }
 }

@@ -3,10 +3,10 @@
 use super::Issue;
 use super::kind::{Expected, IssueKind};
 use super::wording::Wording;
-use crate::decl::{MAX_UNIT_CHARS, UnitProblem};
-use crate::{IecType, TypeFamily};
 use crate::address::Size;
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY};
+use crate::decl::{MAX_UNIT_CHARS, UnitProblem};
+use crate::{IecType, TypeFamily};
 use std::format;
 use std::string::{String, ToString};
 
