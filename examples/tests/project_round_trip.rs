@@ -38,14 +38,26 @@ fn the_generated_struct_works() {
     assert!(gm.ls_lift_neg);
     assert_eq!(Gm::VARIABLES.len(), 18);
     assert_eq!(Gm::VARIABLES[15].iec_type, plc_core::IecType::Word);
+    let var = |name: &str| Gm::VARIABLES.iter().find(|v| v.name == name).unwrap();
+    assert_eq!(
+        (var("force_kn").unit, var("force_kn").deadband),
+        (Some("kN"), Some(0.05))
+    );
+    assert_eq!(
+        (var("speed_setpoint").unit, var("speed_setpoint").deadband),
+        (Some("mm/min"), None)
+    );
 }
 
 /// The rows of a CSV table, each as column -> cell, with what the export writes differently
 /// filled in: string capacity 64 where none is given, a description's lines joined by a
 /// space as the derive joins a doc comment's, and the columns a table leaves out as empty
-/// cells (a spreadsheet made before the `ux` and `quantity` columns).
+/// cells (a spreadsheet made before the `ux` and `quantity` columns, with rows that end before
+/// the `unit` and `deadband` cells, as the importer allows).
 fn csv_rows(text: &str) -> Vec<BTreeMap<String, String>> {
-    let mut r = csv::Reader::from_reader(text.as_bytes());
+    let mut r = csv::ReaderBuilder::new()
+        .flexible(true)
+        .from_reader(text.as_bytes());
     let header: Vec<String> = r.headers().unwrap().iter().map(String::from).collect();
     r.records()
         .map(|rec| {

@@ -141,7 +141,7 @@ enum Command {
         project: PathBuf,
         /// Read a CSV table: one row per variable under a header line naming the columns,
         /// RFC 4180 quoting. Columns, in any order:
-        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity
+        /// name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband
         #[arg(long)]
         csv: bool,
         /// Write the module here instead of standard output.

@@ -255,11 +255,11 @@ fn csv_export_and_import_agree_with_json() {
     assert!(csv.status.success(), "{}", stderr(&csv));
     let table = stdout(&csv);
     assert!(
-        table.starts_with("name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity\r\n"),
+        table.starts_with("name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband\r\n"),
         "{table}"
     );
     assert!(
-        table.contains("\r\nrecipe,string,command,,,none,,,16,,,,,,\r\n"),
+        table.contains("\r\nrecipe,string,command,,,none,,,16,,,,,,,,\r\n"),
         "{table}"
     );
     let json = plc(&["export", &owner.segment]);

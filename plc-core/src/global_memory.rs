@@ -71,6 +71,14 @@ pub struct VarInfo {
     pub ux: bool,
     /// `quantity = "force"`: the physical quantity a display uses to pick units.
     pub quantity: Option<&'static str>,
+    /// `unit = "mm"`: the engineering unit of the value (numbers only), as tools show it
+    /// beside the value; a Sparkplug B metric's `engUnit`.
+    pub unit: Option<&'static str>,
+    /// `deadband = 0.5`: the reporting deadband, how far the value must move from the value
+    /// last published before a publisher (the Sparkplug B edge node) sends a change again; in
+    /// the variable's unit, 0 or more (numbers only). `None`: the publisher's default. Not a
+    /// limit alarm's deadband, which is `alarm(deadband = ...)`.
+    pub deadband: Option<f64>,
     pub(crate) members: &'static [VarInfo],
     pub(crate) struct_name: Option<&'static str>,
 }

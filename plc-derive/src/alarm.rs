@@ -137,8 +137,8 @@ fn from_list<'a>(
     errors.finish_with(AlarmAttr(alarm))
 }
 
-/// A literal without the groups a macro may wrap it in.
-fn literal(expr: &Expr) -> Option<(bool, &Lit)> {
+/// A literal without the groups a macro may wrap it in, and whether a `-` precedes it.
+pub fn literal(expr: &Expr) -> Option<(bool, &Lit)> {
     match expr {
         Expr::Lit(l) => Some((false, &l.lit)),
         Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => match &*u.expr {

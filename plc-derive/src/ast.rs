@@ -324,6 +324,13 @@ fn fill_from_attr(
     model.read_only = a.read_only.is_present();
     model.ux = a.ux.is_present();
     model.quantity = a.quantity.as_ref().map(at);
+    model.unit = a.unit.as_ref().map(at);
+    model.deadband = a.deadband.map(|d| {
+        // The whole of `-0.5`, not only its `-`.
+        let loc =
+            crate::raw_value::raw_value(attrs, "deadband").map_or(Loc::Span(d.span()), Loc::Tokens);
+        At::new(d.as_ref().0, loc)
+    });
     model.alarm = a.alarm.map(|x| x.0);
     if let Some(w) = a.alarm_when {
         let when = At::new(*w, Loc::Span(w.span()));

@@ -79,6 +79,9 @@ pub struct FieldAttr {
     pub iec_type: Option<SpannedValue<String>>,
     pub ux: Switch,
     pub quantity: Option<SpannedValue<String>>,
+    pub unit: Option<SpannedValue<String>>,
+    /// `deadband = 0.5`: the reporting deadband (not `alarm(deadband = ...)`).
+    pub deadband: Option<SpannedValue<Deadband>>,
     pub alarm: Option<crate::alarm::AlarmAttr>,
     /// `alarm_when = false` beside `alarm = "..."`: an active-low bool.
     pub alarm_when: Option<SpannedValue<bool>>,
@@ -91,6 +94,28 @@ pub struct InitialExpr(pub syn::Expr);
 impl FromMeta for InitialExpr {
     fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
         Ok(InitialExpr(expr.clone()))
+    }
+}
+
+/// `deadband = 0.5`: a number as written, a negative one too (the declaration model refuses
+/// it, in the words a variable list gets too).
+pub struct Deadband(pub f64);
+
+impl FromMeta for Deadband {
+    fn from_expr(expr: &syn::Expr) -> darling::Result<Self> {
+        let (negative, value) = match crate::alarm::literal(expr) {
+            Some((negative, syn::Lit::Int(i))) => (negative, i.base10_parse::<f64>().ok()),
+            Some((negative, syn::Lit::Float(f))) => (negative, f.base10_parse::<f64>().ok()),
+            _ => (false, None),
+        };
+        match value.filter(|v| v.is_finite()) {
+            Some(v) => Ok(Deadband(if negative { -v } else { v })),
+            None => Err(darling::Error::custom(format!(
+                "`deadband` takes {}",
+                crate::symbol::expects("deadband").unwrap_or("a number")
+            ))
+            .with_span(expr)),
+        }
     }
 }
 

@@ -27,6 +27,8 @@ pub fn expects(key: &str) -> Option<&'static str> {
         "name" => "a string",
         "iec_type" => "a string such as \"WORD\"",
         "quantity" => "a string such as \"force\"",
+        "unit" => "a string such as \"mm\"",
+        "deadband" => "a number of 0 or more, such as `0.5`",
         "alarm" => "its text, `alarm = \"Guard door open\"`, or `alarm(text = \"...\", ...)`",
         "alarm_when" => "`true` or `false`",
         "crate" => "a path as a string, such as \"::plc_core\"",

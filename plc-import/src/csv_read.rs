@@ -20,7 +20,7 @@ pub const STRUCT: &str = "STRUCT";
 
 /// The CSV columns: first those of the tooling of the framework the JSON format comes from (`name` .. `initial`), then
 /// the rest of a variable's fields, so that nothing of a declaration is lost.
-pub const COLUMNS: [&str; 15] = [
+pub const COLUMNS: [&str; 17] = [
     "name",
     "type",
     "direction",
@@ -36,6 +36,8 @@ pub const COLUMNS: [&str; 15] = [
     "dims",
     "ux",
     "quantity",
+    "unit",
+    "deadband",
 ];
 
 /// A CSV file read into the JSON front end's form, with the line of each row.
@@ -203,7 +205,7 @@ fn cell_value(col: &str, cell: &str, ty: &str) -> Option<Value> {
     }
     Some(match col {
         "initial" => initial(c, ty),
-        "bit" | "max_length" => number(c),
+        "bit" | "max_length" | "deadband" => number(c),
         "nonvolatile" | "read_only" | "ux" | "alarm_latched" | "alarm_when" => flag(c),
         "alarm_severity" | "alarm_low_low" | "alarm_low" | "alarm_high" | "alarm_high_high"
         | "alarm_deadband" => number(c),

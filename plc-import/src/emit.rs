@@ -258,6 +258,12 @@ fn field(v: &Var<ListAt>, rust_type: &str, origin: &str) -> String {
     if let Some(q) = &v.quantity {
         keys.push(format!("quantity = {:?}", q.value));
     }
+    if let Some(u) = &v.unit {
+        keys.push(format!("unit = {:?}", u.value));
+    }
+    if let Some(d) = &v.deadband {
+        keys.push(format!("deadband = {}", d.value));
+    }
     if let Some(a) = &v.alarm {
         keys.push(crate::alarm_attr::attribute(a));
     }

@@ -110,6 +110,12 @@ fn var_json(
     if let Some(q) = &v.quantity {
         o.insert("quantity".into(), json!(q));
     }
+    if let Some(u) = &v.unit {
+        o.insert("unit".into(), json!(u));
+    }
+    if let Some(d) = v.deadband {
+        o.insert("deadband".into(), json!(d));
+    }
     Ok(Value::Object(o))
 }
 
@@ -192,8 +198,8 @@ pub fn descriptor_to_csv(desc: &LayoutDescriptor) -> Result<String, String> {
 /// let csv = plc_import::export_csv::<Gm>().unwrap();
 /// assert_eq!(
 ///     csv,
-///     "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity\r\n\
-///      press_home_offset_mm,f64,,,\"Offset, in mm\",12.5,,,,true,,,,,\r\n"
+///     "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband\r\n\
+///      press_home_offset_mm,f64,,,\"Offset, in mm\",12.5,,,,true,,,,,,,\r\n"
 /// );
 /// ```
 pub fn export_csv<T: GlobalMemory>() -> Result<String, String> {

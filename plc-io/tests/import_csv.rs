@@ -9,7 +9,7 @@ use plc_io::import::{
 };
 use proptest::prelude::*;
 
-const HEADER: &str = "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity";
+const HEADER: &str = "name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband";
 
 fn csv_errors(csv: &str) -> Vec<String> {
     match generate_csv(csv, &Options::default()) {
@@ -137,11 +137,11 @@ fn the_export_quotes_as_rfc_4180_says() {
         csv,
         format!(
             "{HEADER}\r\n\
-             offset,f64,,,\"Offset, in \"\"mm\"\"\",12.5,,,,true,,,,,\r\n\
-             label,string,,,,\"a,b \"\"c\"\"\r\nd\",,,32,,,,,,\r\n\
-             inputs,u16,input,ethercat.io.inputs,,,,,,,,,,,\r\n\
-             flag,bool,,,,,inputs,15,,,true,,,,\r\n\
-             grid,i8,,,,,,,,,,,\"[3,2]\",,\r\n"
+             offset,f64,,,\"Offset, in \"\"mm\"\"\",12.5,,,,true,,,,,,,\r\n\
+             label,string,,,,\"a,b \"\"c\"\"\r\nd\",,,32,,,,,,,,\r\n\
+             inputs,u16,input,ethercat.io.inputs,,,,,,,,,,,,,\r\n\
+             flag,bool,,,,,inputs,15,,,true,,,,,,\r\n\
+             grid,i8,,,,,,,,,,,\"[3,2]\",,,,\r\n"
         )
     );
 }
@@ -158,6 +158,75 @@ fn the_csv_and_json_exports_import_to_the_same_code() {
         generate(&export_json::<Quoting>().unwrap(), &o)
             .unwrap()
             .code
+    );
+}
+
+/// A measured value with its engineering unit and reporting deadband, beside an alarm's own
+/// deadband.
+#[derive(GlobalMemory, Debug, Clone)]
+struct Reported {
+    #[plc(
+        unit = "kN",
+        deadband = 0.5,
+        alarm(text = "Overload", high = 90.0, deadband = 2.0)
+    )]
+    force: f32,
+    #[plc(unit = "°C", deadband = 1)]
+    temperatures: [i16; 2],
+    count: u32,
+}
+
+/// `unit` and `deadband` are columns of their own, exported and read back; the alarm's
+/// deadband stays in its own column.
+#[test]
+fn units_and_deadbands_round_trip_through_csv_and_json() {
+    let csv = export_csv::<Reported>().unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert!(lines[0].starts_with(&format!("{HEADER},alarm")), "{csv}");
+    let force = "force,f32,,,,,,,,,,,,,,kN,0.5,Overload,";
+    let temperatures = "temperatures,i16,,,,,,,,,,,[2],,,°C,1.0,";
+    assert!(lines[1].starts_with(force), "{csv}");
+    assert!(lines[2].starts_with(temperatures), "{csv}");
+    let o = Options::default();
+    let from_csv = generate_csv(&csv, &o).unwrap().code;
+    for key in [
+        "unit = \"kN\",\n        deadband = 0.5,",
+        "alarm(text = \"Overload\", high = 90.0, deadband = 2.0)",
+        "unit = \"°C\", deadband = 1,",
+    ] {
+        assert!(from_csv.contains(key), "{key} missing:\n{from_csv}");
+    }
+    let from_json = generate(&export_json::<Reported>().unwrap(), &o)
+        .unwrap()
+        .code;
+    assert_eq!(from_csv, from_json);
+}
+
+/// A deadband cell that is no number, a negative one and units on what is no number: each
+/// located by line, variable and column, in the derive's words.
+#[test]
+fn unit_and_deadband_cells_are_checked() {
+    let errors = csv_errors(&table(&[
+        "a,f32,,,,,,,,,,,,,,kN,fast",
+        "b,f32,,,,,,,,,,,,,,,-1",
+        "c,bool,,,,,,,,,,,,,,mm,",
+        "d,WORD,,,,,,,,,,,,,,,0.5",
+    ]));
+    assert_eq!(
+        errors,
+        [
+            "line 2, variable a, column deadband: expected a number such as 0.5, found \"fast\"",
+            "line 3, variable b, column deadband: `deadband = -1` on \"b\" is negative: the \
+             reporting deadband is how far a number must move before a change is published (0: \
+             every change); give 0 or more, or remove it for the publisher's default",
+            "line 4, variable c, column unit: `unit` cannot be declared on \"c\" (bool, BOOL): a \
+             bool is true or false, not a quantity; remove `unit` (an engineering unit is for \
+             integers, REAL and LREAL)",
+            "line 5, variable d, column deadband: `deadband` cannot be declared on \"d\" (u16, \
+             WORD): WORD is a bit string, a set of bits rather than a quantity (declared without \
+             `iec_type`, the variable is an integer), and each of its changes is published; \
+             remove `deadband` (a reporting deadband is for integers, REAL and LREAL)",
+        ]
     );
 }
 
@@ -216,7 +285,7 @@ fn header_mistakes_are_errors() {
 #[test]
 fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() {
     let e = csv_errors(&table(&[
-        "a,u8,,,,,,,,,,,,,,extra",
+        "a,u8,,,,,,,,,,,,,,,,extra",
         ",u8,,,,,,,,,,,",
         "b,u8,,,,300,,,,,,,",
         "B,u8,,,,,,,,,,,",
@@ -224,7 +293,7 @@ fn row_mistakes_are_errors_the_other_rows_are_still_checked_all_in_file_order() 
     assert_eq!(
         e,
         [
-            "line 2: 16 cells but the header names 15 columns: put a cell that holds a comma in double quotes",
+            "line 2: 18 cells but the header names 17 columns: put a cell that holds a comma in double quotes",
             "line 3, column name: empty: every row needs the variable's name",
             "line 4, variable b, column initial: 300 is out of range for USINT (u8 holds 0..=255)",
             "line 5, variable B: declared twice: \"B\" is already used by \"b\" (line 4), and names are case-insensitive; rename one",

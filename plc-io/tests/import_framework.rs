@@ -90,3 +90,39 @@ fn an_unknown_field_of_a_variable_is_still_an_error() {
     );
     assert!(e.0[0].contains("ux, quantity"), "{e:?}");
 }
+
+/// A tag list with engineering units and reporting deadbands beside the quantity: each
+/// becomes its key of `#[plc(...)]`; on a structure as a whole they are refused.
+#[test]
+fn units_and_deadbands_import_beside_the_quantity() {
+    let g = generate(
+        r#"{ "variables": {
+            "load_cell_force": { "type": "f64", "quantity": "force", "unit": "kN", "deadband": 0.05 },
+            "x_position": { "type": "i32", "link": "ethercat.motion.x.position", "quantity": "length", "unit": "µm" }
+        } }"#,
+        &options(),
+    )
+    .unwrap();
+    assert!(
+        g.code
+            .contains("#[plc(quantity = \"force\", unit = \"kN\", deadband = 0.05"),
+        "{}",
+        g.code
+    );
+    assert!(g.code.contains("unit = \"µm\""), "{}", g.code);
+    let e = generate(
+        r#"{ "types": { "Axis": { "variables": { "pos": { "type": "f64", "unit": "mm" } } } },
+            "variables": { "x": { "type": "Axis", "unit": "mm", "deadband": 0.5 } } }"#,
+        &options(),
+    )
+    .unwrap_err();
+    assert_eq!(
+        e.0,
+        [
+            "variables.x.unit: \"x\" is a structure: `unit` is for numbers; declare it on the \
+             structure's members",
+            "variables.x.deadband: \"x\" is a structure: `deadband` is for numbers; declare it \
+             on the structure's members",
+        ]
+    );
+}

@@ -15,7 +15,7 @@ pub const MAX_METRICS: usize = 100_000;
 #[derive(Clone, Copy, Debug)]
 pub struct DataPolicy {
     /// A number is sent when it moved by more than this since it was last sent (0: every
-    /// change).
+    /// change), unless it declares a deadband of its own (`#[plc(deadband = ...)]`).
     pub deadband: f64,
     /// At least this long between two values of one metric (zero: no limit); a change held
     /// back is sent when the time is up, as its latest value.
@@ -145,7 +145,9 @@ impl Device {
         for (alias, e) in self.entries.iter_mut().enumerate() {
             let value = e.at.var.value_in(&image, 0);
             let changed = match (&e.sent, &value) {
-                (Some(s), Some(v)) => metric::exceeds_deadband(s, v, policy.deadband),
+                (Some(s), Some(v)) => {
+                    metric::exceeds_deadband(s, v, metric::deadband(&e.at.var, policy.deadband))
+                }
                 (None, None) => false,
                 _ => true,
             };

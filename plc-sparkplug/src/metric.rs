@@ -227,9 +227,20 @@ pub fn bool_property(b: bool) -> PropertyValue {
     }
 }
 
+/// The deadband of a variable's metric: its own reporting deadband (`#[plc(deadband = 0.5)]`,
+/// a list's `"deadband"`), else the node's default (`--deadband`). A declared deadband is
+/// checked to be 0 or more when it is declared; one that is not (a damaged descriptor) is
+/// passed over for the default rather than sending the value every cycle.
+pub fn deadband(var: &plc_shm::VarDescriptor, default: f64) -> f64 {
+    var.deadband
+        .filter(|d| *d >= 0.0 && d.is_finite())
+        .unwrap_or(default)
+}
+
 /// The properties of a variable's metric: `description` (when it has one), `readOnly` (true
 /// where no tool may write it: read-only, input or status), `quantity` (when declared), and
-/// `engUnit` `ns` for an `LTIME`.
+/// `engUnit`, the declared `unit` (`#[plc(unit = "mm")]`), or `ns` for an `LTIME` (which
+/// takes no declared unit).
 pub fn properties(var: &plc_shm::VarDescriptor, writable: bool) -> proto::PropertySet {
     let mut set = proto::PropertySet::default();
     let mut add = |k: &str, v: PropertyValue| {
@@ -243,7 +254,9 @@ pub fn properties(var: &plc_shm::VarDescriptor, writable: bool) -> proto::Proper
     if let Some(q) = &var.quantity {
         add("quantity", string_property(q));
     }
-    if var.iec_type == IecType::Ltime {
+    if let Some(unit) = &var.unit {
+        add("engUnit", string_property(unit));
+    } else if var.iec_type == IecType::Ltime {
         add("engUnit", string_property(LTIME_UNIT));
     }
     set
@@ -377,5 +390,45 @@ mod tests {
         let t = |s: &str| Value::Text(FixedString::from_str_truncate(s));
         assert!(exceeds_deadband(&t("a"), &t("b"), 5.0));
         assert!(!exceeds_deadband(&t("a"), &t("a"), 0.0));
+    }
+
+    /// A descriptor of one variable of type `iec`, with a unit and a deadband if given.
+    fn var(iec: IecType, unit: Option<&str>, deadband: Option<f64>) -> plc_shm::VarDescriptor {
+        plc_shm::VarDescriptor {
+            quantity: Some("force".into()),
+            unit: unit.map(str::to_string),
+            deadband,
+            ..plc_shm::VarDescriptor::basic("v", iec, 0, 8)
+        }
+    }
+
+    fn property<'a>(set: &'a proto::PropertySet, key: &str) -> Option<&'a PropertyValueKind> {
+        let i = set.keys.iter().position(|k| k == key)?;
+        set.values[i].value.as_ref()
+    }
+
+    #[test]
+    fn the_declared_unit_is_the_metric_s_eng_unit_and_ltime_keeps_ns() {
+        let text = |s: &str| Some(PropertyValueKind::StringValue(s.into()));
+        let with_unit = properties(&var(IecType::Real, Some("kN"), None), true);
+        assert_eq!(property(&with_unit, "engUnit").cloned(), text("kN"));
+        assert_eq!(property(&with_unit, "quantity").cloned(), text("force"));
+        let without = properties(&var(IecType::Real, None, None), true);
+        assert_eq!(property(&without, "engUnit"), None);
+        let ltime = properties(&var(IecType::Ltime, None, None), true);
+        assert_eq!(property(&ltime, "engUnit").cloned(), text(LTIME_UNIT));
+    }
+
+    #[test]
+    fn a_declared_deadband_overrides_the_node_s_default() {
+        assert_eq!(deadband(&var(IecType::Real, None, Some(0.5)), 2.0), 0.5);
+        assert_eq!(deadband(&var(IecType::Real, None, Some(0.0)), 2.0), 0.0);
+        assert_eq!(deadband(&var(IecType::Real, None, None), 2.0), 2.0);
+        // A damaged descriptor's: the default, not a value sent every cycle.
+        assert_eq!(deadband(&var(IecType::Real, None, Some(-1.0)), 2.0), 2.0);
+        assert_eq!(
+            deadband(&var(IecType::Real, None, Some(f64::NAN)), 2.0),
+            2.0
+        );
     }
 }

@@ -15,7 +15,8 @@ pub struct Axis {
     /// The drive reached its end position (OUT)
     #[plc(direction = "output")]
     pub done: bool,
-    /// Where the drive is, in mm
+    /// Where the drive is
+    #[plc(unit = "mm")]
     pub pos_mm: f64,
     /// Cycles the drive has been on in the current step
     pub on_cycles: u32,
@@ -89,10 +90,18 @@ pub struct Gm {
     #[plc(link = "ethercat.crosshead.modes_of_operation", direction = "output")]
     pub crosshead_mode: i8,
     /// Crosshead drive: target position in increments (0x607A)
-    #[plc(link = "ethercat.crosshead.target_position", direction = "output")]
+    #[plc(
+        link = "ethercat.crosshead.target_position",
+        direction = "output",
+        unit = "inc"
+    )]
     pub crosshead_target_position: i32,
     /// Crosshead drive: target velocity in increments/s (0x60FF)
-    #[plc(link = "ethercat.crosshead.target_velocity", direction = "output")]
+    #[plc(
+        link = "ethercat.crosshead.target_velocity",
+        direction = "output",
+        unit = "inc/s"
+    )]
     pub crosshead_target_velocity: i32,
     /// Crosshead drive: statusword (0x6041), into `crosshead.drive` each cycle
     #[plc(link = "ethercat.crosshead.statusword", direction = "input")]
@@ -103,16 +112,29 @@ pub struct Gm {
         direction = "input"
     )]
     pub crosshead_mode_display: i8,
-    /// Crosshead drive: measured position in increments (0x6064)
-    #[plc(link = "ethercat.crosshead.position_actual_value", direction = "input")]
+    /// Crosshead drive: measured position in increments (0x6064); the encoder's last counts
+    /// jitter, so a change is published once it moved by more than 2
+    #[plc(
+        link = "ethercat.crosshead.position_actual_value",
+        direction = "input",
+        unit = "inc",
+        deadband = 2
+    )]
     pub crosshead_position: i32,
-    /// Crosshead drive: measured velocity in increments/s (0x606C)
-    #[plc(link = "ethercat.crosshead.velocity_actual_value", direction = "input")]
+    /// Crosshead drive: measured velocity in increments/s (0x606C), published once it moved
+    /// by more than 10
+    #[plc(
+        link = "ethercat.crosshead.velocity_actual_value",
+        direction = "input",
+        unit = "inc/s",
+        deadband = 10
+    )]
     pub crosshead_velocity: i32,
     /// Crosshead drive: following error in increments (0x60F4)
     #[plc(
         link = "ethercat.crosshead.following_error_actual_value",
-        direction = "input"
+        direction = "input",
+        unit = "inc"
     )]
     pub crosshead_following_error: i32,
     /// Crosshead drive: error code of its last fault (0x603F, 0 none)
@@ -127,13 +149,13 @@ pub struct Gm {
     /// Operator notes
     pub info_notes: FixedString<255>,
     /// Press home offset in mm
-    #[plc(nonvolatile, initial = 12.5)]
+    #[plc(nonvolatile, initial = 12.5, unit = "mm")]
     pub press_home_offset_mm: f64,
     /// Lift zero offset in mm
-    #[plc(nonvolatile, initial = 0.0)]
+    #[plc(nonvolatile, initial = 0.0, unit = "mm")]
     pub lift_zero_offset_mm: f64,
     /// Test speed setpoint in mm/s (the HMI's to set, 0.1 to 10; kept across restarts)
-    #[plc(direction = "command", nonvolatile, initial = 2.0)]
+    #[plc(direction = "command", nonvolatile, initial = 2.0, unit = "mm/s")]
     pub test_speed_mm_s: f64,
     /// Start the next test by itself 1 s after the last one
     #[plc(direction = "command", initial = true)]
@@ -154,17 +176,24 @@ pub struct Gm {
     /// Fault text, empty when none
     #[plc(direction = "status")]
     pub fault_text: FixedString<128>,
-    /// Simulated force in kN
-    #[plc(direction = "status", quantity = "force")]
+    /// Simulated force: the load cell's noise is published only once the force moved by
+    /// more than 0.05 kN
+    #[plc(direction = "status", quantity = "force", unit = "kN", deadband = 0.05)]
     pub force_kn: f64,
-    /// Elongation in mm: the crosshead's travel since the test started
-    #[plc(direction = "status", quantity = "length")]
+    /// Elongation: the crosshead's travel since the test started, published once it moved by
+    /// more than 0.01 mm
+    #[plc(
+        direction = "status",
+        quantity = "length",
+        unit = "mm",
+        deadband = 0.01
+    )]
     pub elongation_mm: f64,
-    /// Where the crosshead stood when the test started, in mm
-    #[plc(direction = "status", quantity = "length")]
+    /// Where the crosshead stood when the test started
+    #[plc(direction = "status", quantity = "length", unit = "mm")]
     pub test_start_mm: f64,
-    /// Largest force of the last test in kN
-    #[plc(direction = "status", quantity = "force")]
+    /// Largest force of the last test
+    #[plc(direction = "status", quantity = "force", unit = "kN")]
     pub max_force_kn: f64,
     /// Tests completed since the machine was commissioned
     #[plc(direction = "status", nonvolatile)]

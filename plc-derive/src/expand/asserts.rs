@@ -52,6 +52,7 @@ pub fn expand(c: &Container) -> TokenStream {
             ));
             structure_checks(c, v, m, &mut out);
             unknown_type_checks(c, v, m, &mut out);
+            reporting_checks(c, v, m, &mut out);
         }
         // The bit must be within the source's width; only the compiler knows an alias's width.
         if let (Some((s, bit)), Some(b)) = (v.mapped_to, &m.bit) {
@@ -175,6 +176,33 @@ fn structure_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenS
                  to keep `nonvolatile` in the structure's declaration"
             ),
         ));
+    }
+}
+
+/// `unit` and `deadband` on a field whose type only the compiler knows (an alias, a
+/// structure): the model could not tell whether it is a number. With an `iec_type` it could.
+fn reporting_checks(c: &Container, v: &Var, m: &decl::Var<Loc>, out: &mut TokenStream) {
+    if m.iec_type.is_some() {
+        return;
+    }
+    let p = private(c);
+    let ty = v.ty;
+    let name = v.field_name();
+    let given = [
+        ("unit", m.unit.as_ref().map(|u| u.at.clone())),
+        ("deadband", m.deadband.as_ref().map(|d| d.at.clone())),
+    ];
+    for (key, at) in given {
+        let Some(at) = at else { continue };
+        let message = format!(
+            "`{key}` is for numbers (integers, REAL and LREAL, alone or in arrays): the type of \
+             `{name}` is not one; remove `{key}` (a structure takes it on its members)"
+        );
+        let cond = quote_spanned!(v.ty_span()=> #p::facts::<#ty>().has_number_elements());
+        out.extend(match &at {
+            Loc::Tokens(written) => assert_over(written, cond, message),
+            Loc::Span(span) => assert(*span, cond, message),
+        });
     }
 }
 

@@ -94,6 +94,14 @@ pub fn infos(c: &Container) -> Vec<TokenStream> {
                 let q = &q.value;
                 setters.extend(quote!(.quantity(#q)));
             }
+            if let Some(u) = &m.unit {
+                let u = &u.value;
+                setters.extend(quote!(.unit(#u)));
+            }
+            if let Some(d) = &m.deadband {
+                let d = d.value;
+                setters.extend(quote!(.deadband(#d)));
+            }
             quote!(#p::var::<#ty>(#name, #rust_type, #offset, #size) #setters)
         })
         .collect()

@@ -53,6 +53,20 @@ impl Reader<'_> {
         }
     }
 
+    /// A number field (`"deadband": 0.5`): its rules are the checker's, its JSON kind is here.
+    pub(super) fn number(&mut self, key: &'static str) -> Option<Located<f64, ListAt>> {
+        match self.obj.get(key)? {
+            Value::Number(n) => n.as_f64().map(|v| Located::new(v, self.at(key))),
+            other => {
+                self.err(
+                    key,
+                    format!("expected a number such as 0.5, found {}", text(other)),
+                );
+                None
+            }
+        }
+    }
+
     pub(super) fn flag(&mut self, key: &'static str) -> bool {
         match self.obj.get(key) {
             None => false,
@@ -281,6 +295,20 @@ impl Reader<'_> {
                      declaration (each instance then has its own)"
                 ),
             );
+        }
+        for (key, given) in [
+            ("unit", model.unit.take().is_some()),
+            ("deadband", model.deadband.take().is_some()),
+        ] {
+            if given {
+                self.err(
+                    key,
+                    format!(
+                        "{name} is a structure: `{key}` is for numbers; declare it on the \
+                         structure's members"
+                    ),
+                );
+            }
         }
         if model.source.take().is_some() | model.bit.take().is_some() {
             let key = if self.obj.contains_key("source") {

@@ -125,6 +125,8 @@ fn read_var(
     model.read_only = r.flag("read_only");
     model.ux = r.flag("ux");
     model.quantity = r.string("quantity");
+    model.unit = r.string("unit");
+    model.deadband = r.number("deadband");
     model.alarm = r.alarm();
     if structured.is_some() {
         r.structure_as_a_whole(&mut model);

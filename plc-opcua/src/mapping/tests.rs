@@ -14,24 +14,11 @@ fn var(
         (ty.bits() as usize).div_ceil(8).max(1)
     };
     VarDescriptor {
-        name: name.into(),
-        iec_type: ty,
         rust_type: String::new(),
-        offset: 0,
-        size: element * dims.iter().product::<usize>(),
         dims: dims.to_vec(),
-        bit: None,
-        link: None,
-        address: None,
-        description: String::new(),
-        initial: None,
-        nonvolatile: false,
         access,
         direction,
-        ux: false,
-        quantity: None,
-        type_name: None,
-        members: vec![],
+        ..VarDescriptor::basic(name, ty, 0, element * dims.iter().product::<usize>())
     }
 }
 

@@ -485,6 +485,36 @@ const ROWS: &[Row] = &[
         kinds: &["AlarmSuppressUnknown"],
     },
     Row {
+        rule: "units and reporting deadbands on integers, reals and arrays of them, beside an alarm's own deadband",
+        rust: "struct Gm { #[plc(unit = \"kN\", deadband = 0.5)] force: f32, #[plc(unit = \"mm\", deadband = 0)] pos: [f64; 3], #[plc(unit = \"1/min\", deadband = 2)] speed: i32, #[plc(unit = \"°C\", deadband = 1.0, alarm(text = \"Hot\", high = 80.0, deadband = 2.0))] temp: f32 }",
+        json: Some(r#""force": {"type": "f32", "unit": "kN", "deadband": 0.5}, "pos": {"type": "f64", "dims": [3], "unit": "mm", "deadband": 0}, "speed": {"type": "i32", "unit": "1/min", "deadband": 2}, "temp": {"type": "f32", "unit": "°C", "deadband": 1.0, "alarm": {"text": "Hot", "high": 80.0, "deadband": 2.0}}"#),
+        kinds: &[],
+    },
+    Row {
+        rule: "a unit on a bool, a STRING, a duration and a bit string",
+        rust: "struct Gm { #[plc(unit = \"mm\")] a: bool, #[plc(unit = \"mm\")] b: FixedString<8>, #[plc(unit = \"s\")] c: Time, #[plc(unit = \"mm\", iec_type = \"WORD\")] d: u16 }",
+        json: Some(r#""a": {"type": "bool", "unit": "mm"}, "b": {"type": "string", "max_length": 8, "unit": "mm"}, "c": {"type": "LTIME", "unit": "s"}, "d": {"type": "WORD", "unit": "mm"}"#),
+        kinds: &["UnitOnType", "UnitOnType", "UnitOnType", "UnitOnType"],
+    },
+    Row {
+        rule: "an empty unit, one of 33 characters and one with a tab",
+        rust: "struct Gm { #[plc(unit = \"\")] a: f32, #[plc(unit = \"mmmmmmmmmmmmmmmmmmmmmmmmmmmmmmmmm\")] b: f32, #[plc(unit = \"m\\tm\")] c: f32 }",
+        json: Some(r#""a": {"type": "f32", "unit": ""}, "b": {"type": "f32", "unit": "mmmmmmmmmmmmmmmmmmmmmmmmmmmmmmmmm"}, "c": {"type": "f32", "unit": "m\tm"}"#),
+        kinds: &["BadUnit", "BadUnit", "BadUnit"],
+    },
+    Row {
+        rule: "a negative reporting deadband, and one on a bool, a STRING and a duration",
+        rust: "struct Gm { #[plc(deadband = -0.5)] a: f32, #[plc(deadband = 1)] b: bool, #[plc(deadband = 1)] c: FixedString<8>, #[plc(deadband = 1)] d: Time }",
+        json: Some(r#""a": {"type": "f32", "deadband": -0.5}, "b": {"type": "bool", "deadband": 1}, "c": {"type": "string", "max_length": 8, "deadband": 1}, "d": {"type": "LTIME", "deadband": 1}"#),
+        kinds: &["NegativeDeadband", "DeadbandOnType", "DeadbandOnType", "DeadbandOnType"],
+    },
+    Row {
+        rule: "a unit and a deadband on a structure's members, and a unit on its bool",
+        rust: "#[derive(PlcStruct)] struct Axis { #[plc(unit = \"mm\", deadband = 0.01)] pos: f64, #[plc(unit = \"mm\")] homed: bool }",
+        json: Some(r#""pos": {"type": "f64", "unit": "mm", "deadband": 0.01}, "homed": {"type": "bool", "unit": "mm"}"#),
+        kinds: &["UnitOnType"],
+    },
+    Row {
         rule: "every mistake of a declaration at once",
         rust: "struct Gm { #[plc(initial = 300)] a: u8, ton: bool, #[plc(link = \"ethercat.io\")] c: u8, #[plc(at = \"%IW3\")] d: i16 }",
         json: Some(r#""a": {"type": "u8", "initial": 300}, "ton": {"type": "bool"}, "c": {"type": "u8", "link": "ethercat.io"}, "d": {"type": "i16", "at": "%IW3"}"#),

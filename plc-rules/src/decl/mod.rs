@@ -32,12 +32,16 @@
 
 mod alarm;
 mod check;
+mod initial;
 mod issue;
 mod keys;
+mod report;
 
 pub use alarm::{Alarm, DEFAULT_SEVERITY, DelayError, LIMIT_KEYS, parse_delay};
-pub use check::{Checked, Resolved, check, initial_misfit, type_rules};
+pub use check::{Checked, Resolved, check, type_rules};
+pub use initial::initial_misfit;
 pub use issue::{Expected, Issue, IssueKind, KIND_NAMES, Wording};
+pub use report::{MAX_UNIT_CHARS, UnitProblem};
 
 use crate::IecType;
 pub use crate::access::{Access, Direction};
@@ -200,6 +204,13 @@ pub struct Var<L> {
     pub ux: bool,
     /// `quantity = "force"`: the physical quantity a display uses to pick units.
     pub quantity: Option<Located<String, L>>,
+    /// `unit = "mm"`: the engineering unit the value is in, as tools show it beside the
+    /// value (a number's only).
+    pub unit: Option<Located<String, L>>,
+    /// `deadband = 0.5`: the reporting deadband, how far a number must move before a change
+    /// is published (data by exception); not the deadband of a limit alarm, which is
+    /// `alarm(deadband = ...)`.
+    pub deadband: Option<Located<f64, L>>,
     /// `alarm = ".."` or `alarm(...)`: an alarm on the variable (for an array of bools, one
     /// per element; on a structure's member, one per instance).
     pub alarm: Option<Alarm<L>>,
@@ -228,6 +239,8 @@ impl<L> Var<L> {
             description: String::new(),
             ux: false,
             quantity: None,
+            unit: None,
+            deadband: None,
             alarm: None,
         }
     }
@@ -249,6 +262,8 @@ pub const ATTRIBUTE_KEYS: &[&str] = &[
     "direction",
     "ux",
     "quantity",
+    "unit",
+    "deadband",
     "alarm",
 ];
 

@@ -49,6 +49,13 @@ pub struct VarDescriptor {
     /// The physical quantity a display uses to pick units (`"force"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub quantity: Option<String>,
+    /// The engineering unit of the value (`"mm"`), for numbers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub unit: Option<String>,
+    /// The reporting deadband: how far the value must move before a publisher sends a change
+    /// (`None`: the publisher's default).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub deadband: Option<f64>,
     /// A structured variable's type name (`"Axis"`, `"TON"`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub type_name: Option<String>,
@@ -69,6 +76,45 @@ pub struct BitDescriptor {
 
 /// The same answers as [`VarInfo`]'s, from the same helpers.
 impl VarDescriptor {
+    /// A scalar of type `iec_type`, `size` bytes at `offset`, with every attribute at its
+    /// default (internal, read-write; no bit mapping, link, address, description, initial
+    /// value, quantity, unit or deadband): for tools and tests that describe a variable
+    /// without a program's Rust type. Set the rest with struct update syntax.
+    ///
+    /// ```
+    /// use plc_core::IecType;
+    /// use plc_shm::VarDescriptor;
+    /// let force = VarDescriptor {
+    ///     unit: Some("kN".into()),
+    ///     ..VarDescriptor::basic("force", IecType::Real, 0, 4)
+    /// };
+    /// assert_eq!((force.rust_type.as_str(), force.deadband), ("f32", None));
+    /// ```
+    pub fn basic(name: &str, iec_type: IecType, offset: usize, size: usize) -> VarDescriptor {
+        VarDescriptor {
+            name: name.to_string(),
+            iec_type,
+            rust_type: iec_type.rust_name().to_string(),
+            offset,
+            size,
+            dims: Vec::new(),
+            bit: None,
+            link: None,
+            address: None,
+            description: String::new(),
+            initial: None,
+            nonvolatile: false,
+            access: Access::ReadWrite,
+            direction: Direction::Internal,
+            ux: false,
+            quantity: None,
+            unit: None,
+            deadband: None,
+            type_name: None,
+            members: Vec::new(),
+        }
+    }
+
     /// Number of elements (1 for a scalar). Saturating: a damaged descriptor must not overflow
     /// (`check_variables` refuses it).
     pub fn elements(&self) -> usize {
@@ -154,6 +200,8 @@ impl From<&VarInfo> for VarDescriptor {
             direction: v.direction,
             ux: v.ux,
             quantity: v.quantity.map(str::to_string),
+            unit: v.unit.map(str::to_string),
+            deadband: v.deadband,
             type_name: v.is_structured().then(|| v.type_name().to_string()),
             members: v.members().iter().map(VarDescriptor::from).collect(),
         }
@@ -302,26 +350,7 @@ mod tests {
     use super::*;
 
     fn var(name: &str, offset: usize, size: usize) -> VarDescriptor {
-        VarDescriptor {
-            name: name.into(),
-            iec_type: IecType::Udint,
-            rust_type: "u32".into(),
-            offset,
-            size,
-            dims: vec![],
-            bit: None,
-            link: None,
-            address: None,
-            description: String::new(),
-            initial: None,
-            nonvolatile: false,
-            access: Access::ReadWrite,
-            direction: Direction::Internal,
-            ux: false,
-            quantity: None,
-            type_name: None,
-            members: vec![],
-        }
+        VarDescriptor::basic(name, IecType::Udint, offset, size)
     }
 
     fn structure(name: &str, offset: usize, members: Vec<VarDescriptor>) -> VarDescriptor {
@@ -383,5 +412,23 @@ mod tests {
         c.variables[0].type_name = Some("T".into());
         assert_ne!(a.computed_hash(), b.computed_hash());
         assert_ne!(a.computed_hash(), c.computed_hash());
+    }
+
+    #[test]
+    fn unit_and_deadband_are_written_only_where_declared_and_read_back() {
+        let mut force = var("force", 0, 4);
+        force.unit = Some("kN".into());
+        force.deadband = Some(0.5);
+        let plain = var("count", 4, 4);
+        let json = serde_json::to_string(&descriptor(vec![force, plain], 8)).unwrap();
+        assert!(json.contains(r#""unit":"kN","deadband":0.5"#), "{json}");
+        assert_eq!(json.matches("unit").count(), 1, "{json}");
+        let back: LayoutDescriptor = serde_json::from_str(&json).unwrap();
+        assert_eq!(back.variables[0].unit.as_deref(), Some("kN"));
+        assert_eq!(back.variables[0].deadband, Some(0.5));
+        assert_eq!(
+            (&back.variables[1].unit, back.variables[1].deadband),
+            (&None, None)
+        );
     }
 }

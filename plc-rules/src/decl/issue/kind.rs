@@ -2,7 +2,7 @@
 //! names ([`IssueKind::name`], [`KIND_NAMES`]) taken from the one list of its variants.
 
 use crate::address::{AddressError, IecAddress, Size};
-use crate::decl::DelayError;
+use crate::decl::{DelayError, UnitProblem};
 use crate::path::PathError;
 use crate::{Direction, IecType, LinkError, NameError, TimeError};
 use std::string::String;
@@ -355,6 +355,41 @@ issue_kinds! {
             ty: String,
             /// The basic variable the path goes past (`mode` of `mode.x`), if it does.
             past: Option<String>,
+        },
+        /// A `unit` that is empty, longer than 32 characters or not printable.
+        BadUnit {
+            /// The variable.
+            var: String,
+            /// The unit as written.
+            unit: String,
+            /// What is wrong with it.
+            problem: UnitProblem,
+        },
+        /// A `unit` on a variable that is not a number (a bool, a STRING, a bit string, a
+        /// duration).
+        UnitOnType {
+            /// The variable.
+            var: String,
+            /// The element's Rust type.
+            ty: String,
+            /// Its IEC type (the declared `iec_type`, if one).
+            iec: IecType,
+        },
+        /// A reporting `deadband` below 0 (or not a finite number).
+        NegativeDeadband {
+            /// The variable.
+            var: String,
+            /// The deadband given.
+            value: f64,
+        },
+        /// A reporting `deadband` on a variable that is not a number.
+        DeadbandOnType {
+            /// The variable.
+            var: String,
+            /// The element's Rust type.
+            ty: String,
+            /// Its IEC type (the declared `iec_type`, if one).
+            iec: IecType,
         },
         /// A link shared by two variables (a warning).
         SharedLink {

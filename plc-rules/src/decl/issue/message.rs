@@ -3,9 +3,10 @@
 use super::Issue;
 use super::kind::{Expected, IssueKind};
 use super::wording::Wording;
-use crate::IecType;
 use crate::address::Size;
 use crate::capacity::{MAX_ARRAY_DIMS, MAX_ARRAY_ITEMS, MAX_STRING_CAPACITY};
+use crate::decl::{MAX_UNIT_CHARS, UnitProblem};
+use crate::{IecType, TypeFamily};
 use std::format;
 use std::string::{String, ToString};
 
@@ -301,11 +302,71 @@ impl<L> Issue<L> {
                  equipment is out of service",
                 q(path)
             ),
+            IssueKind::BadUnit { var, unit, problem } => match problem {
+                UnitProblem::Empty => format!(
+                    "the `unit` of {} is empty: give the engineering unit of its value, such as \
+                     \"mm\" or \"kN\", or remove `unit`",
+                    q(var)
+                ),
+                UnitProblem::TooLong { chars } => format!(
+                    "the `unit` of {} has {chars} characters, more than {MAX_UNIT_CHARS}: give \
+                     the unit's symbol, such as \"mm/s\", and say more in the description",
+                    q(var)
+                ),
+                UnitProblem::Control => format!(
+                    "the `unit` of {} ({unit:?}) holds a control character, such as a line break \
+                     or a tab: a unit is one line of printable text, such as \"°C\"",
+                    q(var)
+                ),
+            },
+            IssueKind::UnitOnType { var, ty, iec } => format!(
+                "`unit` cannot be declared on {} ({ty}, {iec}): {}; remove `unit` (an \
+                 engineering unit is for integers, REAL and LREAL)",
+                q(var),
+                not_a_quantity(*iec, "unit")
+            ),
+            IssueKind::NegativeDeadband { var, value } => format!(
+                "`deadband = {value}` on {} is {}: the reporting deadband is how far a number \
+                 must move before a change is published (0: every change); give 0 or more, or \
+                 remove it for the publisher's default",
+                q(var),
+                if *value < 0.0 {
+                    "negative"
+                } else {
+                    "not a finite number"
+                }
+            ),
+            IssueKind::DeadbandOnType { var, ty, iec } => format!(
+                "`deadband` cannot be declared on {} ({ty}, {iec}): {}, and each of its changes \
+                 is published; remove `deadband` (a reporting deadband is for integers, REAL and \
+                 LREAL)",
+                q(var),
+                not_a_quantity(*iec, "deadband")
+            ),
             IssueKind::SharedLink { link, first } => format!(
                 "{link:?} is also linked by {}: fine for an input; two variables writing one \
                  output entry are refused when the bus starts",
                 q(first)
             ),
+        }
+    }
+}
+
+/// Why a value of type `iec` takes no `key` (`unit` or `deadband`): it is not a quantity.
+fn not_a_quantity(iec: IecType, key: &str) -> String {
+    match iec.family() {
+        TypeFamily::Bool => "a bool is true or false, not a quantity".to_string(),
+        TypeFamily::String => "a STRING is text, not a quantity".to_string(),
+        TypeFamily::BitString => format!(
+            "{iec} is a bit string, a set of bits rather than a quantity (declared without \
+             `iec_type`, the variable is an integer)"
+        ),
+        TypeFamily::Time if key == "unit" => {
+            "a duration's unit is fixed: LTIME counts nanoseconds, shown as `ns`".to_string()
+        }
+        TypeFamily::Time => "a duration is not a quantity with a unit".to_string(),
+        TypeFamily::SignedInt | TypeFamily::UnsignedInt | TypeFamily::Real => {
+            format!("{iec} is a number")
         }
     }
 }
