@@ -74,6 +74,11 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
     assert_eq!(metric(&dbirth, "dwell")["value"], 1_500_000_000i64);
     assert_eq!(metric(&dbirth, "dwell")["properties"]["engUnit"], "ns");
     assert_eq!(
+        metric(&dbirth, "speed_actual")["properties"]["engUnit"],
+        "rpm"
+    );
+    assert!(metric(&dbirth, "speed_setpoint")["properties"]["engUnit"].is_null());
+    assert_eq!(
         metric(&dbirth, "inputs")["properties"]["description"],
         "Digital inputs"
     );
@@ -319,6 +324,41 @@ fn the_deadband_and_the_rate_limit_hold_back_small_and_frequent_changes() {
         // cycle may be a little earlier than the send).
         assert!(w[1].1 - w[0].1 >= 240, "values too close: {values:?}");
     }
+    assert!(edge.terminate().is_ok_and(|s| s.success()));
+    host.expect("NDEATH", is("NDEATH"));
+
+    // A variable's own deadband holds whatever --deadband says (0 here): `speed_actual`
+    // (deadband 50) follows the setpoint; a move of 30 is held back, one of 100 is sent.
+    let mut edge = serve(&dir, 3, port, &program.segment, &[]);
+    host.expect("DBIRTH", is("DBIRTH"));
+    let seg = program.segment.as_str();
+    assert!(plc(&["set", seg, "speed_setpoint=130"]).status.success());
+    let names = |v: &serde_json::Value| -> Vec<String> {
+        v["metrics"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .filter_map(|m| m["name"].as_str().map(str::to_string))
+            .collect()
+    };
+    let moved = host.expect("the setpoint's change", |v| {
+        has_metric(v, "speed_setpoint", &json!(130))
+    });
+    assert!(
+        !names(&moved).contains(&"speed_actual".to_string()),
+        "{moved}"
+    );
+    let held = host.within("speed_actual", Duration::from_millis(500), |v| {
+        names(v).contains(&"speed_actual".to_string())
+    });
+    assert!(
+        held.is_none(),
+        "a move within speed_actual's deadband was sent: {held:?}"
+    );
+    assert!(plc(&["set", seg, "speed_setpoint=230"]).status.success());
+    host.expect("speed_actual beyond its deadband", |v| {
+        has_metric(v, "speed_actual", &json!(230))
+    });
     assert!(edge.terminate().is_ok_and(|s| s.success()));
     drop(program);
     let _ = std::fs::remove_dir_all(&dir);

@@ -19,7 +19,8 @@ pub struct Gm {
     pub door_closed: bool,
     #[plc(direction = "command", initial = 100)]
     pub speed_setpoint: u16,
-    #[plc(direction = "status")]
+    /// Follows the setpoint; its own reporting deadband (the Sparkplug tests).
+    #[plc(direction = "status", unit = "rpm", deadband = 50)]
     pub speed_actual: u16,
     #[plc(read_only, initial = 7)]
     pub serial: u32,
