@@ -4,7 +4,8 @@
 //! for every new MQTT session.
 
 use rumqttc::{
-    Client, Connection, Event, LastWill, MqttOptions, Packet, QoS, TlsConfiguration, Transport,
+    Client, Connection, Event, LastWill, MqttOptions, NetworkOptions, Packet, QoS,
+    TlsConfiguration, Transport,
 };
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -82,7 +83,13 @@ impl Session {
         if let Some((user, password)) = &broker.login {
             options.set_credentials(user, password);
         }
-        let (client, connection) = Client::new(options, REQUESTS);
+        let (client, mut connection) = Client::new(options, REQUESTS);
+        // Each look's DDATA is one small write: with Nagle's algorithm (rumqttc's default) it
+        // waits until the broker acknowledges the previous one, which a delayed
+        // acknowledgement makes tens of milliseconds.
+        let mut network = NetworkOptions::new();
+        network.set_tcp_nodelay(true);
+        connection.eventloop.set_network_options(network);
         let (tx, events) = sync_channel(QUEUED);
         let dropped = Arc::new(AtomicU64::new(0));
         let counter = dropped.clone();

@@ -7,7 +7,7 @@ use plc_sparkplug::node::REBIRTH;
 use plc_sparkplug::proto::{Metric, MetricValue, Payload};
 use plc_sparkplug::topic::{MessageType, Topic};
 use prost::Message;
-use rumqttc::{Client, Event, MqttOptions, Packet, QoS};
+use rumqttc::{Client, Event, MqttOptions, NetworkOptions, Packet, QoS};
 use std::sync::mpsc::{Receiver, RecvTimeoutError, channel};
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
@@ -59,6 +59,10 @@ impl Host {
             .set_clean_session(true)
             .set_max_packet_size(MAX_MESSAGE, MAX_MESSAGE);
         let (client, mut connection) = Client::new(options, 64);
+        // Its rebirth requests go out at once (Nagle's algorithm would hold them).
+        let mut network = NetworkOptions::new();
+        network.set_tcp_nodelay(true);
+        connection.eventloop.set_network_options(network);
         let (tx, seen) = channel();
         let (subscriber, filter) = (client.clone(), format!("spBv1.0/{group}/#"));
         let state = format!("spBv1.0/STATE/{id}");
