@@ -370,3 +370,87 @@ impl std::error::Error for AlarmActionError {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{AlarmActionError, RuntimeAlarms};
+    use crate::alarm_journal::Operator;
+    use plc_core::alarm::{ActionError, AlarmState};
+    use plc_core::{GlobalMemory, PlcStruct, Time};
+
+    #[derive(PlcStruct, Debug, Clone)]
+    #[plc(crate = "plc_core")]
+    struct Station {
+        #[plc(alarm(text = "Station door open", suppress_when = "out_of_service"))]
+        door: bool,
+        out_of_service: bool,
+    }
+
+    #[derive(GlobalMemory, Debug, Clone)]
+    #[plc(crate = "plc_core")]
+    struct Gm {
+        stations: [Station; 2],
+    }
+
+    fn op() -> Operator {
+        Operator::new(Some(1000), "anna")
+    }
+
+    #[test]
+    fn a_suppress_when_member_of_each_instance_suppresses_its_own_alarm() {
+        let mut alarms = RuntimeAlarms::of::<Gm>().unwrap();
+        assert_eq!(alarms.paths(), ["stations[0].door", "stations[1].door"]);
+        let mut gm = Gm::default();
+        gm.stations[0].out_of_service = true;
+        gm.stations[0].door = true;
+        gm.stations[1].door = true;
+        alarms.set_now(5);
+        alarms.evaluate(&gm);
+        assert_eq!(
+            alarms.state("stations[0].door"),
+            Some(AlarmState::SuppressedByDesign)
+        );
+        assert_eq!(
+            alarms.state("stations[1].door"),
+            Some(AlarmState::ActiveUnacknowledged)
+        );
+        assert_eq!((alarms.active(), alarms.unacknowledged()), (1, 1));
+        assert_eq!(alarms.counts_to_publish(), Some((1, 1)));
+        assert_eq!(alarms.counts_to_publish(), None, "published once");
+    }
+
+    #[test]
+    fn a_shelved_alarm_is_out_of_the_counts_until_its_shelf_expires() {
+        let mut alarms = RuntimeAlarms::of::<Gm>().unwrap();
+        let mut gm = Gm::default();
+        gm.stations[1].door = true;
+        alarms.set_now(1_000);
+        alarms.evaluate(&gm);
+        alarms
+            .shelve("stations[1].door", Time::from_secs(60), op())
+            .unwrap();
+        assert_eq!(alarms.state("stations[1].door"), Some(AlarmState::Shelved));
+        assert_eq!((alarms.active(), alarms.unacknowledged()), (0, 0));
+        let too_long = alarms.shelve("stations[0].door", Time::from_secs(9 * 3600), op());
+        assert!(matches!(
+            too_long,
+            Err(AlarmActionError::Refused {
+                error: ActionError::ShelveDuration { .. },
+                ..
+            })
+        ));
+        alarms.set_now(1_000 + 61_000_000_000);
+        alarms.evaluate(&gm);
+        assert_eq!(
+            alarms.state("stations[1].door"),
+            Some(AlarmState::ActiveUnacknowledged),
+            "back as a new alarm, its condition still holding"
+        );
+        let unknown = alarms.unshelve("stations[9].door", op()).unwrap_err();
+        assert!(
+            unknown
+                .to_string()
+                .contains("no alarm at `stations[9].door`")
+        );
+    }
+}
