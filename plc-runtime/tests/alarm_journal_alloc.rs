@@ -46,12 +46,18 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
-#[test]
-fn recording_a_transition_allocates_nothing_queued_or_counted() {
-    let dir = std::env::temp_dir().join(format!("plc-journal-alloc-{}", std::process::id()));
+/// A fresh directory of mode 0700 for `name`, as the journal requires.
+fn private_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700)).unwrap();
+    dir
+}
+
+#[test]
+fn recording_a_transition_allocates_nothing_queued_or_counted() {
+    let dir = private_dir("plc-journal-alloc");
     let options = JournalOptions {
         queue: 64,
         ..JournalOptions::default()
@@ -87,10 +93,7 @@ struct Gm {
 
 #[test]
 fn a_cycle_whose_alarms_all_change_allocates_nothing() {
-    let dir = std::env::temp_dir().join(format!("plc-alarm-cycle-alloc-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700)).unwrap();
+    let dir = private_dir("plc-alarm-cycle-alloc");
     let runtime = Runtime::<Gm>::builder()
         .period(Duration::from_micros(200))
         .handle_signals(false)
