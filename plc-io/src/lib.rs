@@ -2,8 +2,9 @@
 //!
 //! - `shm`: the variables in a named shared-memory segment for HMIs and tools.
 //! - `retain`: nonvolatile variables that survive restarts and edits of the declaration.
+//! - `alarm_journal`: every alarm transition on disk, each alarm's state across restarts.
 //! - `Runtime`: the cycle: I/O exchange, bit unpacking, tools' writes, the program's tick,
-//!   bit packing, publishing, retaining.
+//!   alarms evaluated, bit packing, publishing, retaining.
 //! - `ethercat` (feature `ethercat`, default): EtherCAT I/O through ethercrab, on real
 //!   hardware or the simulated bus of `ethercat-sim`.
 //! - `import`: JSON and CSV variable lists to Rust (feature `import`), and back (feature
@@ -21,7 +22,7 @@ pub use plc_ethercat as ethercat;
 #[cfg(any(feature = "import", feature = "export"))]
 pub use plc_import as import;
 #[cfg(feature = "runtime")]
-pub use plc_runtime::retain;
+pub use plc_runtime::{alarm_journal, retain};
 #[cfg(feature = "shm")]
 pub use plc_shm as shm;
 
@@ -31,6 +32,6 @@ pub use plc_shm as shm;
 pub use plc_runtime::probe;
 #[cfg(feature = "runtime")]
 pub use plc_runtime::{
-    BusState, Context, CyclePhase, CycleStats, IoBackend, IoError, IoStatus, NoIo, Runtime,
-    RuntimeBuilder, RuntimeError, StopHandle, zero_outputs,
+    AlarmActionError, BusState, Context, CyclePhase, CycleStats, IoBackend, IoError, IoStatus,
+    NoIo, Runtime, RuntimeAlarms, RuntimeBuilder, RuntimeError, StopHandle, zero_outputs,
 };

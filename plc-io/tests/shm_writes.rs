@@ -396,8 +396,17 @@ fn the_bus_clocks_reach_the_tools_and_damaged_clock_words_read_as_none() {
     };
     owner.report(1, &CycleStats::default(), &io);
     assert_eq!(seg.status().clocks, Some(clocks));
-    // The three clock words sit right before the descriptor (header word 48).
-    let at = owner.word(48) as usize - 24;
+    // The three clock words sit right before the two alarm counts, which sit right before
+    // the descriptor (header word 48).
+    let descriptor = owner.word(48) as usize;
+    owner.set_alarm_counts(3, 2);
+    assert_eq!(
+        (owner.word(descriptor - 16), owner.word(descriptor - 8)),
+        (3, 2)
+    );
+    let status = seg.status();
+    assert_eq!((status.alarms_active, status.alarms_unacknowledged), (3, 2));
+    let at = descriptor - 16 - 24;
     owner.scribble(at, &u64::MAX.to_le_bytes());
     assert_eq!(
         seg.status().clocks,

@@ -19,7 +19,10 @@
 ///
 /// 3: the bus's distributed clocks in three words between the table of forces and the
 /// descriptor (a tool of format 2 would look for the descriptor where the clocks are).
-pub const FORMAT_VERSION: u32 = 3;
+///
+/// 4: the alarm counts (active, unacknowledged) in two words between the clocks and the
+/// descriptor (a tool of format 3 would look for the descriptor where the counts are).
+pub const FORMAT_VERSION: u32 = 4;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

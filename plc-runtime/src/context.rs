@@ -1,6 +1,7 @@
 //! What the program's tick sees: its variables and the facts of the cycle.
 
 use super::{BusState, CycleStats};
+use crate::alarms::RuntimeAlarms;
 use plc_core::Time;
 use std::time::Duration;
 
@@ -76,6 +77,8 @@ pub struct Context<T> {
     pub bus_state: BusState,
     /// The start of this cycle: see [`now`](Self::now).
     now: Time,
+    /// The program's alarms: see [`alarms`](Self::alarms).
+    pub(crate) alarms: RuntimeAlarms,
 }
 
 impl<T> Context<T> {
@@ -99,16 +102,28 @@ impl<T> Context<T> {
         self.now = self.now.saturating_add(by);
     }
 
+    /// The program's alarms: their states by path, as the runtime evaluated them after the
+    /// last tick. In [`for_test`](Self::for_test) there are none.
+    pub fn alarms(&self) -> &RuntimeAlarms {
+        &self.alarms
+    }
+
+    /// The program's alarms, to acknowledge, reset, shelve or unshelve one by path (each
+    /// action journaled with the operator's name, at this cycle's time).
+    pub fn alarms_mut(&mut self) -> &mut RuntimeAlarms {
+        &mut self.alarms
+    }
+
     /// A context for unit tests of a tick function: cycle 1, valid inputs, no bus, `now` zero.
     pub fn for_test(gm: T) -> Self {
         Context {
             cycle: 1,
-            ..Context::before_first_cycle(gm, Duration::ZERO)
+            ..Context::before_first_cycle(gm, Duration::ZERO, RuntimeAlarms::none())
         }
     }
 
     /// The runtime's context before its first cycle: no cycle done, statistics empty.
-    pub(crate) fn before_first_cycle(gm: T, period: Duration) -> Self {
+    pub(crate) fn before_first_cycle(gm: T, period: Duration, alarms: RuntimeAlarms) -> Self {
         Context {
             gm,
             cycle: 0,
@@ -120,6 +135,7 @@ impl<T> Context<T> {
             bus_fault: false,
             bus_state: BusState::NoBus,
             now: Time::ZERO,
+            alarms,
         }
     }
 }

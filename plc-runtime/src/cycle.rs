@@ -8,6 +8,8 @@ use super::stats::{self, RunningMean};
 use super::{
     Context, IoBackend, IoStatus, RuntimeBuilder, RuntimeError, set_realtime, zero_outputs,
 };
+use crate::alarm_journal::AlarmJournal;
+use crate::alarms::RuntimeAlarms;
 use crate::retain::{RetainStore, RetainWriter};
 use plc_core::{GlobalMemory, Time};
 use plc_shm::{RunState, SharedGlobalMemory, ShmOwner};
@@ -29,6 +31,8 @@ where
     image: Box<Aligned<T::Image>>,
     retained: RetainedBytes,
     retain: Option<RetainWriter<T::Image>>,
+    /// The alarm journal's writer, if the program has alarms and a journal file.
+    journal: Option<AlarmJournal>,
     shm: Option<ShmOwner<T>>,
     /// The cycle's clock (`Context::now`'s, the schedule's, the published values' time).
     clock: CycleClock,
@@ -72,6 +76,7 @@ where
             }
             None => None,
         };
+        let (alarms, journal) = start_alarms::<T>(s)?;
         let shm = match &s.segment {
             Some(name) => Some(
                 SharedGlobalMemory::<T>::create_with(name, &s.sharing)
@@ -82,9 +87,10 @@ where
         let image = Box::new(Aligned(gm.to_image()));
         let cycle = Cycle {
             retained: RetainedBytes::new::<T>(&image.0),
-            ctx: Context::before_first_cycle(gm, s.period),
+            ctx: Context::before_first_cycle(gm, s.period, alarms),
             image,
             retain,
+            journal,
             shm,
             clock: CycleClock::start(),
             mean: RunningMean::default(),
@@ -152,6 +158,14 @@ where
         let ctx = &mut self.ctx;
         ctx.cycle += 1;
         let since_start = self.clock.since_start(start);
+        let alarmed = !ctx.alarms().is_empty();
+        if alarmed {
+            // What happens to alarms in this cycle, an operator's action in the tick
+            // included, has the cycle's start as its time.
+            let utc = self.clock.utc_ns(start);
+            ctx.alarms_mut()
+                .set_now(i64::try_from(utc).unwrap_or(i64::MAX));
+        }
         // Beyond LTIME only after 292 years of running.
         ctx.set_now(Time::from_nanos(
             i64::try_from(since_start).unwrap_or(i64::MAX),
@@ -190,6 +204,16 @@ where
         }));
         if let Err(panic) = step {
             return Err(self.fault(backend, panic));
+        }
+        // After the tick and the forces, from the values the cycle publishes: the program
+        // writes nothing for its alarms.
+        if alarmed {
+            ctx.alarms.evaluate(&ctx.gm);
+            if let Some(shm) = &self.shm
+                && let Some((active, unacknowledged)) = ctx.alarms.counts_to_publish()
+            {
+                shm.set_alarm_counts(active as u64, unacknowledged as u64);
+            }
         }
         ctx.gm.pack_bits();
         ctx.gm.store_image(&mut self.image.0);
@@ -276,6 +300,12 @@ where
             }
             None => Ok(()),
         };
+        // Every transition to the last cycle's on disk before the program is reported stopped.
+        if let Some(journal) = self.journal
+            && let Err(e) = journal.finish()
+        {
+            log::error!(target: "plc_io::runtime", "{e}; the journal holds what was synced before");
+        }
         if let Some(shm) = &self.shm {
             shm.set_run_state(if result.is_ok() {
                 RunState::Stopped
@@ -316,6 +346,26 @@ where
             }
         }
     }
+}
+
+/// The program's alarms, each given its state from the journal if there is one (opened,
+/// with its writer started); none and no journal for a program without alarms.
+fn start_alarms<T: GlobalMemory + Default + Clone + Send + 'static>(
+    s: &RuntimeBuilder<T>,
+) -> Result<(RuntimeAlarms, Option<AlarmJournal>), RuntimeError>
+where
+    T::Image: Send,
+{
+    let mut alarms = RuntimeAlarms::of::<T>().map_err(RuntimeError::Alarm)?;
+    let path = match s.alarm_journal_path() {
+        Some(path) if !alarms.is_empty() => path,
+        _ => return Ok((alarms, None)),
+    };
+    let journal = AlarmJournal::open(&path, crate::alarm_journal::DEFAULT_CAPACITY)
+        .map_err(RuntimeError::AlarmJournal)?;
+    alarms.restore(journal.contents().states(), &path);
+    alarms.attach(journal.sender(alarms.path_table()));
+    Ok((alarms, Some(journal)))
 }
 
 /// A panic's message, when it has one.

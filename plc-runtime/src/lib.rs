@@ -2,6 +2,7 @@
 //! retained variables.
 
 pub mod alarm_journal;
+mod alarms;
 mod backend;
 mod clock;
 mod context;
@@ -14,12 +15,14 @@ pub mod retain;
 mod schedule;
 mod stats;
 
+pub use alarms::{AlarmActionError, RuntimeAlarms};
 pub use backend::{CyclePhase, IoBackend, IoError, IoStatus, NoIo};
 pub use context::Context;
 pub use plc_shm::{BusState, CycleStats};
 
 use cycle::Cycle;
 
+use crate::alarm_journal::JournalError;
 use crate::retain::RetainError;
 use plc_core::{Direction, GlobalMemory, Value};
 use plc_shm::ShmError;
@@ -43,6 +46,12 @@ pub enum RuntimeError {
     RetainNotSaved(RetainError),
     /// Realtime scheduling was asked for but not permitted.
     Realtime(String),
+    /// An alarm's declaration cannot be followed in this program (a `suppress_when` path
+    /// that names no bool): the message names the alarm and the path.
+    Alarm(String),
+    /// The alarm journal could not be opened (a link or another user's file in its place,
+    /// a file too large to be a journal, a directory that cannot be made).
+    AlarmJournal(JournalError),
     /// The cycle could not be placed on the CPU asked for
     /// ([`RuntimeBuilder::cpu`]): the message names it and the CPUs the process may use.
     Cpu(String),
@@ -66,7 +75,10 @@ impl fmt::Display for RuntimeError {
                 "the retained values were not saved at stop: {e}; the file keeps the values of \
                  the last save that succeeded"
             ),
-            RuntimeError::Realtime(e) | RuntimeError::Cpu(e) => write!(f, "{e}"),
+            RuntimeError::Realtime(e) | RuntimeError::Cpu(e) | RuntimeError::Alarm(e) => {
+                write!(f, "{e}")
+            }
+            RuntimeError::AlarmJournal(e) => write!(f, "{e}"),
             RuntimeError::Panicked { cycle, message } => write!(
                 f,
                 "the program panicked in cycle {cycle}: {message}; outputs were set to zero and \
@@ -82,9 +94,11 @@ impl std::error::Error for RuntimeError {
             RuntimeError::Io(e) => Some(e),
             RuntimeError::Shm(e) => Some(e),
             RuntimeError::Retain(e) | RuntimeError::RetainNotSaved(e) => Some(e),
-            RuntimeError::Realtime(_) | RuntimeError::Cpu(_) | RuntimeError::Panicked { .. } => {
-                None
-            }
+            RuntimeError::AlarmJournal(e) => Some(e),
+            RuntimeError::Realtime(_)
+            | RuntimeError::Cpu(_)
+            | RuntimeError::Alarm(_)
+            | RuntimeError::Panicked { .. } => None,
         }
     }
 }
@@ -121,6 +135,7 @@ pub struct RuntimeBuilder<T> {
     sharing: plc_shm::Sharing,
     retain: Option<PathBuf>,
     retain_interval: Duration,
+    alarm_journal: Option<PathBuf>,
     backend: Box<dyn IoBackend<T> + Send>,
     realtime: Option<i32>,
     cpu: Option<usize>,
@@ -167,6 +182,7 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
             sharing: plc_shm::Sharing::new(),
             retain: None,
             retain_interval: Duration::from_millis(1000),
+            alarm_journal: None,
             backend: Box::new(NoIo),
             realtime: None,
             cpu: None,
@@ -232,6 +248,16 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// Saves changed nonvolatile values at most this often (default 1 s; always at stop).
     pub fn retain_interval(mut self, interval: Duration) -> Self {
         self.retain_interval = interval;
+        self
+    }
+    /// Keeps the alarm journal (every alarm transition, and each alarm's state across
+    /// restarts) in this file. By default it lies beside the [`retain`](Self::retain) file
+    /// (`press.retain` beside `press.alarms`,
+    /// [`alarm_journal::beside_retain`]); with neither, alarms are evaluated but their history
+    /// is lost at stop, and [`build`](Self::build) warns so. A program without alarms opens
+    /// no journal.
+    pub fn alarm_journal(mut self, path: impl Into<PathBuf>) -> Self {
+        self.alarm_journal = Some(path.into());
         self
     }
     /// The I/O backend (default: none).
@@ -318,7 +344,22 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
         self.backend
             .check_period(self.period)
             .map_err(RuntimeError::Io)?;
+        if !T::ALARMS.is_empty() && self.alarm_journal_path().is_none() {
+            log::warn!(target: "plc_io::runtime",
+                "segment `{segment}`: the program's {} alarms are evaluated, but their history \
+                 and unacknowledged alarms will not survive a restart: give the runtime a \
+                 retain file (`RuntimeBuilder::retain`) or an alarm journal \
+                 (`RuntimeBuilder::alarm_journal`)",
+                T::ALARMS.len());
+        }
         Ok(Runtime { settings: self })
+    }
+
+    /// The alarm journal's file: the one asked for, or beside the retain file.
+    fn alarm_journal_path(&self) -> Option<PathBuf> {
+        self.alarm_journal
+            .clone()
+            .or_else(|| self.retain.as_deref().map(alarm_journal::beside_retain))
     }
 }
 

@@ -1,13 +1,17 @@
 //! The cycle's side of the alarm journal allocates nothing: handing over a transition (queued
-//! or, the queue full, only counted) takes no memory from the allocator. A test binary of its
-//! own, for its counting allocator.
+//! or, the queue full, only counted) takes no memory from the allocator; nor does the
+//! runtime's cycle that evaluates a program's alarms and hands their transitions over. A test
+//! binary of its own, for its counting allocator.
 
+use plc_core::GlobalMemory;
 use plc_core::alarm::{AlarmEvent, EventKind, Level};
+use plc_runtime::Runtime;
 use plc_runtime::alarm_journal::{AlarmJournal, JournalOptions};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::os::unix::fs::PermissionsExt;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Duration;
 
 /// Counts the allocations of the threads that asked for it (not the writer's).
 struct Counting;
@@ -42,12 +46,18 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static GLOBAL: Counting = Counting;
 
-#[test]
-fn recording_a_transition_allocates_nothing_queued_or_counted() {
-    let dir = std::env::temp_dir().join(format!("plc-journal-alloc-{}", std::process::id()));
+/// A fresh directory of mode 0700 for `name`, as the journal requires.
+fn private_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o700)).unwrap();
+    dir
+}
+
+#[test]
+fn recording_a_transition_allocates_nothing_queued_or_counted() {
+    let dir = private_dir("plc-journal-alloc");
     let options = JournalOptions {
         queue: 64,
         ..JournalOptions::default()
@@ -70,5 +80,43 @@ fn recording_a_transition_allocates_nothing_queued_or_counted() {
     assert_eq!(ALLOCATIONS.load(Ordering::Relaxed), 0);
     assert!(sender.summarised() > 0, "the queue was full at times");
     journal.finish().unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[derive(GlobalMemory, Debug, Clone)]
+struct Gm {
+    #[plc(alarm = "Limit switch")]
+    limits: [bool; 64],
+    #[plc(alarm(text = "Pressure", high = 10.0, high_high = 12.0, deadband = 0.5))]
+    pressure: f64,
+}
+
+#[test]
+fn a_cycle_whose_alarms_all_change_allocates_nothing() {
+    let dir = private_dir("plc-alarm-cycle-alloc");
+    let runtime = Runtime::<Gm>::builder()
+        .period(Duration::from_micros(200))
+        .handle_signals(false)
+        .alarm_journal(dir.join("gm.alarms"))
+        .max_cycles(400)
+        .build()
+        .unwrap();
+    // The run happens on this thread: counted from the 100th tick (every vector grown by
+    // then) to the last, each alarm raised or cleared in every cycle between.
+    let gm = runtime
+        .run(|ctx| {
+            let on = ctx.cycle % 2 == 0;
+            ctx.gm.limits = [on; 64];
+            ctx.gm.pressure = if on { 13.0 } else { 0.0 };
+            if ctx.cycle == 100 {
+                COUNTING.with(|c| c.set(true));
+            }
+            if ctx.cycle == 400 {
+                COUNTING.with(|c| c.set(false));
+            }
+        })
+        .unwrap();
+    assert_eq!(gm.limits.len(), 64);
+    assert_eq!(ALLOCATIONS.load(Ordering::Relaxed), 0);
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -11,7 +11,8 @@
 //! version, layout hash, image size, generation, seqlock sequence), a status block (owner pid,
 //! state, period, cycle count and times, overruns, bus state and flags, heartbeat, write
 //! counters, failed retain saves), the image, the table of forces, the bus's distributed
-//! clocks, and the layout descriptor as JSON. It is sealed:
+//! clocks, the program's alarm counts (active, unacknowledged), and the layout descriptor as
+//! JSON. It is sealed:
 //! nobody can shrink or grow it, and once the owner mapped it nobody can map it writable or
 //! write it. The owner serves it on a Unix socket, `<name>.sock` in its runtime directory
 //! (`$XDG_RUNTIME_DIR/plc-vars`, `/run/plc-vars` for root, or `$PLC_VARS_RUNTIME_DIR`): a tool

@@ -24,6 +24,7 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
                         "name": s.name, "pid": s.pid, "state": state(s),
                         "cycles": s.cycle_count, "variables": s.variables,
                         "retain_failures": s.retain_failures, "forces": s.forces,
+                        "alarms_unacknowledged": s.alarms_unacknowledged,
                         "dc": s.clocks.as_ref().map(clocks_json),
                         "problem": s.problem.as_ref().map(|p| p.to_string()),
                     })
@@ -36,19 +37,20 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
             println!("no running plc-vars programs");
         }
         println!(
-            "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6}",
-            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES", "FAILED SAVES", "FORCED"
+            "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6} {:>7}",
+            "SEGMENT", "PID", "STATE", "CYCLES", "VARIABLES", "FAILED SAVES", "FORCED", "UNACKED"
         );
         for s in &all {
             println!(
-                "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6}",
+                "{:<24} {:>8} {:<8} {:>12} {:>9} {:>14} {:>6} {:>7}",
                 s.name,
                 s.pid,
                 state(s),
                 s.cycle_count,
                 s.variables,
                 s.retain_failures,
-                s.forces
+                s.forces,
+                s.alarms_unacknowledged
             );
             if let Some(clocks) = &s.clocks {
                 println!("  dc: {clocks}");
@@ -72,6 +74,13 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
     let status = seg.status();
     if let Some(clocks) = &status.clocks {
         println!("\ndc: {clocks}");
+    }
+    if status.alarms_unacknowledged > 0 {
+        // Returned-to-normal alarms wait for an acknowledgement too: both counts are shown.
+        println!(
+            "\nalarms: {} unacknowledged, {} active",
+            status.alarms_unacknowledged, status.alarms_active
+        );
     }
     let forces = status.forces;
     if forces > 0 {

@@ -14,6 +14,7 @@
 //! ...   clocks   the bus's distributed clocks: SYNC0 period (0: none), largest system
 //!                time difference (u64::MAX: not read), cycle's offset after SYNC0, in ns
 //!                                                                  (3 x u64)
+//! ...   alarms   active now, waiting for an acknowledgement             (2 x u64)
 //! ...   descriptor, JSON
 //! ```
 //! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
@@ -66,6 +67,8 @@ pub const FORCE_WORDS: usize = 4;
 const FORCES: usize = 8 * (2 + MAX_FORCES * FORCE_WORDS);
 /// Bytes of the distributed clocks' words after the table of forces.
 const CLOCKS: usize = 8 * 3;
+/// Bytes of the alarm counts after the distributed clocks.
+const ALARMS: usize = 8 * 2;
 
 pub const fn pad8(n: usize) -> usize {
     n.div_ceil(8) * 8
@@ -78,6 +81,7 @@ pub struct Offsets {
     pub writes: usize,
     pub forces: usize,
     pub clocks: usize,
+    pub alarms: usize,
     pub descriptor: usize,
 }
 
@@ -87,7 +91,7 @@ impl Offsets {
     pub const fn checked(image_size: usize) -> Option<Self> {
         // `new` adds a fixed amount to the padded image size: check that sum first.
         match image_size.checked_next_multiple_of(8) {
-            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES + CLOCKS) => {
+            Some(padded) if padded <= usize::MAX - (IMAGE + WRITES + FORCES + CLOCKS + ALARMS) => {
                 Some(Self::new(image_size))
             }
             _ => None,
@@ -99,12 +103,14 @@ impl Offsets {
         let writes = IMAGE + pad8(image_size);
         let forces = writes + WRITES;
         let clocks = forces + FORCES;
+        let alarms = clocks + CLOCKS;
         Offsets {
             image_size,
             writes,
             forces,
             clocks,
-            descriptor: clocks + CLOCKS,
+            alarms,
+            descriptor: alarms + ALARMS,
         }
     }
 
@@ -135,5 +141,13 @@ impl Offsets {
     /// Word `word` of the distributed clocks (period, difference, offset).
     pub const fn c_word(&self, word: usize) -> usize {
         self.clocks + 8 * word
+    }
+    /// Alarms active now.
+    pub const fn a_active(&self) -> usize {
+        self.alarms
+    }
+    /// Alarms waiting for an acknowledgement.
+    pub const fn a_unacknowledged(&self) -> usize {
+        self.alarms + 8
     }
 }

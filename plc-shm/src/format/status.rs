@@ -121,6 +121,11 @@ pub struct Status {
     pub cycle_utc_ns: u64,
     /// Values forced now (`plc force`; at most [`MAX_FORCES`](crate::MAX_FORCES)).
     pub forces: u64,
+    /// The program's alarms active now (raised, or latched and waiting for a reset), as of
+    /// the last cycle that changed them.
+    pub alarms_active: u64,
+    /// The program's alarms waiting for an operator's acknowledgement.
+    pub alarms_unacknowledged: u64,
 }
 
 impl Status {
@@ -158,6 +163,8 @@ impl Status {
             retain_failures: base.load(S_RETAIN_FAILED),
             cycle_utc_ns: base.load(S_CYCLE_UTC_NS),
             forces: base.load(off.f_count()),
+            alarms_active: base.load(off.a_active()),
+            alarms_unacknowledged: base.load(off.a_unacknowledged()),
         }
     }
 

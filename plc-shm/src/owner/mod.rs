@@ -291,6 +291,13 @@ impl<T: GlobalMemory> ShmOwner<T> {
         self.base.load(offset)
     }
 
+    /// Publishes how many of the program's alarms are active and how many wait for an
+    /// acknowledgement (the runtime calls it when they change).
+    pub fn set_alarm_counts(&self, active: u64, unacknowledged: u64) {
+        self.base.store(self.off.a_active(), active);
+        self.base.store(self.off.a_unacknowledged(), unacknowledged);
+    }
+
     /// Publishes how many saves of retained values failed so far.
     pub fn set_retain_failures(&self, failures: u64) {
         self.base.store(S_RETAIN_FAILED, failures);

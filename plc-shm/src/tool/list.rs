@@ -26,6 +26,8 @@ pub struct SegmentInfo {
     pub forces: u64,
     /// The bus's distributed clocks, on a bus that runs them.
     pub clocks: Option<BusClocks>,
+    /// The program's alarms waiting for an acknowledgement.
+    pub alarms_unacknowledged: u64,
     /// Why the segment cannot be read (damaged, refused, permission denied), if it cannot:
     /// such a segment is listed, not hidden, so its owner can be found and restarted.
     pub problem: Option<ShmError>,
@@ -49,6 +51,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                     retain_failures: status.retain_failures,
                     forces: status.forces,
                     clocks: status.clocks,
+                    alarms_unacknowledged: status.alarms_unacknowledged,
                     problem: None,
                     name,
                 })
@@ -66,6 +69,7 @@ pub fn list_segments() -> Vec<SegmentInfo> {
                 retain_failures: 0,
                 forces: 0,
                 clocks: None,
+                alarms_unacknowledged: 0,
                 problem: Some(problem),
                 name,
             }),
