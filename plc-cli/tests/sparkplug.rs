@@ -78,6 +78,12 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
         "rpm"
     );
     assert!(metric(&dbirth, "speed_setpoint")["properties"]["engUnit"].is_null());
+    // The program's alarm counts (this one declares none), read-only.
+    for name in ["Alarms/Active", "Alarms/Unacknowledged"] {
+        let m = metric(&dbirth, name);
+        assert_eq!((&m["datatype"], &m["value"]), (&json!("UINT64"), &json!(0)));
+        assert_eq!(m["properties"]["readOnly"], true, "{name}");
+    }
     assert_eq!(
         metric(&dbirth, "inputs")["properties"]["description"],
         "Digital inputs"
@@ -165,7 +171,8 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
         v["type"] == "DDATA" && has_metric(v, "speed_setpoint", &json!(333))
     });
     assert_eq!(get(&seg, "speed_setpoint"), "333");
-    // A read-only variable, a wrong datatype, an unknown name, bytes that are no protobuf:
+    // A read-only variable, a wrong datatype, an unknown name, an alarm count, bytes that are
+    // no protobuf:
     // refused and logged, nothing written, the node goes on publishing.
     host.send(
         json!({"op": "dcmd", "node": "line1", "device": seg, "name": "serial",
@@ -183,6 +190,15 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
     );
     wait_log(&dir, 2, "no metric is named `nonesuch`");
     host.send(
+        json!({"op": "dcmd", "node": "line1", "device": seg, "name": "Alarms/Active",
+                     "datatype": "UINT64", "value": 0}),
+    );
+    wait_log(
+        &dir,
+        2,
+        "the alarm counts (Alarms/Active, Alarms/Unacknowledged) are read-only",
+    );
+    host.send(
         json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "fill": 100}),
     );
     wait_log(&dir, 2, "not a Sparkplug B payload");
@@ -198,7 +214,7 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
     host.send(
         json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "hex": "ff"}),
     );
-    wait_log(&dir, 2, "(1005 refused so far)");
+    wait_log(&dir, 2, "(1006 refused so far)");
     eprintln!("1000 malformed commands sent in {flood:?}");
     assert_eq!(get(&seg, "serial"), "7");
     assert_eq!(get(&seg, "speed_setpoint"), "333");

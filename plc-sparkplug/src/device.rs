@@ -1,6 +1,7 @@
 //! One running program as a Sparkplug device: its metrics (every basic value, named by its
 //! path), what was last sent of each, and its births, data and commands.
 
+use crate::alarm_counts::{self, Counts};
 use crate::metric::{self, DataType};
 use crate::proto::{Metric, Payload};
 use plc_core::Value;
@@ -37,6 +38,8 @@ pub struct Device {
     seg: DynSegment,
     entries: Vec<Entry>,
     last_cycle: u64,
+    /// The alarm counts last sent.
+    alarms_sent: Counts,
 }
 
 /// Milliseconds since the Unix epoch now.
@@ -64,6 +67,7 @@ impl Device {
             seg,
             entries,
             last_cycle: u64::MAX,
+            alarms_sent: [0; 2],
         })
     }
 
@@ -82,22 +86,23 @@ impl Device {
     }
 
     /// The time of the values just read: the cycle's UTC time when the segment gives one
-    /// (read with the snapshot, so at most one cycle late), else now.
-    fn value_time(&self) -> (u64, u64) {
+    /// (read with the snapshot, so at most one cycle late), else now; the cycle's number and
+    /// the program's alarm counts.
+    fn value_time(&self) -> (u64, u64, Counts) {
         let status = self.seg.status();
         let ms = if status.cycle_utc_ns > 0 {
             status.cycle_utc_ns / 1_000_000
         } else {
             now_ms()
         };
-        (ms, status.cycle_count)
+        (ms, status.cycle_count, alarm_counts::of(&status))
     }
 
     /// The DBIRTH payload (seq to be set by the node): every metric with its name, alias,
     /// datatype, properties and current value; what is sent becomes the base of the deadband.
     pub fn birth(&mut self) -> Result<Payload, String> {
         let image = self.seg.snapshot_bytes().map_err(|e| e.to_string())?;
-        let (ts, cycle) = self.value_time();
+        let (ts, cycle, alarms) = self.value_time();
         self.last_cycle = cycle;
         let now = Instant::now();
         let mut metrics = Vec::with_capacity(self.entries.len());
@@ -116,6 +121,8 @@ impl Device {
             e.sent_at = Some(now);
             metrics.push(m);
         }
+        metrics.extend(alarm_counts::birth(alarms, self.entries.len(), ts));
+        self.alarms_sent = alarms;
         Ok(Payload {
             timestamp: Some(now_ms()),
             metrics,
@@ -132,7 +139,7 @@ impl Device {
         policy: &DataPolicy,
         historical: bool,
     ) -> Result<Option<Payload>, String> {
-        let (ts, cycle) = self.value_time();
+        let (ts, cycle, alarms) = self.value_time();
         let held = policy.min_interval > Duration::ZERO;
         // Without a new cycle nothing changed, unless a change is being held by the rate limit.
         if cycle == self.last_cycle && !held {
@@ -172,6 +179,15 @@ impl Device {
             e.sent_at = Some(now);
             metrics.push(m);
         }
+        let first = self.entries.len();
+        metrics.extend(alarm_counts::changed(
+            alarms,
+            self.alarms_sent,
+            first,
+            ts,
+            historical,
+        ));
+        self.alarms_sent = alarms;
         Ok((!metrics.is_empty()).then(|| Payload {
             timestamp: Some(now_ms()),
             metrics,
@@ -193,6 +209,12 @@ impl Device {
         }
         let mut checked = Vec::with_capacity(payload.metrics.len());
         for m in &payload.metrics {
+            if alarm_counts::is_named(m, self.entries.len()) {
+                return Err(format!(
+                    "the alarm counts ({}) are read-only: they count the program's alarms",
+                    alarm_counts::NAMES.join(", ")
+                ));
+            }
             let entry = self.find(m)?;
             let value = metric::from_payload(entry.at.var.iec_type, m.value.as_ref())
                 .map_err(|e| format!("metric `{}`: {e}", entry.at.path))?;

@@ -16,6 +16,7 @@
 //! ```
 #![deny(missing_docs)]
 
+pub mod alarm_counts;
 pub mod device;
 pub mod forward;
 pub mod metric;
