@@ -1,6 +1,6 @@
 //! Group `sparkplug`: the real edge node (`plc mqtt serve`, a release build) publishing a
 //! running program to a real mosquitto on loopback, read by a measuring host in this process
-//! ([`host`]: an MQTT client that decodes every payload). The program is [`super::owner`]'s
+//! (an MQTT client that decodes every payload). The program is [`super::owner`]'s
 //! `Mixed10k` (10,000 basic values, about 340 of them changing every 1 ms cycle) and the main
 //! example (`tensile_tester` on its simulated bus). The owner runs on a CPU of its own, the
 //! broker, the node and the host on the others ([`crate::placement`]).
