@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 const CENTERING_S: f64 = 0.8;
 const LIFT_S: f64 = 0.4;
 /// How far the crosshead pulls a specimen before it breaks, mm, specimen after specimen.
-const BREAK_MM: [f64; 4] = [5.0, 6.2, 4.4, 7.2];
+pub(super) const BREAK_MM: [f64; 4] = [5.0, 6.2, 4.4, 7.2];
 /// The AKD's position actual value (0x6064), in increments.
 const POSITION_ACTUAL: u16 = 0x6064;
 
