@@ -1,6 +1,6 @@
 //! Commissioning with real processes: `plc force`, `plc unforce`, `plc forces`, `plc trace`
-//! and the alarm count of `plc list` against the main example and against a counting program of this test binary
-//! (`PLC_TEST_ROLE=counter`) at 1 kHz and 4 kHz.
+//! and the alarm count of `plc list` against the main example and against a counting program
+//! of this test binary (`PLC_TEST_ROLE=counter`) at 1 kHz and 4 kHz.
 
 mod common;
 

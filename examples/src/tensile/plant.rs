@@ -1,7 +1,9 @@
 //! A model of the tensile tester's mechanics, run on a thread against the simulated bus: it
 //! reads the drive outputs the program sets (EL2889) and the crosshead's position as the
 //! simulated AKD measures it, and sets the limit switches and the break detector (EL1004), so
-//! the program runs real tests without hardware.
+//! the program runs real tests without hardware. The guard door and the overtravel switch are
+//! not among the EL1004's 4 channels: they read 0, the door closed and the crosshead within its
+//! travel, so the machine runs with no alarm.
 
 use super::crosshead::INCREMENTS_PER_MM;
 use super::position::{CROSSHEAD, INPUTS, OUTPUTS};
