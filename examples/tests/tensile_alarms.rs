@@ -50,6 +50,7 @@ fn a_normal_test_raises_no_alarm_and_an_open_guard_door_raises_one_and_holds_the
     let segment = format!("tt_alarms_{id}");
     // The journal's directory must be private (the runtime refuses one others may write).
     let dir = std::env::temp_dir().join(format!("tensile-alarms-{id}"));
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::DirBuilder::new().mode(0o700).create(&dir).unwrap();
     let sim = tensile::simulated_bus();
     let _plant = tensile::plant::Plant::spawn(sim.clone()).unwrap();
