@@ -1,6 +1,6 @@
-//! Commissioning with real processes: `plc force`, `plc unforce`, `plc forces` and `plc trace`
-//! against the main example and against a counting program of this test binary
-//! (`PLC_TEST_ROLE=counter`) at 1 kHz and 4 kHz.
+//! Commissioning with real processes: `plc force`, `plc unforce`, `plc forces`, `plc trace`
+//! and the alarm count of `plc list` against the main example and against a counting program
+//! of this test binary (`PLC_TEST_ROLE=counter`) at 1 kHz and 4 kHz.
 
 mod common;
 
@@ -197,6 +197,29 @@ fn a_forced_lamp_lights_the_simulated_tower_and_a_forced_input_drives_the_progra
     ] {
         assert!(text.contains(&line), "`{line}` in the log:\n{text}");
     }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_forced_guard_door_raises_the_tensile_testers_alarm_and_plc_list_counts_it() {
+    let dir = scratch("door");
+    let segment = format!("cm_door_{}", std::process::id());
+    let (program, _log) = tensile_tester(&dir, &segment);
+    let list = || stdout(&plc(&["list", &segment]));
+    // Running normally, the machine has no alarm, so `plc list` prints no alarm line.
+    let before = list();
+    assert!(!before.contains("alarms:"), "{before}");
+    let out = plc(&["force", &segment, "guard_door_open=true"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    wait_until("the guard door alarm in `plc list`", || {
+        list().contains("alarms: 1 unacknowledged, 1 active")
+    });
+    // Closed again, the alarm goes but waits for an operator's acknowledgement.
+    assert!(plc(&["unforce", &segment, "--all"]).status.success());
+    wait_until("the alarm returned to normal, unacknowledged", || {
+        list().contains("alarms: 1 unacknowledged, 0 active")
+    });
+    drop(program);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

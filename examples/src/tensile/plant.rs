@@ -1,7 +1,9 @@
 //! A model of the tensile tester's mechanics, run on a thread against the simulated bus: it
 //! reads the drive outputs the program sets (EL2889) and the crosshead's position as the
 //! simulated AKD measures it, and sets the limit switches and the break detector (EL1004), so
-//! the program runs real tests without hardware.
+//! the program runs real tests without hardware. The guard door and the overtravel switch are
+//! not among the EL1004's 4 channels: they read 0, the door closed and the crosshead within its
+//! travel, so the machine runs with no alarm.
 
 use super::crosshead::INCREMENTS_PER_MM;
 use super::position::{CROSSHEAD, INPUTS, OUTPUTS};
@@ -15,7 +17,7 @@ use std::time::{Duration, Instant};
 const CENTERING_S: f64 = 0.8;
 const LIFT_S: f64 = 0.4;
 /// How far the crosshead pulls a specimen before it breaks, mm, specimen after specimen.
-const BREAK_MM: [f64; 4] = [5.0, 6.2, 4.4, 7.2];
+pub(super) const BREAK_MM: [f64; 4] = [5.0, 6.2, 4.4, 7.2];
 /// The AKD's position actual value (0x6064), in increments.
 const POSITION_ACTUAL: u16 = 0x6064;
 

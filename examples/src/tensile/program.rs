@@ -55,8 +55,15 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
     gm.cr_test_drive = false;
     gm.horn = false;
 
-    if !info.inputs_valid && state != State::Idle && state != State::Fault {
+    let running = state != State::Idle && state != State::Fault;
+    if !info.inputs_valid && running {
         fault(gm, "EtherCAT inputs invalid: bus fault during a test");
+    } else if (gm.guard_door_open || gm.ls_crosshead_overtravel) && running {
+        // The safety relay has stopped the drives already; the step would only time out.
+        fault(
+            gm,
+            "guard door opened or crosshead overtravel during a test",
+        );
     } else if crosshead::faulted(gm) && state != State::Fault {
         let mut text = FixedString::<128>::new();
         let _ = std::fmt::Write::write_fmt(
@@ -83,9 +90,11 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
         .call(now, state == State::Testing, TEST_TIMEOUT);
     match state {
         State::Idle => {
-            // A start waits for the crosshead: powered, homed and back at its start.
+            // A start waits for the crosshead (powered, homed and back at its start) and for
+            // the guard door closed and the crosshead within its travel.
             let asked = gm.cmd_start || (gm.auto_start && gm.state_cycles >= secs(1.0));
-            if asked && crosshead::ready(gm) {
+            let guarded = !gm.guard_door_open && !gm.ls_crosshead_overtravel;
+            if asked && guarded && crosshead::ready(gm) {
                 gm.cmd_start = false;
                 let mut id = FixedString::<64>::new();
                 let _ = std::fmt::Write::write_fmt(
@@ -105,6 +114,7 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             if gm.ls_centering_neg && gm.ls_centering_pos {
                 go(gm, State::Lifting);
             } else if gm.centering_timeout.Q {
+                gm.centering_timed_out = true;
                 fault(gm, "centering jaws did not close within 5 s");
             }
         }
@@ -156,6 +166,7 @@ pub fn process_tick(gm: &mut Gm, info: TickInfo) {
             gm.reset.call(&mut gm.crosshead, resetting);
             if gm.reset.Done {
                 gm.fault_text.clear();
+                gm.centering_timed_out = false;
                 go(gm, State::Idle);
             }
         }

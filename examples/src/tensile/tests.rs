@@ -3,8 +3,8 @@
 #![allow(clippy::field_reassign_with_default)]
 
 use super::*;
-use plc_core::Time;
 use plc_core::motion::{AxisState, DriveState, command};
+use plc_core::{GlobalMemory, Time};
 use std::time::Duration;
 
 /// A CiA 402 drive that takes each command at once and is where it is told to be: the
@@ -88,8 +88,8 @@ fn powered() -> (Gm, Drive) {
     (gm, drive)
 }
 
-#[test]
-fn a_test_pulls_with_the_crosshead_until_the_break_and_stops_it() {
+/// A machine started, its specimen centred and lifted: the crosshead about to pull.
+fn testing() -> (Gm, Drive) {
     let (mut gm, mut drive) = powered();
     gm.cmd_start = true;
     run(&mut gm, &mut drive, 0, 1);
@@ -105,6 +105,12 @@ fn a_test_pulls_with_the_crosshead_until_the_break_and_stops_it() {
     run(&mut gm, &mut drive, 0, 60);
     assert_eq!(gm.machine_state, State::Testing as u8);
     assert!(gm.cr_test_drive && gm.lamp_yellow);
+    (gm, drive)
+}
+
+#[test]
+fn a_test_pulls_with_the_crosshead_until_the_break_and_stops_it() {
+    let (mut gm, mut drive) = testing();
     // At the test speed of 2 mm/s (reached after 0.04 s at 50 mm/s²): 4 mm in 2 s.
     run(&mut gm, &mut drive, 0, 10);
     assert!(gm.test_move.InVelocity);
@@ -227,9 +233,88 @@ fn a_step_that_takes_too_long_faults_through_its_timer() {
         gm.fault_text.as_str(),
         "centering jaws did not close within 5 s"
     );
+    assert!(gm.centering_timed_out, "its alarm's variable is set");
     tick(&mut gm, &mut drive, 5_020);
     assert!(
         !gm.centering_timeout.Q,
         "the timer resets when the step ends"
+    );
+    assert!(gm.centering_timed_out, "until the fault is reset");
+    gm.cmd_reset = true;
+    run(&mut gm, &mut drive, 5_030, 5);
+    assert_eq!(gm.machine_state, State::Idle as u8);
+    assert!(!gm.centering_timed_out);
+}
+
+#[test]
+fn an_open_guard_door_holds_the_start_and_faults_a_running_test() {
+    let (mut gm, mut drive) = powered();
+    gm.guard_door_open = true;
+    gm.cmd_start = true;
+    run(&mut gm, &mut drive, 0, 3);
+    assert_eq!(gm.machine_state, State::Idle as u8, "no start");
+    gm.guard_door_open = false;
+    run(&mut gm, &mut drive, 30, 1);
+    assert_eq!(gm.machine_state, State::Centering as u8);
+    gm.ls_crosshead_overtravel = true;
+    run(&mut gm, &mut drive, 40, 1);
+    assert_eq!(gm.machine_state, State::Fault as u8);
+    assert_eq!(
+        gm.fault_text.as_str(),
+        "guard door opened or crosshead overtravel during a test"
+    );
+}
+
+#[test]
+fn the_machine_declares_its_five_alarms() {
+    let paths = plc_core::alarm::alarm_paths(Gm::VARIABLES, Gm::ALARMS);
+    let texts: Vec<_> = Gm::ALARMS.iter().map(|a| a.text).collect();
+    assert_eq!(
+        paths,
+        [
+            "guard_door_open",
+            "ls_crosshead_overtravel",
+            "crosshead_error_code",
+            "force_kn",
+            "centering_timed_out"
+        ]
+    );
+    assert_eq!(
+        texts,
+        [
+            "Guard door open",
+            "Crosshead overtravel",
+            "Crosshead drive fault",
+            "Force above the machine's rating",
+            "Specimen not centred in time"
+        ]
+    );
+}
+
+#[test]
+fn the_longest_simulated_specimen_breaks_below_the_force_warning() {
+    let (mut gm, mut drive) = testing();
+    // The model sees the break within its 5 ms step and the program a cycle later: at the
+    // fastest test speed, 0.1 mm is more than the crosshead pulls past the break in that time.
+    let longest = plant::BREAK_MM.iter().copied().fold(0.0, f64::max) + 0.1;
+    for _ in 0..1_000 {
+        if gm.elongation_mm >= longest {
+            break;
+        }
+        run(&mut gm, &mut drive, 0, 1);
+    }
+    assert!(gm.elongation_mm >= longest, "{} mm", gm.elongation_mm);
+    let high = Gm::ALARMS
+        .iter()
+        .find_map(|a| match a.condition.kind {
+            plc_core::alarm::AlarmKind::Limit(l) if a.text.starts_with("Force") => l.high,
+            _ => None,
+        })
+        .expect("the force alarm's warning limit");
+    assert!(
+        gm.max_force_kn < high - 0.5,
+        "{} kN at {} mm: a normal test would raise the force alarm",
+        gm.max_force_kn,
+        gm.elongation_mm
     );
 }

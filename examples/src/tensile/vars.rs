@@ -58,6 +58,23 @@ pub struct Gm {
     /// Specimen break detector
     #[plc(source = "impact67_0_digital_inputs", bit = 3)]
     pub specimen_broken: bool,
+    /// Guard door open: input 5 of the real impact67, a safety relay's door-open contact. The
+    /// relay stops the drives; this tells the operator why. The simulated EL1004 has 4
+    /// channels, so the bit reads 0 (closed) there; `plc force` opens the door.
+    #[plc(
+        source = "impact67_0_digital_inputs",
+        bit = 4,
+        alarm(text = "Guard door open", severity = 900)
+    )]
+    pub guard_door_open: bool,
+    /// Crosshead beyond its travel (overtravel limit switch): input 6 of the real impact67,
+    /// 0 on the simulated bus as `guard_door_open` is
+    #[plc(
+        source = "impact67_0_digital_inputs",
+        bit = 5,
+        alarm(text = "Crosshead overtravel", severity = 900)
+    )]
+    pub ls_crosshead_overtravel: bool,
     /// Lift brake released (energised)
     #[plc(source = "impact67_0_digital_outputs", bit = 0)]
     pub cr_lift_brake: bool,
@@ -137,8 +154,15 @@ pub struct Gm {
         unit = "inc"
     )]
     pub crosshead_following_error: i32,
-    /// Crosshead drive: error code of its last fault (0x603F, 0 none)
-    #[plc(link = "ethercat.crosshead.error_code", direction = "input")]
+    /// Crosshead drive: error code of its last fault (0x603F, 0 none). Any code raises the
+    /// drive fault alarm (a limit at 1: every code is at or above it); the operator reads
+    /// the code here. Not latched: the code stays until MC_Reset clears the fault, and the
+    /// alarm with it
+    #[plc(
+        link = "ethercat.crosshead.error_code",
+        direction = "input",
+        alarm(text = "Crosshead drive fault", high = 1, severity = 800)
+    )]
     pub crosshead_error_code: u16,
     /// Test identifier
     #[plc(initial = "TEST-0000")]
@@ -177,8 +201,23 @@ pub struct Gm {
     #[plc(direction = "status")]
     pub fault_text: FixedString<128>,
     /// Simulated force: the load cell's noise is published only once the force moved by
-    /// more than 0.05 kN
-    #[plc(direction = "status", quantity = "force", unit = "kN", deadband = 0.05)]
+    /// more than 0.05 kN. The frame is rated 16 kN: a warning from 15 kN, above the rating
+    /// from 16 kN, each held 50 ms so one noisy reading raises nothing (the simulated
+    /// specimens break by 14.1 kN)
+    #[plc(
+        direction = "status",
+        quantity = "force",
+        unit = "kN",
+        deadband = 0.05,
+        alarm(
+            text = "Force above the machine's rating",
+            high = 15.0,
+            high_high = 16.0,
+            deadband = 0.5,
+            delay = "50ms",
+            severity = 800
+        )
+    )]
     pub force_kn: f64,
     /// Elongation: the crosshead's travel since the test started, published once it moved by
     /// more than 0.01 mm
@@ -205,6 +244,14 @@ pub struct Gm {
     pub axes: [Axis; 3],
     /// Step timeout: the centering jaws close within 5 s
     pub centering_timeout: Ton,
+    /// The centering jaws did not close within 5 s: set with that fault, cleared when the
+    /// fault is reset. Its own variable because an alarm cannot be declared on
+    /// `centering_timeout.Q`, a member of a block declared in plc-core
+    #[plc(
+        direction = "status",
+        alarm(text = "Specimen not centred in time", severity = 600)
+    )]
+    pub centering_timed_out: bool,
     /// Step timeout: the lift leaves its lower limit within 5 s
     pub lifting_timeout: Ton,
     /// Step timeout: the specimen breaks within 100 s (7.2 mm at the slowest test speed
