@@ -33,7 +33,9 @@ impl Broker {
             .port();
         let conf = work.join("mosquitto.conf");
         // As root, mosquitto would drop to its own user, who cannot read this directory.
-        let text = format!("user root\nlistener {port} 127.0.0.1\nallow_anonymous true\n");
+        let text = format!(
+            "user root\nlistener {port} 127.0.0.1\nallow_anonymous true\nset_tcp_nodelay true\n"
+        );
         std::fs::write(&conf, text).map_err(|e| format!("{}: {e}", conf.display()))?;
         let mut broker = Broker {
             binary,
