@@ -11,7 +11,7 @@ use plc_shm::euid;
 use std::collections::BTreeMap;
 use std::fs::{self, File, OpenOptions};
 use std::io::{self, Write};
-use std::os::unix::fs::{DirBuilderExt, FileExt, MetadataExt, OpenOptionsExt, PermissionsExt};
+use std::os::unix::fs::{DirBuilderExt, FileExt, OpenOptionsExt};
 use std::path::{Path, PathBuf};
 
 /// Records over the capacity before a compaction: a quarter more, so a compaction (which
@@ -261,42 +261,21 @@ fn open_checked(path: &Path, write: bool, capacity: usize) -> Result<Option<File
         Ok(f) => f,
         Err(e) if e.kind() == io::ErrorKind::NotFound && !write => return Ok(None),
         Err(e) if e.raw_os_error() == Some(libc::ELOOP) => {
+            let (problem, fix) = crate::private_dir::link_problem(path);
             return Err(JournalError::Unsafe {
                 path: path.to_owned(),
-                problem: "is a symbolic link".into(),
-                fix: format!(
-                    "remove the link (`rm {}`) and give the real file's path",
-                    path.display()
-                ),
+                problem,
+                fix,
             });
         }
         Err(e) => return Err(io_error(path, e)),
     };
     let meta = file.metadata().map_err(|e| io_error(path, e))?;
-    let mode = meta.permissions().mode() & 0o7777;
-    let problem = if !meta.is_file() {
-        Some("is not a regular file".to_string())
-    } else if meta.uid() != euid() {
-        Some(format!(
-            "belongs to uid {}, not to this program's uid {}",
-            meta.uid(),
-            euid()
-        ))
-    } else if mode & 0o077 != 0 {
-        Some(format!("has mode {mode:04o}, open to other users"))
-    } else {
-        None
-    };
-    if let Some(problem) = problem {
+    if let Some((problem, fix)) = crate::private_dir::file_problem(path, &meta, euid()) {
         return Err(JournalError::Unsafe {
             path: path.to_owned(),
             problem,
-            fix: format!(
-                "check its content, then make it the program's own and private \
-                 (`chown {} {p}; chmod 600 {p}`)",
-                euid(),
-                p = path.display()
-            ),
+            fix,
         });
     }
     let size = meta.len();

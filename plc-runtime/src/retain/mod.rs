@@ -45,7 +45,7 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::fs::{self, OpenOptions};
 use std::io::{Read, Write};
-use std::os::unix::fs::{DirBuilderExt, MetadataExt, OpenOptionsExt, PermissionsExt};
+use std::os::unix::fs::{DirBuilderExt, OpenOptionsExt};
 use std::path::{Path, PathBuf};
 
 mod files;
@@ -326,43 +326,21 @@ impl RetainStore {
             Ok(f) => f,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
             Err(e) if e.raw_os_error() == Some(libc::ELOOP) => {
+                let (problem, fix) = crate::private_dir::link_problem(&self.path);
                 return Err(RetainError::Unsafe {
                     path: self.path.clone(),
-                    problem: "is a symbolic link".into(),
-                    fix: format!(
-                        "remove the link (`rm {}`) and give the real file's path",
-                        self.path.display()
-                    ),
+                    problem,
+                    fix,
                 });
             }
             Err(error) => return Err(io(error)),
         };
         let meta = file.metadata().map_err(io)?;
-        let mode = meta.permissions().mode() & 0o7777;
-        let problem = if !meta.is_file() {
-            Some("is not a regular file".to_string())
-        } else if meta.uid() != euid() {
-            Some(format!(
-                "belongs to uid {}, not to this program's uid {}",
-                meta.uid(),
-                euid()
-            ))
-        } else if mode & 0o077 != 0 {
-            Some(format!("has mode {mode:04o}, open to other users"))
-        } else {
-            None
-        };
-        if let Some(problem) = problem {
+        if let Some((problem, fix)) = crate::private_dir::file_problem(&self.path, &meta, euid()) {
             return Err(RetainError::Unsafe {
                 path: self.path.clone(),
                 problem,
-                fix: format!(
-                    "check its content, then make it the program's own and private \
-                     (`chown {} {}; chmod 600 {}`)",
-                    euid(),
-                    self.path.display(),
-                    self.path.display()
-                ),
+                fix,
             });
         }
         let mut data = Vec::new();
