@@ -266,35 +266,15 @@ pub fn properties(var: &plc_shm::VarDescriptor, writable: bool) -> proto::Proper
 mod tests {
     use super::*;
 
-    const ALL: [IecType; 18] = [
-        IecType::Bool,
-        IecType::Sint,
-        IecType::Int,
-        IecType::Dint,
-        IecType::Lint,
-        IecType::Usint,
-        IecType::Uint,
-        IecType::Udint,
-        IecType::Ulint,
-        IecType::Real,
-        IecType::Lreal,
-        IecType::Byte,
-        IecType::Word,
-        IecType::Dword,
-        IecType::Lword,
-        IecType::String,
-        IecType::Ltime,
-        IecType::Bool,
-    ];
-
     #[test]
     fn every_iec_type_has_the_datatype_of_its_width() {
         use DataType::*;
+        // In the order of `IecType::ALL`.
         let expected = [
             Boolean, Int8, Int16, Int32, Int64, UInt8, UInt16, UInt32, UInt64, Float, Double,
-            UInt8, UInt16, UInt32, UInt64, String, Int64, Boolean,
+            UInt8, UInt16, UInt32, UInt64, String, Int64,
         ];
-        for (ty, dt) in ALL.iter().zip(expected) {
+        for (ty, dt) in IecType::ALL.iter().zip(expected) {
             assert_eq!(DataType::of(*ty), dt, "{ty:?}");
         }
         assert_eq!(Int8.code(), 1);
