@@ -232,14 +232,7 @@ fn io_error(path: &Path, error: io::Error) -> JournalError {
 /// The whole file, refused if larger than a journal of `capacity` can be.
 fn read_all(path: &Path, file: &File, capacity: usize) -> Result<Vec<u8>, JournalError> {
     let size = file.metadata().map_err(|e| io_error(path, e))?.len();
-    let max = max_bytes(capacity);
-    if size > max {
-        return Err(JournalError::TooLarge {
-            path: path.to_owned(),
-            size,
-            max,
-        });
-    }
+    within_bound(path, size, capacity)?;
     let mut bytes = vec![0; size as usize];
     file.read_exact_at(&mut bytes, 0)
         .map_err(|e| io_error(path, e))?;
@@ -278,7 +271,13 @@ fn open_checked(path: &Path, write: bool, capacity: usize) -> Result<Option<File
             fix,
         });
     }
-    let size = meta.len();
+    within_bound(path, meta.len(), capacity)?;
+    Ok(Some(file))
+}
+
+/// Refuses a file of `size` bytes larger than a journal of `capacity` can be: not one this
+/// program wrote.
+fn within_bound(path: &Path, size: u64, capacity: usize) -> Result<(), JournalError> {
     let max = max_bytes(capacity);
     if size > max {
         return Err(JournalError::TooLarge {
@@ -287,7 +286,7 @@ fn open_checked(path: &Path, write: bool, capacity: usize) -> Result<Option<File
             max,
         });
     }
-    Ok(Some(file))
+    Ok(())
 }
 
 /// The directory of `path`, checked as the retain file's is: a directory (not a link) of
