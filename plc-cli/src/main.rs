@@ -15,6 +15,9 @@
 //! plc bus show bus/machine.toml     # the process image of a bus description
 //! plc bus scan --interface eth0 --out bus/machine.toml   # a description from the devices
 //! plc bus scan --sim EK1100,EL1004,EL2889                # the same on the simulated bus
+//! plc alarms tensile_tester          # alarms active or unacknowledged (--history: the journal)
+//! plc ack tensile_tester guard_door_open --comment "door closed"
+//! plc shelve tensile_tester specimen_not_centred --for 1h
 //! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
 //! plc opcua user add users.txt operator              # password from standard input
 //! plc mqtt serve tensile_tester --broker mqtt://127.0.0.1:1883 --group plant --node line1
@@ -25,6 +28,7 @@ mod display;
 mod trace;
 
 use clap::{Parser, Subcommand};
+use plc_shm::protocol::AlarmAction;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -114,6 +118,17 @@ enum Command {
         #[command(flatten)]
         format: display::FormatArgs,
     },
+    /// A program's alarms: those active or waiting for an acknowledgement, most severe first
+    /// (path, state, since when, text); --all every one; --history the journal.
+    Alarms(cmd::alarms::AlarmsArgs),
+    /// Acknowledges alarms, as this user (who may is the write policy's, as for `plc set`).
+    Ack(cmd::alarm_actions::ActArgs),
+    /// Resets latched alarms whose condition has cleared (a reset acknowledges too).
+    Reset(cmd::alarm_actions::ActArgs),
+    /// Shelves alarms for a while: not shown, back by themselves when the shelf expires.
+    Shelve(cmd::alarm_actions::ShelveArgs),
+    /// Takes alarms off their shelf.
+    Unshelve(cmd::alarm_actions::ActArgs),
     /// Records values every cycle (or every Nth), as the program runs them, to a CSV file
     /// and optionally an SVG plot; with a trigger, --pre rows before it and --post after.
     Trace(cmd::trace::Options),
@@ -342,6 +357,11 @@ fn main() -> ExitCode {
         } => cmd::force::unforce(&segment, &paths, all, restore),
         Command::Forces { segment, format } => cmd::force::list(&segment, &format.format()),
         Command::Trace(options) => cmd::trace::run(&options),
+        Command::Alarms(args) => cmd::alarms::run(&args),
+        Command::Ack(args) => cmd::alarm_actions::run(AlarmAction::Acknowledge, &args),
+        Command::Reset(args) => cmd::alarm_actions::run(AlarmAction::Reset, &args),
+        Command::Shelve(args) => cmd::alarm_actions::shelve(&args),
+        Command::Unshelve(args) => cmd::alarm_actions::run(AlarmAction::Unshelve, &args),
         Command::Import {
             project,
             csv,

@@ -22,7 +22,10 @@
 ///
 /// 4: the alarm counts (active, unacknowledged) in two words between the clocks and the
 /// descriptor (a tool of format 3 would look for the descriptor where the counts are).
-pub const FORMAT_VERSION: u32 = 4;
+///
+/// 5: the descriptor lists the alarms, and a table of their states follows it (a tool of
+/// format 4 would show no alarm, and count on a segment that ends at the descriptor).
+pub const FORMAT_VERSION: u32 = 5;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

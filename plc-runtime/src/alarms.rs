@@ -13,6 +13,7 @@ use plc_core::alarm::{
     resolve_suppress,
 };
 use plc_core::{GlobalMemory, Time};
+use plc_shm::AlarmEntry;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::sync::Arc;
@@ -72,6 +73,10 @@ pub struct RuntimeAlarms {
     recount: bool,
     /// The counts last published to the status block.
     published: (usize, usize),
+    /// The alarms whose state changed since the segment's table was last given them, once
+    /// each (`dirty` says which are in `changed`); both keep their capacity.
+    changed: Vec<usize>,
+    dirty: Vec<bool>,
 }
 
 impl fmt::Debug for RuntimeAlarms {
@@ -99,6 +104,8 @@ impl RuntimeAlarms {
             unacknowledged: 0,
             recount: false,
             published: (0, 0),
+            changed: Vec::new(),
+            dirty: Vec::new(),
         }
     }
 
@@ -140,6 +147,8 @@ impl RuntimeAlarms {
             unacknowledged: 0,
             recount: true,
             published: (0, 0),
+            changed: Vec::with_capacity(T::ALARMS.len()),
+            dirty: vec![false; T::ALARMS.len()],
         })
     }
 
@@ -147,6 +156,9 @@ impl RuntimeAlarms {
     /// that are no alarm now are logged and ignored.
     pub(crate) fn restore(&mut self, states: &BTreeMap<String, Snapshot>, file: &std::path::Path) {
         let report = alarm_journal::restore(&mut self.alarms, &self.paths, states);
+        for i in 0..self.alarms.len() {
+            self.mark(i);
+        }
         if !report.restored.is_empty() {
             log::info!(target: "plc_io::runtime",
                 "alarm journal {}: the state of {} alarms restored",
@@ -187,10 +199,45 @@ impl RuntimeAlarms {
                     sender.record(e, sample(e.alarm).value);
                 }
             }
+            for k in 0..self.events.len() {
+                self.mark(self.events[k].alarm);
+            }
             self.events.clear();
             self.recount = true;
         }
         self.recount();
+    }
+
+    /// Notes that alarm `i` changed, for the segment's table.
+    fn mark(&mut self, i: usize) {
+        if let Some(d) = self.dirty.get_mut(i)
+            && !*d
+        {
+            *d = true;
+            self.changed.push(i);
+        }
+    }
+
+    /// Whether an alarm changed since [`drain_changed`](Self::drain_changed) last ran.
+    pub(crate) fn has_changed(&self) -> bool {
+        !self.changed.is_empty()
+    }
+
+    /// The alarms that changed, with their states as the segment's table holds them; none
+    /// again until the next change.
+    pub(crate) fn drain_changed(&mut self) -> impl Iterator<Item = (usize, AlarmEntry)> + '_ {
+        let (alarms, dirty) = (&self.alarms, &mut self.dirty);
+        self.changed.drain(..).map(move |i| {
+            dirty[i] = false;
+            let entry = AlarmEntry {
+                state: alarms.state(i),
+                level: alarms.level(i),
+                acknowledged: alarms.acknowledged(i),
+                since_ns: alarms.since_ns(i),
+                shelved_until_ns: alarms.shelf(i).map(|s| s.until_ns),
+            };
+            (i, entry)
+        })
     }
 
     /// Counts again if a transition or an action happened since the last count: one walk
@@ -310,17 +357,33 @@ impl RuntimeAlarms {
         let i = self
             .find(path)
             .ok_or_else(|| AlarmActionError::Unknown { path: path.into() })?;
-        let event =
-            action(&mut self.alarms, i, &by.user).map_err(|error| AlarmActionError::Refused {
+        self.act_on(i, by, action)
+            .map_err(|error| AlarmActionError::Refused {
                 path: path.into(),
                 error,
-            })?;
+            })
+    }
+
+    /// Does `action` to alarm `i` (a number below [`len`](Self::len)) for `by`, journaled.
+    pub(crate) fn act_on(
+        &mut self,
+        i: usize,
+        by: Operator,
+        action: impl FnOnce(&mut Alarms, usize, &str) -> Result<AlarmEvent, ActionError>,
+    ) -> Result<(), ActionError> {
+        let event = action(&mut self.alarms, i, &by.user)?;
         if let Some(sender) = &self.sender {
             sender.record_action(&event, by);
         }
+        self.mark(i);
         self.recount = true;
         self.recount();
         Ok(())
+    }
+
+    /// The cycle's UTC time, nanoseconds.
+    pub(crate) fn now_ns(&self) -> i64 {
+        self.now_ns
     }
 }
 

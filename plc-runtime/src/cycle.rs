@@ -77,10 +77,17 @@ where
             None => None,
         };
         let (alarms, journal) = start_alarms::<T>(s)?;
+        // Tools learn where the alarm history is from the segment (`plc alarms --history`).
+        let sharing = match (&journal, s.alarm_journal_path()) {
+            (Some(_), Some(path)) => s
+                .sharing
+                .clone()
+                .alarm_history(std::path::absolute(&path).unwrap_or(path)),
+            _ => s.sharing.clone(),
+        };
         let shm = match &s.segment {
             Some(name) => Some(
-                SharedGlobalMemory::<T>::create_with(name, &s.sharing)
-                    .map_err(RuntimeError::Shm)?,
+                SharedGlobalMemory::<T>::create_with(name, &sharing).map_err(RuntimeError::Shm)?,
             ),
             None => None,
         };
@@ -186,7 +193,13 @@ where
             // Forces after the writes: a forced value is what the program reads, whatever
             // the bus or a tool gave it.
             if let Some(shm) = shm.as_mut() {
-                shm.apply_requests(&mut ctx.gm);
+                if alarmed {
+                    // Operators' actions on alarms come with the writes, in their order.
+                    let alarms = &mut ctx.alarms;
+                    shm.apply_requests_with_alarms(&mut ctx.gm, |_, _| {}, |c| alarms.command(c));
+                } else {
+                    shm.apply_requests(&mut ctx.gm);
+                }
                 shm.apply_forces(&mut ctx.gm);
             }
             #[cfg(feature = "cycle-probe")]
@@ -209,10 +222,14 @@ where
         // writes nothing for its alarms.
         if alarmed {
             ctx.alarms.evaluate(&ctx.gm);
-            if let Some(shm) = &self.shm
-                && let Some((active, unacknowledged)) = ctx.alarms.counts_to_publish()
-            {
-                shm.set_alarm_counts(active as u64, unacknowledged as u64);
+            if let Some(shm) = &self.shm {
+                // Before the image: a tool answered "applied" after it reads what it did.
+                if ctx.alarms.has_changed() {
+                    shm.publish_alarms(ctx.alarms.drain_changed());
+                }
+                if let Some((active, unacknowledged)) = ctx.alarms.counts_to_publish() {
+                    shm.set_alarm_counts(active as u64, unacknowledged as u64);
+                }
             }
         }
         ctx.gm.pack_bits();

@@ -1,6 +1,7 @@
 //! The cycle: `Runtime` runs a program's tick at a fixed period with its I/O, shared memory and
 //! retained variables.
 
+mod alarm_commands;
 pub mod alarm_journal;
 mod alarms;
 mod backend;

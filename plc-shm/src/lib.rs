@@ -59,9 +59,11 @@ mod tool;
 
 mod shared_global_memory;
 
-pub use calendar::utc_text;
+pub use calendar::{parse_utc, utc_text};
 pub use env::RUNTIME_DIR_ENV;
 pub use error::{Cause, ShmError};
+pub use format::alarm_descriptor::AlarmDescriptor;
+pub use format::alarm_table::AlarmEntry;
 pub use format::bus_clocks::BusClocks;
 pub use format::bus_state::BusState;
 pub use format::change;
@@ -74,11 +76,11 @@ pub use limits::{GREETING_GRACE, MAX_CONNECTIONS, MAX_FORCES, MAX_PER_UID, RESER
 pub use log_limit::LogLimit;
 pub use naming::{path_of, shown_in_log};
 pub use owner::policy::Sharing;
-pub use owner::{Rejection, ShmOwner};
+pub use owner::{AlarmCommand, AlarmRefusal, Rejection, ShmOwner};
 pub use protocol::{Ticket, WriteOutcome};
 pub use shared_global_memory::SharedGlobalMemory;
 pub use sys::clock::clock_ns;
-pub use sys::ids::euid;
+pub use sys::ids::{euid, user_name};
 pub use sys::priority::normal_priority;
 pub use sys::rundir::{normalise as normalise_name, owner_dir as runtime_dir};
 pub use sys::signals::stop_on_signals;

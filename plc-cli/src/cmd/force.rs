@@ -122,22 +122,9 @@ pub fn list(segment: &str, format: &Format) -> Result<(), Error> {
 }
 
 /// `uid 1000 (ada)`, or the uid alone when it has no name here.
-fn user(uid: u32) -> String {
-    let mut buf = vec![0u8; 4096];
-    // SAFETY: passwd is plain data; getpwuid_r fills it with pointers into `buf`, which lives
-    // until the name is copied out below.
-    let mut pwd: libc::passwd = unsafe { std::mem::zeroed() };
-    let mut out: *mut libc::passwd = std::ptr::null_mut();
-    // SAFETY: valid pointers to a passwd, a buffer of the length given, and the result slot.
-    let r =
-        unsafe { libc::getpwuid_r(uid, &mut pwd, buf.as_mut_ptr().cast(), buf.len(), &mut out) };
-    if r != 0 || out.is_null() || pwd.pw_name.is_null() {
-        return format!("uid {uid}");
+pub fn user(uid: u32) -> String {
+    match plc_shm::user_name(uid) {
+        Some(name) => format!("uid {uid} ({})", display::escape_text(&name)),
+        None => format!("uid {uid}"),
     }
-    // SAFETY: getpwuid_r succeeded: pw_name is a NUL-terminated string inside `buf`.
-    let name = unsafe { std::ffi::CStr::from_ptr(pwd.pw_name) };
-    format!(
-        "uid {uid} ({})",
-        display::escape_text(&name.to_string_lossy())
-    )
 }

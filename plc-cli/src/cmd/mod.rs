@@ -1,5 +1,8 @@
 //! One module per subcommand, and what they share: finding a variable and formatting values.
 
+pub mod alarm_actions;
+pub mod alarm_history;
+pub mod alarms;
 pub mod bus;
 pub mod export;
 pub mod force;

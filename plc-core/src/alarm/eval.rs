@@ -257,6 +257,12 @@ impl Alarms {
         self.slots[alarm].level
     }
 
+    /// Whether nothing of alarm `alarm` waits for an acknowledgement (also while it is
+    /// shelved or suppressed, which [`state`](Self::state) does not show).
+    pub fn acknowledged(&self, alarm: usize) -> bool {
+        self.slots[alarm].acked
+    }
+
     /// When alarm `alarm` last changed state, UTC nanoseconds (0 if never).
     pub fn since_ns(&self, alarm: usize) -> i64 {
         self.slots[alarm].since

@@ -190,6 +190,29 @@ impl fmt::Display for ShmError {
                 "segment `{name}`: cannot trace `{path}`: it is a STRING, and a trace records \
                  numbers, BOOLs and times; leave it out"
             ),
+            ShmError::UnknownAlarm {
+                name,
+                path,
+                is_variable: true,
+            } => write!(
+                f,
+                "segment `{name}`: `{path}` is a variable without an alarm (`plc alarms {name} \
+                 --all` lists the alarms)"
+            ),
+            ShmError::UnknownAlarm { name, path, .. } => write!(
+                f,
+                "segment `{name}` has no alarm `{path}`: an alarm is named by the path of the \
+                 value it watches (`plc alarms {name} --all` lists them)"
+            ),
+            ShmError::AlarmRefused {
+                name,
+                alarm,
+                action,
+                reason,
+            } => write!(
+                f,
+                "segment `{name}`: cannot {action} alarm `{alarm}`: {reason}; nothing was done"
+            ),
             ShmError::Protocol { name, why } => write!(
                 f,
                 "segment `{name}`: the program's socket does not speak this tool's protocol \

@@ -232,6 +232,27 @@ pub enum ShmError {
         /// The value's path.
         path: String,
     },
+    /// A path that names no alarm of the program.
+    UnknownAlarm {
+        /// Segment.
+        name: String,
+        /// The path given.
+        path: String,
+        /// Whether a variable has that path (it declares no alarm).
+        is_variable: bool,
+    },
+    /// The program refused an operator's action on an alarm; nothing of the request was
+    /// done.
+    AlarmRefused {
+        /// Segment.
+        name: String,
+        /// The alarm's path.
+        alarm: String,
+        /// What was asked (`acknowledge`, `reset`, `shelve`, `unshelve`).
+        action: &'static str,
+        /// The program's reason.
+        reason: String,
+    },
     /// The owner sent something that is not the segment protocol.
     Protocol {
         /// Segment.

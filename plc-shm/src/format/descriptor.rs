@@ -1,6 +1,7 @@
 //! The layout descriptor: every variable's metadata as JSON inside the segment, so tools read
 //! and write a running program's variables without its Rust types.
 
+use super::alarm_descriptor::AlarmDescriptor;
 use plc_core::{Access, Direction, IecType, VarInfo};
 use plc_rules::layout::LayoutHasher;
 use serde::{Deserialize, Serialize};
@@ -219,6 +220,13 @@ pub struct LayoutDescriptor {
     pub image_size: usize,
     /// The variables in declaration order.
     pub variables: Vec<VarDescriptor>,
+    /// The program's alarms, in the order of the segment's alarm table.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub alarms: Vec<AlarmDescriptor>,
+    /// Where the program keeps its alarm history (`plc alarms --history` reads it), if it
+    /// keeps one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alarm_journal: Option<String>,
 }
 
 impl LayoutDescriptor {
@@ -229,6 +237,8 @@ impl LayoutDescriptor {
             layout_hash: T::LAYOUT_HASH,
             image_size: core::mem::size_of::<T::Image>(),
             variables: T::VARIABLES.iter().map(VarDescriptor::from).collect(),
+            alarms: AlarmDescriptor::all(T::VARIABLES, T::ALARMS),
+            alarm_journal: None,
         }
     }
 
@@ -368,6 +378,8 @@ mod tests {
             format_version: plc_rules::layout::FORMAT_VERSION,
             layout_hash: 0,
             image_size,
+            alarms: Vec::new(),
+            alarm_journal: None,
             variables,
         }
     }

@@ -2,6 +2,8 @@
 //! by every tool that attaches (every number in it comes from another process), and watched
 //! while attached (closed by its owner, or replaced).
 
+use super::alarm_descriptor::AlarmDescriptor;
+use super::alarm_table::AlarmTable;
 use super::bytes;
 use super::descriptor::LayoutDescriptor;
 use super::layout::*;
@@ -18,6 +20,8 @@ pub struct Header {
     pub desc: LayoutDescriptor,
     /// The owner's generation.
     pub generation: u64,
+    /// The alarm states, after the descriptor.
+    pub alarms: AlarmTable,
 }
 
 /// Writes the header and the descriptor (the owner, once, before it serves the segment).
@@ -133,14 +137,29 @@ pub fn read(base: &Base, name: String) -> Result<Header, ShmError> {
             ),
         });
     }
-    desc.check_variables().map_err(|why| ShmError::Corrupt {
-        name: name.clone(),
-        why,
-    })?;
+    desc.check_variables()
+        .and_then(|()| AlarmDescriptor::check(&desc.alarms, desc.variables.len()))
+        .map_err(|why| ShmError::Corrupt {
+            name: name.clone(),
+            why,
+        })?;
+    // The descriptor's end was checked against the mapping above.
+    let alarms = AlarmTable::after(d_end as usize, desc.alarms.len());
+    match alarms.end() {
+        Some(end) if end <= base.len() => {}
+        end => {
+            return Err(ShmError::TooSmall {
+                name,
+                len: base.len(),
+                needed: end.unwrap_or(usize::MAX),
+            });
+        }
+    }
     Ok(Header {
         off,
         desc,
         generation: base.load(H_GENERATION),
+        alarms,
     })
 }
 

@@ -16,6 +16,8 @@
 //!                                                                  (3 x u64)
 //! ...   alarms   active now, waiting for an acknowledgement             (2 x u64)
 //! ...   descriptor, JSON
+//! ...   alarm states, 8-aligned: sequence, then per alarm in the descriptor's order its
+//!       state and level, since when, shelved until             (1 + alarms x 3 x u64)
 //! ```
 //! Only the owner writes any of it (tools map it read-only, and the memory is sealed).
 //! Every shared word is a naturally aligned `u64` used only through `AtomicU64`

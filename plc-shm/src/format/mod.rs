@@ -1,7 +1,10 @@
 //! The segment's format: where every word is, the header, the status block and its types, the
-//! descriptor, values in image bytes, the seqlock, the table of forces and a trace's ring.
+//! descriptor, values in image bytes, the seqlock, the tables of forces and alarm states and
+//! a trace's ring.
 //! Both sides write or read it; it knows neither.
 
+pub mod alarm_descriptor;
+pub mod alarm_table;
 pub mod bus_clocks;
 pub mod bus_state;
 pub mod bytes;

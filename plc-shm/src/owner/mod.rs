@@ -4,6 +4,7 @@
 //!
 //! Nothing here uses the tool's side: both meet in the segment's format and the protocol.
 
+mod alarm_commands;
 mod by_value;
 mod force_log;
 mod forces;
@@ -16,10 +17,12 @@ mod segment;
 mod server;
 mod spent;
 
+pub use alarm_commands::{AlarmCommand, AlarmRefusal};
 pub use requests::Rejection;
 use spent::SpentTx;
 
 use crate::error::ShmError;
+use crate::format::alarm_table::{self, AlarmEntry, AlarmTable};
 use crate::format::cycle_stats::CycleStats;
 use crate::format::descriptor::LayoutDescriptor;
 use crate::format::io_status::IoStatus;
@@ -61,6 +64,8 @@ pub struct ShmOwner<T: GlobalMemory> {
     /// The owner's seqlock counter, in its own memory: the shared word is only ever written
     /// from it, never read back.
     seq: Cell<u64>,
+    /// Where the alarm states lie.
+    alarms: AlarmTable,
     /// The state it reports.
     run_state: Cell<RunState>,
     _t: PhantomData<fn() -> T>,
@@ -72,13 +77,22 @@ impl<T: GlobalMemory> ShmOwner<T> {
     pub(crate) fn create(name: &str, sharing: &Sharing) -> Result<ShmOwner<T>, ShmError> {
         let name = rundir::normalise(name)?;
         let policy = Policy::resolve(&name, sharing)?;
-        let desc = LayoutDescriptor::of::<T>();
+        let mut desc = LayoutDescriptor::of::<T>();
+        desc.alarm_journal = sharing
+            .alarm_history_path()
+            .map(|p| p.display().to_string());
         let json = serde_json::to_vec(&desc).map_err(|e| ShmError::Corrupt {
             name: name.clone(),
             why: e.to_string(),
         })?;
         let off = Offsets::new(size_of::<T::Image>());
-        let mut seg = OwnedSegment::create(&name, off.descriptor + json.len(), &policy)?;
+        // A new segment is zeroed: every alarm normal, never raised.
+        let alarms = AlarmTable::after(off.descriptor + json.len(), T::ALARMS.len());
+        let size = alarms.end().ok_or_else(|| ShmError::Corrupt {
+            name: name.clone(),
+            why: format!("{} alarms do not fit in a segment", T::ALARMS.len()),
+        })?;
+        let mut seg = OwnedSegment::create(&name, size, &policy)?;
         let base = seg.base();
         let generation = segment::next_generation(0);
         header::write(&base, &json, T::LAYOUT_HASH, &off, generation);
@@ -95,6 +109,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
             name: name.clone(),
             policy,
             vars: T::VARIABLES,
+            alarms: T::ALARMS.len(),
             off,
             counters: counters.clone(),
             queue,
@@ -106,6 +121,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
             base,
             off,
             desc,
+            alarms,
             generation,
             inbox: Inbox {
                 rx: Mutex::new(rx),
@@ -198,12 +214,39 @@ impl<T: GlobalMemory> ShmOwner<T> {
 
     /// Like [`apply_requests`](Self::apply_requests), calling `audit` with each write and the
     /// outcome of applying it (to log operator writes, for example).
+    /// Operators' actions on alarms are refused: a program that evaluates its alarms takes
+    /// them with [`apply_requests_with_alarms`](Self::apply_requests_with_alarms).
     pub fn apply_requests_with(
         &mut self,
         gm: &mut T,
         mut audit: impl FnMut(&Write, &Result<(), Rejection>),
     ) -> usize {
-        self.inbox.apply(gm, &self.base, &self.off, &mut audit)
+        let mut act = alarm_commands::unmanaged;
+        self.inbox
+            .apply(gm, &self.base, &self.off, &mut audit, &mut act)
+    }
+
+    /// Like [`apply_requests_with`](Self::apply_requests_with), handing each operator's
+    /// action on alarms (checked against the write policy and the program's alarm count) to
+    /// `act`, in order with the writes: its refusal is the tool's answer, and an action it
+    /// takes is answered "applied" after the next [`publish`](Self::publish) (publish the
+    /// alarm states with [`publish_alarms`](Self::publish_alarms) before it, so that a tool
+    /// reads what it did).
+    pub fn apply_requests_with_alarms(
+        &mut self,
+        gm: &mut T,
+        mut audit: impl FnMut(&Write, &Result<(), Rejection>),
+        mut act: impl FnMut(&AlarmCommand) -> Result<(), AlarmRefusal>,
+    ) -> usize {
+        self.inbox
+            .apply(gm, &self.base, &self.off, &mut audit, &mut act)
+    }
+
+    /// Stores the states of the alarms that changed (number in `T::ALARMS`, state) into the
+    /// segment's alarm table, which tools read (`plc alarms`, OPC UA); numbers beyond the
+    /// table are skipped.
+    pub fn publish_alarms(&self, changed: impl Iterator<Item = (usize, AlarmEntry)>) {
+        alarm_table::store(&self.base, &self.alarms, changed);
     }
 
     /// Sets every forced value in `gm`. The runtime calls it at both of the cycle's

@@ -21,6 +21,7 @@ use crate::sys::unix::Peer;
 pub struct Sharing {
     read_group: Option<String>,
     write_group: Option<String>,
+    alarm_history: Option<std::path::PathBuf>,
 }
 
 impl Sharing {
@@ -40,6 +41,18 @@ impl Sharing {
     pub fn write_group(mut self, group: impl Into<String>) -> Sharing {
         self.write_group = Some(group.into());
         self
+    }
+
+    /// Tells tools where the program keeps its alarm history (`plc alarms --history` reads
+    /// it there; the file keeps its own owner and mode, so only those who may read it do).
+    pub fn alarm_history(mut self, path: impl Into<std::path::PathBuf>) -> Sharing {
+        self.alarm_history = Some(path.into());
+        self
+    }
+
+    /// Where the alarm history is, if the program said.
+    pub fn alarm_history_path(&self) -> Option<&std::path::Path> {
+        self.alarm_history.as_deref()
     }
 
     /// The read group's name, if any.

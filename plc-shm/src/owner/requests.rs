@@ -1,4 +1,5 @@
-//! Requests from outside, on the owner's side: the writes, forces, releases and traces its
+//! Requests from outside, on the owner's side: the writes, forces, releases, traces and alarm
+//! actions its
 //! socket server accepted, queued (bounded) for the cycle thread, which applies them at the start of its next cycle in
 //! order, each request all or none; and the counters tools see in the status block.
 //!
@@ -7,6 +8,7 @@
 //! value kind and range. The cycle thread only calls the program's `set`, undoing a request's
 //! earlier writes if `set` refuses a later one.
 
+use super::alarm_commands::{AlarmCommand, AlarmRefusal};
 use super::forces::ForceTable;
 use super::recording::Recording;
 use super::refused::Refused;
@@ -187,6 +189,8 @@ pub(crate) enum Kind {
     Release(protocol::Release),
     /// A trace to record from now on (answered by the server already).
     Record(Box<Recording>),
+    /// An operator's action on alarms, for the program's alarm manager.
+    Alarm(Box<AlarmCommand>),
 }
 
 impl Kind {
@@ -196,6 +200,7 @@ impl Kind {
             Kind::Write(w) | Kind::Force(w) => w.len() as u64,
             Kind::Release(r) => r.values.len().max(1) as u64,
             Kind::Record(_) => 0,
+            Kind::Alarm(a) => a.alarms.len().max(1) as u64,
         }
     }
 
@@ -206,6 +211,8 @@ impl Kind {
     pub fn cost(&self) -> u64 {
         match self {
             Kind::Write(w) => w.len() as u64,
+            // An alarm's action is a few stores and an event for the journal.
+            Kind::Alarm(_) => self.count(),
             Kind::Force(_) | Kind::Release(_) => FORCE_COST * self.count() + FORCE_REQUEST_COST,
             Kind::Record(_) => 0,
         }
@@ -273,6 +280,7 @@ impl<T: GlobalMemory> Inbox<T> {
         base: &Base,
         off: &Offsets,
         audit: &mut impl FnMut(&Write, &Result<(), Rejection>),
+        act: &mut impl FnMut(&AlarmCommand) -> Result<(), AlarmRefusal>,
     ) -> usize {
         // Nothing queued (the server counts a request before it queues it; one counted just
         // now waits for the next cycle): most cycles end here, without the lock or the queue.
@@ -331,6 +339,9 @@ impl<T: GlobalMemory> Inbox<T> {
                 Kind::Record(recording) => {
                     self.recordings.borrow_mut().push(*recording);
                     continue;
+                }
+                Kind::Alarm(command) => {
+                    act(&command).map_err(|r| Refused::rejected(r.which, r.why))
                 }
             };
             match done {

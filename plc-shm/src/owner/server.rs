@@ -14,6 +14,7 @@
 //! connection. The accepting thread also formats and logs the force and release events the
 //! cycle leaves (at a bounded rate, saying what it did not show or could not log).
 
+use super::alarm_commands::{self, AlarmCommand};
 use super::force_log::{ForceLogReader, Level};
 use super::policy::Policy;
 use super::recording::Recording;
@@ -52,6 +53,8 @@ struct Shared {
     name: String,
     policy: Policy,
     vars: &'static [VarInfo],
+    /// Alarms the program declares.
+    alarms: usize,
     memfd: RawFd,
     base: Base,
     off: Offsets,
@@ -88,6 +91,7 @@ pub(crate) struct Setup {
     pub name: String,
     pub policy: Policy,
     pub vars: &'static [VarInfo],
+    pub alarms: usize,
     pub off: Offsets,
     pub counters: Arc<Counters>,
     pub queue: SyncSender<Batch>,
@@ -108,6 +112,7 @@ impl Server {
             name: setup.name,
             policy: setup.policy,
             vars: setup.vars,
+            alarms: setup.alarms,
             memfd,
             base,
             off: setup.off,
@@ -383,6 +388,7 @@ impl Session<'_> {
             protocol::Request::Write(w) => self.validated(&w, false).map(Kind::Write),
             protocol::Request::Force(w) => self.validated(&w, true).map(Kind::Force),
             protocol::Request::Release(r) => Some(Kind::Release(r)),
+            protocol::Request::Alarm(a) => self.alarm_command(a),
         };
         if let Some(kind) = kind {
             self.queue(id, kind);
@@ -414,6 +420,25 @@ impl Session<'_> {
                     .counters
                     .add(Count::Rejected, n, &shared.base, &shared.off);
                 self.conn.refuse(request.id, refused);
+                None
+            }
+        }
+    }
+
+    /// The command of an action on alarms whose numbers the program declares; a refusal is
+    /// answered here.
+    fn alarm_command(&self, request: protocol::AlarmRequest) -> Option<Kind> {
+        let shared = self.shared;
+        match alarm_commands::check_numbers(&request, shared.alarms) {
+            Ok(()) => Some(Kind::Alarm(Box::new(AlarmCommand::new(
+                request,
+                self.peer.uid,
+            )))),
+            Err((which, why)) => {
+                shared
+                    .counters
+                    .add(Count::Rejected, 1, &shared.base, &shared.off);
+                self.conn.answer(request.id, Code::Rejected, which, why);
                 None
             }
         }

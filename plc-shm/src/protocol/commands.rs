@@ -1,9 +1,11 @@
-//! The messages a tool sends besides writes: forces, their release, and traces. Decoded with
+//! The messages a tool sends besides writes: forces, their release, traces and actions on
+//! alarms. Decoded with
 //! the same checked reader; [`decode`] reads any tool-to-owner message.
 
+use super::alarm_actions::{AlarmRequest, decode_alarm};
 use super::decode_error::DecodeError;
 use super::reader::{Reader, start};
-use super::tags::{TAG_FORCE, TAG_RELEASE, TAG_TRACE, TAG_WRITE};
+use super::tags::{TAG_ALARM, TAG_FORCE, TAG_RELEASE, TAG_TRACE, TAG_WRITE};
 use super::writes::{WriteRequest, decode_writes};
 use crate::limits::{MAX_TRACED, MAX_WRITES};
 
@@ -23,6 +25,8 @@ pub enum Request {
     Release(Release),
     /// A trace to start on this connection.
     Trace(TraceRequest),
+    /// An operator's action on alarms.
+    Alarm(AlarmRequest),
 }
 
 impl Request {
@@ -32,6 +36,7 @@ impl Request {
             Request::Write(w) | Request::Force(w) => w.id,
             Request::Release(r) => r.id,
             Request::Trace(t) => t.id,
+            Request::Alarm(a) => a.id,
         }
     }
 }
@@ -160,6 +165,7 @@ pub fn decode(bytes: &[u8]) -> Result<Request, DecodeError> {
             let values = decode_values(&mut r, "the values a trace records", 1, MAX_TRACED)?;
             Request::Trace(TraceRequest { id, every, values })
         }
+        TAG_ALARM => Request::Alarm(decode_alarm(&mut r)?),
         byte => {
             return Err(DecodeError::Unknown {
                 what: "unknown message tag",
@@ -194,6 +200,7 @@ mod tests {
             Request::Force(w) => encode_force(w),
             Request::Release(r) => encode_release(r),
             Request::Trace(t) => encode_trace(t),
+            Request::Alarm(a) => super::super::alarm_actions::encode_alarm(a),
         }
     }
 
@@ -203,7 +210,7 @@ mod tests {
         #[test]
         fn arbitrary_commands_decode_to_an_error_or_their_one_meaning(
             bytes in proptest::collection::vec(any::<u8>(), 0..1200),
-            tag in 3u8..6,
+            tag in 3u8..7,
         ) {
             let mut bytes = bytes;
             if let Some(b) = bytes.first_mut() {

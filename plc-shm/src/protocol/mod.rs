@@ -23,8 +23,12 @@
 //! trace (tool -> owner):
 //!     5u8  id u64  every u32 (>= 1)  count u16 (1..=MAX_TRACED)
 //!     then count times:  index u32  element u32
+//! alarm action (tool -> owner):
+//!     6u8  id u64  action u8  flags u8 (1 all)  shelve for i64 (ns)
+//!     comment len u8 + UTF-8  on behalf of len u8 + UTF-8  count u16  then count times: alarm u32
 //! ```
 
+mod alarm_actions;
 mod answer;
 mod commands;
 mod decode_error;
@@ -36,6 +40,7 @@ mod tests;
 mod writes;
 
 pub use crate::limits::{MAX_MESSAGE, MAX_TRACED, MAX_WRITES};
+pub use alarm_actions::{AlarmAction, AlarmRequest, cut, encode_alarm};
 pub use answer::{Code, Reply, Ticket, WriteOutcome, decode_reply, encode_reply};
 pub use commands::{
     Release, Request, TraceRequest, decode, decode_request, encode_release, encode_trace,

@@ -10,3 +10,5 @@ pub const TAG_FORCE: u8 = 3;
 pub const TAG_RELEASE: u8 = 4;
 /// A trace to start (tool -> owner).
 pub const TAG_TRACE: u8 = 5;
+/// An operator's action on alarms (tool -> owner).
+pub const TAG_ALARM: u8 = 6;

@@ -74,3 +74,23 @@ pub fn group_name(gid: u32) -> String {
     }
     gid.to_string()
 }
+
+/// The name of user `uid` from the system's user database, if it has one (the name is as the
+/// database holds it: a tool shows it escaped).
+pub fn user_name(uid: u32) -> Option<String> {
+    // SAFETY: passwd is plain data; getpwuid_r fills it, with its strings in `buf`.
+    let mut pwd: libc::passwd = unsafe { std::mem::zeroed() };
+    let mut result: *mut libc::passwd = std::ptr::null_mut();
+    let mut buf = vec![0 as libc::c_char; 1 << 14];
+    // SAFETY: valid pointers and the buffer's true length.
+    let r = unsafe { libc::getpwuid_r(uid, &mut pwd, buf.as_mut_ptr(), buf.len(), &mut result) };
+    if r != 0 || result.is_null() || pwd.pw_name.is_null() {
+        return None;
+    }
+    // SAFETY: getpwuid_r set pw_name to a NUL-terminated string inside `buf`.
+    Some(
+        unsafe { CStr::from_ptr(pwd.pw_name) }
+            .to_string_lossy()
+            .into_owned(),
+    )
+}

@@ -4,6 +4,7 @@
 use super::client::answer_result;
 use super::segment::AttachedSegment;
 use crate::error::ShmError;
+use crate::format::alarm_table::AlarmTable;
 use crate::format::descriptor::{LayoutDescriptor, VarDescriptor};
 use crate::format::header::{self, Header};
 use crate::format::layout::{H_MAGIC, IMAGE, MAGIC, Offsets};
@@ -34,6 +35,8 @@ pub(crate) struct View {
     pub off: Offsets,
     pub desc: LayoutDescriptor,
     pub generation: u64,
+    /// Where the alarm states lie.
+    pub alarms: AlarmTable,
     pub checked_alive: Cell<Option<Instant>>,
     /// Top-level variables by lower-case name, built at the first lookup: a tool that names
     /// thousands of variables (`plc get` of 4,000 names) finds each in constant time, where a
@@ -50,9 +53,11 @@ impl View {
             off,
             desc,
             generation,
+            alarms,
         } = header::read(&base, name)?;
         Ok(View {
             generation,
+            alarms,
             seg,
             base,
             off,
