@@ -15,6 +15,7 @@ pub mod opcua;
 pub mod set;
 pub mod trace;
 pub mod watch;
+pub mod watch_marks;
 
 use crate::display::{self, Format};
 use plc_core::rules::path::segments;

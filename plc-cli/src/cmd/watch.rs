@@ -2,10 +2,12 @@
 //! PgUp/PgDn select, Enter write a value to the selected variable (checked as `plc set`
 //! checks), `p` toggle reals between 6 significant digits (or `--digits`) and full precision,
 //! `q` or Esc quit. Bit-mapped bools are shown under their source word; values that
-//! changed in the last second are highlighted; forced values (`plc force`) are marked `F`. Structures and arrays of structures are a tree:
+//! changed in the last second are highlighted; forced values (`plc force`) are marked `F`, values an alarm watches `!` (red while it is
+//! active or unacknowledged; the header counts them). Structures and arrays of structures are a tree:
 //! Right (or Enter) opens the selected one, Left closes it. `PLC_WATCH_FRAME_LOG=FILE` appends
 //! each refresh's time to FILE (see [`frame_log`]).
 
+use super::watch_marks::{self, Mark, Marks};
 use super::{Error, period_of, set, show, type_text};
 use crate::display::{self, Format};
 use plc_shm::{DynSegment, PathLocation, PathTarget};
@@ -72,14 +74,14 @@ struct Watch {
     format: Format,
     /// The digits reals are rounded to when not at full precision.
     digits: u8,
-    /// The values forced now, as (variable, leaf), and the variables holding one.
-    forced: HashSet<(usize, usize)>,
-    forced_vars: HashSet<usize>,
+    /// What is forced, and what alarms watch.
+    marks: Marks,
 }
 
 impl Watch {
     fn new(seg: DynSegment, filter: Option<String>, format: Format) -> Watch {
         let digits = format.digits.unwrap_or(DIGITS);
+        let marks = Marks::new(&seg);
         let vars = &seg.descriptor().variables;
         // Each word's bools in one pass: a scan of all variables per word is quadratic, and
         // a program of 4,000 variables would wait for it at every start.
@@ -114,8 +116,7 @@ impl Watch {
                 ..format
             },
             digits,
-            forced: HashSet::new(),
-            forced_vars: HashSet::new(),
+            marks,
         };
         w.rebuild();
         w
@@ -173,15 +174,7 @@ impl Watch {
 
     fn refresh(&mut self) -> Result<(), Error> {
         let image = self.seg.snapshot_bytes()?;
-        // The table of forces is read only while the status block counts some.
-        self.forced.clear();
-        self.forced_vars.clear();
-        if self.seg.status().forces > 0 {
-            for f in self.seg.forces()? {
-                self.forced.insert((f.index, f.leaf));
-                self.forced_vars.insert(f.index);
-            }
-        }
+        self.marks.refresh(&self.seg, &self.seg.status())?;
         let now = Instant::now();
         let mut fresh = Vec::with_capacity(self.entries.len());
         for e in &self.entries {
@@ -270,10 +263,7 @@ impl Watch {
             st.bus_state,
             if st.bus_fault { " FAULT" } else { "" },
         );
-        let header = match st.forces {
-            0 => header,
-            n => format!("{header} | {n} forced (F)"),
-        };
+        let header = format!("{header}{}", watch_marks::header_counts(&st));
         f.render_widget(
             Paragraph::new(header).block(Block::bordered().title(" plc watch ")),
             head,
@@ -314,10 +304,16 @@ impl Watch {
                 ),
             };
             let key = entry.key(self);
-            let forced = match entry {
-                Entry::Var(i) => self.forced_vars.contains(i),
-                Entry::Leaf { at, .. } => self.forced.contains(&(at.index, at.leaf)),
-                Entry::Group { .. } => false,
+            let mark = match entry {
+                Entry::Var(i) => self.marks.of(Some(*i), None),
+                Entry::Leaf { at, .. } => self.marks.of(None, Some((at.index, at.leaf))),
+                Entry::Group { .. } => Mark::default(),
+            };
+            let forced = mark.forced;
+            let name = match (mark.alarm, mark.alarmed) {
+                (true, true) => ratatui::text::Span::raw(format!("{name} !")).red().bold(),
+                (true, false) => ratatui::text::Span::raw(format!("{name} !")),
+                _ => ratatui::text::Span::raw(name),
             };
             let text = self.values.get(key).cloned().unwrap_or_default();
             let mut value = if forced {
