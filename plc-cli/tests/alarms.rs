@@ -63,12 +63,19 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
     let segment = format!("al_door_{}", std::process::id());
     let mut program = tensile_tester(&dir, &segment);
     let quiet = alarms(&segment, &[]);
-    assert!(quiet.contains("no alarm active") && quiet.contains("5 declared"), "{quiet}");
+    assert!(
+        quiet.contains("no alarm active") && quiet.contains("5 declared"),
+        "{quiet}"
+    );
     let all = alarms(&segment, &["--all"]);
     let door = line_of(&all, "guard_door_open").expect("declared");
     assert!(door.contains("900") && door.contains("normal") && door.contains("Guard door open"));
 
-    assert!(plc(&["force", &segment, "guard_door_open=true"]).status.success());
+    assert!(
+        plc(&["force", &segment, "guard_door_open=true"])
+            .status
+            .success()
+    );
     wait_until("the door alarm in `plc alarms`", || {
         line_of(&alarms(&segment, &[]), "guard_door_open")
             .is_some_and(|l| l.contains("active unacknowledged") && l.contains(" UTC"))
@@ -77,8 +84,8 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
     // `plc watch` counts it and marks the value the alarm watches.
     if TmuxSession::available() {
         let cmd = format!("{} watch {segment} --rate 20", env!("CARGO_BIN_EXE_plc"));
-        let session = TmuxSession::start(&format!("alarms{}", std::process::id()), 200, 50, &cmd)
-            .unwrap();
+        let session =
+            TmuxSession::start(&format!("alarms{}", std::process::id()), 200, 50, &cmd).unwrap();
         wait_until("the alarm count in plc watch", || {
             let screen = session.screen();
             screen.contains("alarms: 1 unacknowledged, 1 active")
@@ -90,26 +97,55 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
     // Paths that name no alarm are refused by name, before anything is sent.
     let o = plc(&["ack", &segment, "no_such_thing"]);
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("has no alarm `no_such_thing`"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("has no alarm `no_such_thing`"),
+        "{}",
+        stderr(&o)
+    );
     let o = plc(&["ack", &segment, "state_cycles"]);
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("`state_cycles` is a variable without an alarm"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("`state_cycles` is a variable without an alarm"),
+        "{}",
+        stderr(&o)
+    );
 
-    let o = plc(&["ack", &segment, "guard_door_open", "--comment", "door checked"]);
+    let o = plc(&[
+        "ack",
+        &segment,
+        "guard_door_open",
+        "--comment",
+        "door checked",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     assert!(stdout(&o).contains("acknowledged: guard_door_open"));
     // Answered once the program took it: the table says so at once.
     let after = alarms(&segment, &[]);
-    assert!(line_of(&after, "guard_door_open").unwrap().contains("active acknowledged"), "{after}");
+    assert!(
+        line_of(&after, "guard_door_open")
+            .unwrap()
+            .contains("active acknowledged"),
+        "{after}"
+    );
     let o = plc(&["ack", &segment, "guard_door_open"]);
     assert!(!o.status.success());
-    assert!(stderr(&o).contains("waits for no acknowledgement"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("waits for no acknowledgement"),
+        "{}",
+        stderr(&o)
+    );
 
     // Closed, then opened again and left unacknowledged: killed meanwhile, the program
     // comes back with the alarm still waiting for an operator.
     assert!(plc(&["unforce", &segment, "--all"]).status.success());
-    wait_until("the alarm to clear", || alarms(&segment, &[]).contains("no alarm active"));
-    assert!(plc(&["force", &segment, "guard_door_open=true"]).status.success());
+    wait_until("the alarm to clear", || {
+        alarms(&segment, &[]).contains("no alarm active")
+    });
+    assert!(
+        plc(&["force", &segment, "guard_door_open=true"])
+            .status
+            .success()
+    );
     wait_until("the alarm raised again", || {
         line_of(&alarms(&segment, &[]), "guard_door_open")
             .is_some_and(|l| l.contains("active unacknowledged"))
@@ -135,12 +171,26 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
     assert!(events[1].contains("acknowledged by") && events[1].contains("\"door checked\""));
     assert!(events[2].contains("returned to normal"), "{history}");
     assert!(events[3].contains("raised active"), "{history}");
-    assert!(history.lines().last().unwrap().contains("returned to normal"), "{history}");
+    assert!(
+        history
+            .lines()
+            .last()
+            .unwrap()
+            .contains("returned to normal"),
+        "{history}"
+    );
     // --since a time after everything: nothing; a bad one: refused with the forms it takes.
     let later = alarms(&segment, &["--history", "--since", "2250-01-01"]);
-    assert!(later.contains("no alarm transition since 2250-01-01"), "{later}");
+    assert!(
+        later.contains("no alarm transition since 2250-01-01"),
+        "{later}"
+    );
     let o = plc(&["alarms", &segment, "--history", "--since", "yesterday"]);
-    assert!(!o.status.success() && stderr(&o).contains("neither a UTC time"), "{}", stderr(&o));
+    assert!(
+        !o.status.success() && stderr(&o).contains("neither a UTC time"),
+        "{}",
+        stderr(&o)
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -149,11 +199,23 @@ fn a_damaged_journal_line_is_reported_and_the_other_records_are_read() {
     let dir = scratch("damage");
     let segment = format!("al_damage_{}", std::process::id());
     let program = tensile_tester(&dir, &segment);
-    assert!(plc(&["force", &segment, "guard_door_open=true"]).status.success());
-    wait_until("the alarm", || !alarms(&segment, &[]).contains("no alarm active"));
-    assert!(plc(&["ack", &segment, "--all", "--comment", "seen"]).status.success());
+    assert!(
+        plc(&["force", &segment, "guard_door_open=true"])
+            .status
+            .success()
+    );
+    wait_until("the alarm", || {
+        !alarms(&segment, &[]).contains("no alarm active")
+    });
+    assert!(
+        plc(&["ack", &segment, "--all", "--comment", "seen"])
+            .status
+            .success()
+    );
     assert!(plc(&["unforce", &segment, "--all"]).status.success());
-    wait_until("the alarm to clear", || alarms(&segment, &[]).contains("no alarm active"));
+    wait_until("the alarm to clear", || {
+        alarms(&segment, &[]).contains("no alarm active")
+    });
     common::terminate(&mut { program });
     // The acknowledgement's line loses a character: its checksum no longer holds.
     let journal = dir.join("retain").join("tensile_tester.alarms");
@@ -165,7 +227,10 @@ fn a_damaged_journal_line_is_reported_and_the_other_records_are_read() {
     let out = plc(&["alarms", &segment, "--history"]);
     assert!(out.status.success(), "{}", stderr(&out));
     let (history, warning) = (stdout(&out), stderr(&out));
-    assert!(warning.contains("is damaged") && warning.contains("skipped"), "{warning}");
+    assert!(
+        warning.contains("is damaged") && warning.contains("skipped"),
+        "{warning}"
+    );
     assert!(history.contains("raised active") && history.contains("returned to normal"));
     assert!(!history.contains("acknowledged by"), "{history}");
     let _ = std::fs::remove_dir_all(&dir);

@@ -35,7 +35,10 @@ impl Marks {
     pub fn new(seg: &DynSegment) -> Marks {
         let mut alarm_leaves: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
         for (n, a) in seg.alarms().iter().enumerate() {
-            alarm_leaves.entry((a.variable, a.leaf)).or_default().push(n);
+            alarm_leaves
+                .entry((a.variable, a.leaf))
+                .or_default()
+                .push(n);
         }
         Marks {
             alarm_vars: alarm_leaves.keys().map(|&(v, _)| v).collect(),
