@@ -440,9 +440,14 @@ fn the_runtime_cycles_on_the_dc_time_while_the_reference_clock_drifts() {
         offsets.len(),
         beyond.len()
     );
+    // The control is that the lock's own criteria fail without it. How many free cycles
+    // happen to fall near the shift depends on where the sweep starts (a CI run once had 66 %
+    // near, against a bound of 60 % this assertion used to have): what cannot happen is the
+    // whole run staying within the bounds while the phase sweeps 0.72 ms.
+    let meets_the_lock = offsets.len() >= 50 && beyond.is_empty() && near * 10 >= offsets.len() * 9;
     assert!(
-        offsets.len() >= 50 && near * 10 < offsets.len() * 6,
-        "without the lock {near} of {} cycles on time were near the shift: {offsets:?}",
+        !meets_the_lock,
+        "without the lock the cycles kept their phase ({near} of {} on time near the shift,          none beyond {PHASE_BOUND_NS} ns): the test cannot tell a lock from none: {offsets:?}",
         offsets.len()
     );
 }
