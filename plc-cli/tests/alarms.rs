@@ -70,6 +70,16 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
     let all = alarms(&segment, &["--all"]);
     let door = line_of(&all, "guard_door_open").expect("declared");
     assert!(door.contains("900") && door.contains("normal") && door.contains("Guard door open"));
+    // The running program's declaration exports its alarms, as `plc import` reads them.
+    let export = stdout(&plc(&["export", &segment]));
+    let list: serde_json::Value = serde_json::from_str(&export).unwrap();
+    assert_eq!(
+        list["variables"]["guard_door_open"]["alarm"]["text"], "Guard door open",
+        "{export}"
+    );
+    assert_eq!(list["variables"]["force_kn"]["alarm"]["high_high"], 16.0);
+    let csv = stdout(&plc(&["export", &segment, "--csv"]));
+    assert!(csv.lines().next().unwrap().contains("alarm"), "{csv}");
 
     assert!(
         plc(&["force", &segment, "guard_door_open=true"])

@@ -10,7 +10,8 @@ use plc_shm::{LayoutDescriptor, VarDescriptor};
 use serde_json::{Map, Value, json};
 
 /// The JSON variable list of a descriptor: a `types` section with each structure type once
-/// (by its type name, members before the types that use them), then the variables.
+/// (by its type name, members before the types that use them), then the variables, each with
+/// its `"alarm"` if it declares one.
 ///
 /// Fails if two structured variables give one type name different members (two structure
 /// types declared with the same `name`), naming both, or on a descriptor that nests
@@ -26,7 +27,9 @@ pub fn descriptor_to_json(desc: &LayoutDescriptor) -> Result<Value, String> {
         list.insert("types".into(), Value::Object(types.json));
     }
     list.insert("variables".into(), Value::Object(vars));
-    Ok(Value::Object(list))
+    let mut list = Value::Object(list);
+    super::export_alarms::add(&mut list, &desc.variables, &desc.alarms);
+    Ok(list)
 }
 
 /// The structure types met so far: their JSON, and the variable each was first seen in (for
@@ -170,11 +173,9 @@ pub fn export_json<T: GlobalMemory>() -> Result<String, String> {
     serde_json::to_string_pretty(&type_to_json::<T>()?).map_err(|e| e.to_string())
 }
 
-/// The list of a compiled type: its descriptor's, and its alarms, which only the type has.
+/// The list of a compiled type: its descriptor's, alarms included.
 fn type_to_json<T: GlobalMemory>() -> Result<Value, String> {
-    let mut value = descriptor_to_json(&LayoutDescriptor::of::<T>())?;
-    super::export_alarms::add(&mut value, T::VARIABLES, T::ALARMS);
-    Ok(value)
+    descriptor_to_json(&LayoutDescriptor::of::<T>())
 }
 
 /// The CSV variable list of a descriptor: the columns of [`COLUMNS`](super::COLUMNS) (and
