@@ -78,12 +78,29 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
         "rpm"
     );
     assert!(metric(&dbirth, "speed_setpoint")["properties"]["engUnit"].is_null());
-    // The program's alarm counts (this one declares none), read-only.
+    // The program's alarm counts (its one alarm is normal), read-only, and the alarm's own
+    // metrics.
     for name in ["Alarms/Active", "Alarms/Unacknowledged"] {
         let m = metric(&dbirth, name);
         assert_eq!((&m["datatype"], &m["value"]), (&json!("UINT64"), &json!(0)));
         assert_eq!(m["properties"]["readOnly"], true, "{name}");
     }
+    let state = metric(&dbirth, "Alarms/speed_actual/State");
+    assert_eq!(
+        (&state["datatype"], &state["value"]),
+        (&json!("STRING"), &json!("normal"))
+    );
+    assert_eq!(state["properties"]["description"], "Overspeed");
+    assert_eq!(state["properties"]["severity"], 700);
+    let active = metric(&dbirth, "Alarms/speed_actual/Active");
+    assert_eq!(
+        (&active["datatype"], &active["value"]),
+        (&json!("BOOLEAN"), &json!(false))
+    );
+    assert_eq!(
+        metric(&dbirth, "Alarms/speed_actual/Acknowledged")["value"],
+        true
+    );
     assert_eq!(
         metric(&dbirth, "inputs")["properties"]["description"],
         "Digital inputs"
@@ -123,6 +140,26 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
     assert!(plc(&["set", &seg, "speed_setpoint=250"]).status.success());
     host.expect("DDATA of speed_setpoint", |v| {
         v["type"] == "DDATA" && has_metric(v, "speed_setpoint", &json!(250))
+    });
+    // Overspeed: the alarm's metrics change with it, and back.
+    assert!(plc(&["set", &seg, "speed_setpoint=1500"]).status.success());
+    host.expect("DDATA of the raised alarm", |v| {
+        v["type"] == "DDATA"
+            && has_metric(v, "Alarms/speed_actual/Active", &json!(true))
+            && has_metric(
+                v,
+                "Alarms/speed_actual/State",
+                &json!("high, active unacknowledged"),
+            )
+    });
+    assert!(plc(&["set", &seg, "speed_setpoint=250"]).status.success());
+    host.expect("DDATA of the alarm's return", |v| {
+        v["type"] == "DDATA"
+            && has_metric(
+                v,
+                "Alarms/speed_actual/State",
+                &json!("returned to normal unacknowledged"),
+            )
     });
 
     // A rebirth request: births again, same bdSeq, seq from 0.
@@ -198,6 +235,14 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
         2,
         "the alarm counts (Alarms/Active, Alarms/Unacknowledged) are read-only",
     );
+    host.send(json!({"op": "dcmd", "node": "line1", "device": seg,
+                     "name": "Alarms/speed_actual/Acknowledged", "datatype": "BOOLEAN",
+                     "value": true}));
+    wait_log(
+        &dir,
+        2,
+        "the alarms' metrics (`Alarms/<path>/...`) are read-only",
+    );
     host.send(
         json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "fill": 100}),
     );
@@ -209,12 +254,13 @@ fn an_independent_host_sees_births_data_commands_and_deaths_with_their_bd_seq() 
                      "hex": "0a03", "count": 1000}),
     );
     let flood = started.elapsed();
-    // The log shows at most 10 lines in 10 s; the first after that window counts them all.
+    // The log shows at most 10 lines in 10 s; the first after that window counts them all
+    // (the 1,000, the 6 refused above and this one).
     std::thread::sleep(Duration::from_secs(10));
     host.send(
         json!({"op": "raw", "topic": format!("spBv1.0/plant/DCMD/line1/{seg}"), "hex": "ff"}),
     );
-    wait_log(&dir, 2, "(1006 refused so far)");
+    wait_log(&dir, 2, "(1007 refused so far)");
     eprintln!("1000 malformed commands sent in {flood:?}");
     assert_eq!(get(&seg, "serial"), "7");
     assert_eq!(get(&seg, "speed_setpoint"), "333");

@@ -254,14 +254,17 @@ fn csv_export_and_import_agree_with_json() {
     let csv = plc(&["export", &owner.segment, "--csv"]);
     assert!(csv.status.success(), "{}", stderr(&csv));
     let table = stdout(&csv);
+    // The program declares an alarm: the alarm columns follow the others, and its row
+    // fills them.
     assert!(
-        table.starts_with("name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband\r\n"),
+        table.starts_with("name,type,direction,link,description,initial,source,bit,max_length,nonvolatile,read_only,at,dims,ux,quantity,unit,deadband,alarm,alarm_severity,"),
         "{table}"
     );
     assert!(
-        table.contains("\r\nrecipe,string,command,,,none,,,16,,,,,,,,\r\n"),
+        table.contains("\r\nrecipe,string,command,,,none,,,16,,,,,,,,,,,,,,,,,,,\r\n"),
         "{table}"
     );
+    assert!(table.contains(",rpm,50.0,Overspeed,700,"), "{table}");
     let json = plc(&["export", &owner.segment]);
     // One file name in two folders, so the generated comments are the same too; no `.csv`
     // ending, so `--csv` is what makes it read as CSV.

@@ -1,8 +1,7 @@
 //! The program's alarm counts, from its status block, as two read-only metrics of its device
 //! after its variables: `Alarms/Active` and `Alarms/Unacknowledged` (UInt64). A host shows
 //! them as a folder `Alarms`; no variable's path holds a `/`, so they never meet a variable.
-//! Each alarm's own state is not among the metrics yet: the runtime keeps it in the program's
-//! process, where no tool reads it.
+//! Each alarm's own metrics follow them ([`alarm_states`](crate::alarm_states)).
 
 use crate::metric::{DataType, bool_property, string_property};
 use crate::proto::{Metric, MetricValue, PropertySet};

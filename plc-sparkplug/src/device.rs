@@ -2,10 +2,11 @@
 //! path), what was last sent of each, and its births, data and commands.
 
 use crate::alarm_counts::{self, Counts};
+use crate::alarm_states;
 use crate::metric::{self, DataType};
 use crate::proto::{Metric, Payload};
 use plc_core::Value;
-use plc_shm::{DynSegment, OwnerState, PathLocation, PathTarget};
+use plc_shm::{AlarmEntry, DynSegment, OwnerState, PathLocation, PathTarget};
 use std::time::{Duration, Instant, SystemTime};
 
 /// At most this many metrics per device: a birth of more would not fit a broker's message
@@ -40,6 +41,8 @@ pub struct Device {
     last_cycle: u64,
     /// The alarm counts last sent.
     alarms_sent: Counts,
+    /// Each alarm's state last sent.
+    states_sent: Vec<AlarmEntry>,
 }
 
 /// Milliseconds since the Unix epoch now.
@@ -68,6 +71,7 @@ impl Device {
             entries,
             last_cycle: u64::MAX,
             alarms_sent: [0; 2],
+            states_sent: Vec::new(),
         })
     }
 
@@ -123,6 +127,14 @@ impl Device {
         }
         metrics.extend(alarm_counts::birth(alarms, self.entries.len(), ts));
         self.alarms_sent = alarms;
+        let states = self.alarm_states()?;
+        metrics.extend(alarm_states::birth(
+            self.seg.alarms(),
+            &states,
+            self.first_state_alias(),
+            ts,
+        ));
+        self.states_sent = states;
         Ok(Payload {
             timestamp: Some(now_ms()),
             metrics,
@@ -188,6 +200,15 @@ impl Device {
             historical,
         ));
         self.alarms_sent = alarms;
+        let states = self.alarm_states()?;
+        metrics.extend(alarm_states::changed(
+            self.seg.alarms(),
+            &states,
+            &self.states_sent,
+            self.first_state_alias(),
+            historical,
+        ));
+        self.states_sent = states;
         Ok((!metrics.is_empty()).then(|| Payload {
             timestamp: Some(now_ms()),
             metrics,
@@ -215,6 +236,13 @@ impl Device {
                     alarm_counts::NAMES.join(", ")
                 ));
             }
+            if self.is_alarm_state(m) {
+                return Err(
+                    "the alarms' metrics (`Alarms/<path>/...`) are read-only: an \
+                            operator acknowledges with `plc ack` or over OPC UA"
+                        .into(),
+                );
+            }
             let entry = self.find(m)?;
             let value = metric::from_payload(entry.at.var.iec_type, m.value.as_ref())
                 .map_err(|e| format!("metric `{}`: {e}", entry.at.path))?;
@@ -236,6 +264,28 @@ impl Device {
             .write_checked(&checked)
             .map_err(|e| e.to_string())?;
         Ok(checked.len())
+    }
+
+    /// Every alarm's state, as the segment's table holds it.
+    fn alarm_states(&self) -> Result<Vec<AlarmEntry>, String> {
+        self.seg.alarm_states().map_err(|e| e.to_string())
+    }
+
+    /// The alias of the first alarm's first metric: after the variables and the counts.
+    fn first_state_alias(&self) -> usize {
+        self.entries.len() + alarm_counts::NAMES.len()
+    }
+
+    /// Whether a command's metric names an alarm's metric (by alias past the counts, or by a
+    /// name under `Alarms/`, where no variable's path lies).
+    fn is_alarm_state(&self, m: &Metric) -> bool {
+        let first = self.first_state_alias() as u64;
+        let count = (self.seg.alarms().len() * alarm_states::PER_ALARM) as u64;
+        match (m.alias, &m.name) {
+            (Some(a), _) => a >= first && a < first + count,
+            (None, Some(n)) => n.starts_with("Alarms/"),
+            (None, None) => false,
+        }
     }
 
     /// The metric a command names: by alias (what hosts send once a birth defined one), else

@@ -17,6 +17,7 @@
 #![deny(missing_docs)]
 
 pub mod alarm_counts;
+pub mod alarm_states;
 pub mod device;
 pub mod forward;
 pub mod metric;

@@ -78,26 +78,11 @@ fn row(a: &AlarmDescriptor, s: &AlarmEntry) -> [String; 5] {
     [
         a.severity.to_string(),
         escape_text(&a.path),
-        state_text(a, s),
+        s.state_text(a),
         match s.since_ns {
             ..=0 => "-".to_string(),
             ns => utc_text(ns as u64),
         },
         escape_text(&a.text),
     ]
-}
-
-/// `high-high, active unacknowledged`, `active acknowledged`, `shelved until ...`.
-pub fn state_text(a: &AlarmDescriptor, s: &AlarmEntry) -> String {
-    let state = match (s.state, s.shelved_until_ns) {
-        (AlarmState::Shelved, Some(until)) => {
-            format!("shelved until {}", utc_text(until.max(0) as u64))
-        }
-        (state, _) => state.name().to_string(),
-    };
-    if a.is_limit() && s.active() {
-        format!("{}, {state}", s.level)
-    } else {
-        state
-    }
 }

@@ -19,8 +19,14 @@ pub struct Gm {
     pub door_closed: bool,
     #[plc(direction = "command", initial = 100)]
     pub speed_setpoint: u16,
-    /// Follows the setpoint; its own reporting deadband (the Sparkplug tests).
-    #[plc(direction = "status", unit = "rpm", deadband = 50)]
+    /// Follows the setpoint; its own reporting deadband and an overspeed alarm (the Sparkplug
+    /// tests).
+    #[plc(
+        direction = "status",
+        unit = "rpm",
+        deadband = 50,
+        alarm(text = "Overspeed", high = 1000.0, severity = 700)
+    )]
     pub speed_actual: u16,
     #[plc(read_only, initial = 7)]
     pub serial: u32,

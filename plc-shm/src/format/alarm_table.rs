@@ -12,6 +12,8 @@
 //! is an alarm that is normal and was never raised, as a new segment's table is. A state
 //! or level code no release knows is a damaged table, reported, never guessed at.
 
+use super::alarm_descriptor::AlarmDescriptor;
+use crate::calendar::utc_text;
 use crate::sys::base::Base;
 use plc_core::alarm::{AlarmState, Level};
 use std::sync::atomic::{Ordering, fence};
@@ -79,6 +81,22 @@ impl AlarmEntry {
     /// Whether it is active: raised, or latched and waiting for its reset.
     pub fn active(&self) -> bool {
         self.level != Level::Normal
+    }
+
+    /// Its state as tools show it: `high-high, active unacknowledged` (a limit alarm's level
+    /// first), `active acknowledged`, `shelved until 2026-12-05 15:00:00 UTC`.
+    pub fn state_text(&self, alarm: &AlarmDescriptor) -> String {
+        let state = match (self.state, self.shelved_until_ns) {
+            (AlarmState::Shelved, Some(until)) => {
+                format!("shelved until {}", utc_text(until.max(0) as u64))
+            }
+            (state, _) => state.name().to_string(),
+        };
+        if alarm.is_limit() && self.active() {
+            format!("{}, {state}", self.level)
+        } else {
+            state
+        }
     }
 
     fn encode(&self) -> [u64; WORDS] {
