@@ -72,18 +72,43 @@ fn a_rate_too_small_for_a_period_is_refused_not_a_panic() {
 
 #[test]
 fn list_shows_a_killed_programs_leftover_instead_of_hiding_it() {
-    let mut owner = Owner::start("killedlist");
-    owner.child.signal(libc::SIGKILL);
-    let _ = owner.child.wait();
-    let o = plc(&["list"]);
+    // A runtime directory of its own: a program that another test starts meanwhile clears
+    // killed owners' leftovers from the directory it creates its segment in.
+    let dir = std::env::temp_dir().join(format!("plc-killedlist-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let segment = format!("cli_killedlist_{}", std::process::id());
+    let env = plc_io::shm::RUNTIME_DIR_ENV;
+    let mut child = std::process::Command::new(std::env::current_exe().unwrap())
+        .args(["owner_role", "--exact", "--nocapture"])
+        .env("PLC_TEST_ROLE", "owner")
+        .env("SEGMENT", &segment)
+        .env(env, &dir)
+        .stdout(std::process::Stdio::null())
+        .spawn_guarded()
+        .unwrap();
+    let plc_here = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_plc"))
+            .args(args)
+            .env(env, &dir)
+            .output_guarded()
+            .unwrap()
+    };
+    wait_until("the owner to start", || {
+        plc_here(&["get", &segment, "counter"]).status.success()
+    });
+    child.signal(libc::SIGKILL);
+    let _ = child.wait();
+    let o = plc_here(&["list"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let out = stdout(&o);
     let line = out
         .lines()
-        .find(|l| l.starts_with(&owner.segment))
+        .find(|l| l.starts_with(&segment))
         .unwrap_or_else(|| panic!("not listed:\n{out}"));
     assert!(line.contains("gone"), "{out}");
     assert!(out.contains("is gone; restart it"), "{out}");
+    drop(child);
+    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
