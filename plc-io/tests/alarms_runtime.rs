@@ -364,3 +364,52 @@ fn a_flood_of_500_alarms_toggling_every_cycle_holds_memory_and_is_summarised() {
     assert!(counted > 0, "the journal says how many it summarised");
     assert!(contents.records().len() <= alarm_journal::DEFAULT_CAPACITY);
 }
+
+#[test]
+fn the_longest_shelf_and_the_journals_size_are_the_programs_and_checked_when_built() {
+    let refused = |b: plc_io::RuntimeBuilder<Plant>, wanted: &str| {
+        let e = b.build().err().expect("refused").to_string();
+        assert!(e.contains(wanted), "{e}");
+    };
+    refused(
+        Runtime::<Plant>::builder().alarm_journal_capacity(0),
+        "alarm_journal_capacity",
+    );
+    refused(
+        Runtime::<Plant>::builder().max_shelve(plc_core::Time::from_secs(0)),
+        "max_shelve",
+    );
+    refused(
+        Runtime::<Plant>::builder().max_shelve(plc_core::Time::from_secs(31 * 86_400)),
+        "at most 30 days",
+    );
+    // A program that allows one hour refuses two, and takes one.
+    let outcome = Arc::new(Mutex::new(Vec::new()));
+    let seen = outcome.clone();
+    Runtime::<Plant>::builder()
+        .period(Duration::from_millis(1))
+        .max_shelve(plc_core::Time::from_secs(3600))
+        .max_cycles(3)
+        .handle_signals(false)
+        .build()
+        .unwrap()
+        .run(move |ctx| {
+            if ctx.cycle == 2 {
+                let by = || Operator::new(None, "anna");
+                let mut out = seen.lock().unwrap();
+                for secs in [7200, 3600] {
+                    let r = ctx
+                        .alarms_mut()
+                        .shelve("door", plc_core::Time::from_secs(secs), by());
+                    out.push(r.map_err(|e| e.to_string()));
+                }
+            }
+        })
+        .unwrap();
+    let outcome = outcome.lock().unwrap();
+    assert!(
+        outcome[0].as_ref().is_err_and(|e| e.contains("at most")),
+        "{outcome:?}"
+    );
+    assert_eq!(outcome[1], Ok(()));
+}

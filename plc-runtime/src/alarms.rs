@@ -173,6 +173,12 @@ impl RuntimeAlarms {
         self.recount = true;
     }
 
+    /// Operators may shelve an alarm for at most `max`.
+    pub(crate) fn set_max_shelve(&mut self, max: Time) {
+        let alarms = std::mem::replace(&mut self.alarms, Alarms::new([]));
+        self.alarms = alarms.with_max_shelve(max);
+    }
+
     /// Transitions go to the journal through `sender` from now on.
     pub(crate) fn attach(&mut self, sender: JournalSender) {
         self.sender = Some(sender);

@@ -82,7 +82,7 @@ where
             (Some(_), Some(path)) => s
                 .sharing
                 .clone()
-                .alarm_history(std::path::absolute(&path).unwrap_or(path)),
+                .alarm_history(std::path::absolute(&path).unwrap_or(path), s.alarm_capacity),
             _ => s.sharing.clone(),
         };
         let shm = match &s.segment {
@@ -374,12 +374,13 @@ where
     T::Image: Send,
 {
     let mut alarms = RuntimeAlarms::of::<T>().map_err(RuntimeError::Alarm)?;
+    alarms.set_max_shelve(s.max_shelve);
     let path = match s.alarm_journal_path() {
         Some(path) if !alarms.is_empty() => path,
         _ => return Ok((alarms, None)),
     };
-    let journal = AlarmJournal::open(&path, crate::alarm_journal::DEFAULT_CAPACITY)
-        .map_err(RuntimeError::AlarmJournal)?;
+    let journal =
+        AlarmJournal::open(&path, s.alarm_capacity).map_err(RuntimeError::AlarmJournal)?;
     alarms.restore(journal.contents().states(), &path);
     alarms.attach(journal.sender(alarms.path_table()));
     Ok((alarms, Some(journal)))

@@ -137,6 +137,8 @@ pub struct RuntimeBuilder<T> {
     retain: Option<PathBuf>,
     retain_interval: Duration,
     alarm_journal: Option<PathBuf>,
+    alarm_capacity: usize,
+    max_shelve: plc_core::Time,
     backend: Box<dyn IoBackend<T> + Send>,
     realtime: Option<i32>,
     cpu: Option<usize>,
@@ -184,6 +186,8 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
             retain: None,
             retain_interval: Duration::from_millis(1000),
             alarm_journal: None,
+            alarm_capacity: alarm_journal::DEFAULT_CAPACITY,
+            max_shelve: plc_core::alarm::DEFAULT_MAX_SHELVE,
             backend: Box::new(NoIo),
             realtime: None,
             cpu: None,
@@ -259,6 +263,18 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
     /// no journal.
     pub fn alarm_journal(mut self, path: impl Into<PathBuf>) -> Self {
         self.alarm_journal = Some(path.into());
+        self
+    }
+    /// Keeps the last `records` records in the alarm journal (default 10,000): older ones are
+    /// dropped and counted, never an unacknowledged alarm's state. 1 to 10,000,000.
+    pub fn alarm_journal_capacity(mut self, records: usize) -> Self {
+        self.alarm_capacity = records;
+        self
+    }
+    /// Lets operators shelve an alarm for at most `max` (default 8 hours: a shelved alarm is
+    /// one nobody sees, so the shelf ends by itself). More than 0, at most 30 days.
+    pub fn max_shelve(mut self, max: plc_core::Time) -> Self {
+        self.max_shelve = max;
         self
     }
     /// The I/O backend (default: none).
@@ -345,6 +361,21 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
         self.backend
             .check_period(self.period)
             .map_err(RuntimeError::Io)?;
+        if !(1..=10_000_000).contains(&self.alarm_capacity) {
+            return Err(RuntimeError::Alarm(format!(
+                "an alarm journal of {} records: keep 1 to 10,000,000 \
+                 (`RuntimeBuilder::alarm_journal_capacity`)",
+                self.alarm_capacity
+            )));
+        }
+        let month = plc_core::Time::from_secs(30 * 86_400);
+        if self.max_shelve.as_nanos() <= 0 || self.max_shelve > month {
+            return Err(RuntimeError::Alarm(format!(
+                "a longest shelf of {}: give more than 0 and at most 30 days \
+                 (`RuntimeBuilder::max_shelve`)",
+                self.max_shelve
+            )));
+        }
         if !T::ALARMS.is_empty() && self.alarm_journal_path().is_none() {
             log::warn!(target: "plc_io::runtime",
                 "segment `{segment}`: the program's {} alarms are evaluated, but their history \

@@ -18,7 +18,13 @@ pub fn print(seg: &DynSegment, since: Option<&str>) -> Result<(), Error> {
         )
         .into());
     };
-    let contents = read_journal(path, DEFAULT_CAPACITY)
+    // The capacity the program keeps: a larger journal's file would be refused as too large.
+    let capacity = seg
+        .descriptor()
+        .alarm_journal_capacity
+        .unwrap_or(DEFAULT_CAPACITY)
+        .clamp(1, 10_000_000);
+    let contents = read_journal(path, capacity)
         .map_err(|e| format!("segment `{}`: {e}", seg.name()))?
         .ok_or_else(|| {
             format!(
@@ -39,7 +45,7 @@ pub fn print(seg: &DynSegment, since: Option<&str>) -> Result<(), Error> {
     }
     if contents.dropped() > 0 {
         println!(
-            "({} older records were dropped: the journal keeps the last {DEFAULT_CAPACITY})",
+            "({} older records were dropped: the journal keeps the last {capacity})",
             contents.dropped()
         );
     }

@@ -227,6 +227,9 @@ pub struct LayoutDescriptor {
     /// keeps one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub alarm_journal: Option<String>,
+    /// How many records that journal keeps.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub alarm_journal_capacity: Option<usize>,
 }
 
 impl LayoutDescriptor {
@@ -239,6 +242,7 @@ impl LayoutDescriptor {
             variables: T::VARIABLES.iter().map(VarDescriptor::from).collect(),
             alarms: AlarmDescriptor::all(T::VARIABLES, T::ALARMS),
             alarm_journal: None,
+            alarm_journal_capacity: None,
         }
     }
 
@@ -380,6 +384,7 @@ mod tests {
             image_size,
             alarms: Vec::new(),
             alarm_journal: None,
+            alarm_journal_capacity: None,
             variables,
         }
     }

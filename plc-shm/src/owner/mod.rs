@@ -78,9 +78,10 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let name = rundir::normalise(name)?;
         let policy = Policy::resolve(&name, sharing)?;
         let mut desc = LayoutDescriptor::of::<T>();
-        desc.alarm_journal = sharing
-            .alarm_history_path()
-            .map(|p| p.display().to_string());
+        if let Some((path, records)) = sharing.alarm_history_file() {
+            desc.alarm_journal = Some(path.display().to_string());
+            desc.alarm_journal_capacity = Some(records);
+        }
         let json = serde_json::to_vec(&desc).map_err(|e| ShmError::Corrupt {
             name: name.clone(),
             why: e.to_string(),

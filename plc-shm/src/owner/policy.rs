@@ -21,7 +21,7 @@ use crate::sys::unix::Peer;
 pub struct Sharing {
     read_group: Option<String>,
     write_group: Option<String>,
-    alarm_history: Option<std::path::PathBuf>,
+    alarm_history: Option<(std::path::PathBuf, usize)>,
 }
 
 impl Sharing {
@@ -43,16 +43,17 @@ impl Sharing {
         self
     }
 
-    /// Tells tools where the program keeps its alarm history (`plc alarms --history` reads
-    /// it there; the file keeps its own owner and mode, so only those who may read it do).
-    pub fn alarm_history(mut self, path: impl Into<std::path::PathBuf>) -> Sharing {
-        self.alarm_history = Some(path.into());
+    /// Tells tools where the program keeps its alarm history, and how many records it keeps
+    /// (`plc alarms --history` reads it there; the file keeps its own owner and mode, so only
+    /// those who may read it do).
+    pub fn alarm_history(mut self, path: impl Into<std::path::PathBuf>, records: usize) -> Sharing {
+        self.alarm_history = Some((path.into(), records));
         self
     }
 
-    /// Where the alarm history is, if the program said.
-    pub fn alarm_history_path(&self) -> Option<&std::path::Path> {
-        self.alarm_history.as_deref()
+    /// Where the alarm history is and how many records it keeps, if the program said.
+    pub fn alarm_history_file(&self) -> Option<(&std::path::Path, usize)> {
+        self.alarm_history.as_ref().map(|(p, n)| (p.as_path(), *n))
     }
 
     /// The read group's name, if any.
