@@ -7,7 +7,8 @@
 //! `cycle_10k`, `derive`, `tools`, `opcua` and `sparkplug` compile generated crates: their first run takes
 //! minutes.
 //! `--full` adds the opt-in group `cycle_100k` (a 100,000-variable crate: its build takes far
-//! longer than CI can spend), which `--only cycle_100k` also names.
+//! longer than CI can spend), which `--only cycle_100k` also names, and makes the `alarms`
+//! group's flood the minute instead of 5 s.
 
 use plc_bench::cycle::{FrameworkCycle, HandCycle, MemcpyFloor, runtime_vs_memcpy};
 use plc_bench::derive_check::{Crate, Flavour};
@@ -122,7 +123,11 @@ fn main() {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("commissioning: {e}")),
             },
-            "alarms" => match plc_bench::alarms::run(cycle_batches) {
+            "alarms" => match plc_bench::alarms::run(plc_bench::alarms::Scale::of(
+                quick,
+                full,
+                cycle_batches,
+            )) {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("alarms: {e}")),
             },
