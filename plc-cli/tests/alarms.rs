@@ -171,6 +171,13 @@ fn a_forced_guard_door_is_listed_watched_acknowledged_and_kept_across_a_kill() {
         line_of(&alarms(&segment, &[]), "guard_door_open")
             .is_some_and(|l| l.contains("returned to normal unacknowledged"))
     });
+    // The return, in this run, reaches the journal within a second too.
+    wait_until("the return in the history", || {
+        alarms(&segment, &["--history"])
+            .lines()
+            .last()
+            .is_some_and(|l| l.contains("returned to normal"))
+    });
     let history = alarms(&segment, &["--history"]);
     let events: Vec<&str> = history
         .lines()

@@ -2,6 +2,7 @@
 //! [`read_journal`], reading one without writing (a tool showing a running program's history).
 
 use super::file::{self, JournalFile};
+use super::handoff::Handoff;
 use super::read::Contents;
 use super::writer::{Counters, JournalSender, Msg, Writer};
 use super::{DEFAULT_CAPACITY, JournalError};
@@ -57,7 +58,10 @@ impl Default for JournalOptions {
 /// # Ok::<(), plc_runtime::alarm_journal::JournalError>(())
 /// ```
 pub struct AlarmJournal {
+    /// Flushes and the stop.
     tx: Option<mpsc::SyncSender<Msg>>,
+    /// Transitions and actions, from the cycle.
+    queue: Arc<Handoff>,
     counters: Arc<Counters>,
     thread: Option<JoinHandle<Result<(), JournalError>>>,
     path: PathBuf,
@@ -92,10 +96,12 @@ impl AlarmJournal {
         };
         let (file, contents) = JournalFile::open(path, options.capacity)?;
         contents.log(path);
-        let (tx, rx) = mpsc::sync_channel(options.queue);
+        let (tx, rx) = mpsc::sync_channel(16);
+        let queue = Arc::new(Handoff::new(options.queue));
         let counters = Arc::new(Counters::new());
         let writer = Writer {
             file,
+            queue: queue.clone(),
             rx,
             counters: counters.clone(),
             options,
@@ -115,6 +121,7 @@ impl AlarmJournal {
             })?;
         Ok(AlarmJournal {
             tx: Some(tx),
+            queue,
             counters,
             thread: Some(thread),
             path: path.to_owned(),
@@ -136,8 +143,7 @@ impl AlarmJournal {
     /// A sender for the cycle, for alarms named by `paths` in the evaluator's order.
     pub fn sender(&self, paths: impl Into<Arc<[String]>>) -> JournalSender {
         JournalSender {
-            // Only `None` after `finish`, which takes `self`.
-            tx: self.tx.clone().expect("the journal is running"),
+            queue: self.queue.clone(),
             paths: paths.into(),
             counters: self.counters.clone(),
         }

@@ -80,6 +80,7 @@
 mod display;
 mod file;
 mod frame;
+mod handoff;
 mod journal;
 mod read;
 mod record;

@@ -1,17 +1,23 @@
-//! The writer thread: takes transitions from a bounded queue, appends them to the file in
-//! batches, syncs at most once per interval (and at stop), compacts when the file is full.
-//! The cycle's side ([`JournalSender`]) never blocks: when the queue is full a transition is
-//! counted, and the next batch records the count ([`Entry::Summarised`]).
+//! The writer thread: takes transitions from a bounded queue (the [`Handoff`], looked at
+//! every [`POLL`]), appends them to the file in batches, syncs at most once per interval (and
+//! at stop), compacts when the file is full; flushes and the stop come on a channel of their
+//! own. The cycle's side ([`JournalSender`]) never waits: when the queue is full a transition
+//! is counted, and the next batch records the count ([`Entry::Summarised`]).
 
 use super::file::JournalFile;
 use super::frame::{Item, encode};
+use super::handoff::Handoff;
 use super::record::{Entry, MAX_PATH, Operator, Record, bounded};
 use super::{JournalError, JournalOptions};
 use plc_core::alarm::AlarmEvent;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
-use std::sync::mpsc::{Receiver, RecvTimeoutError, SyncSender, TrySendError};
+use std::sync::mpsc::{Receiver, RecvTimeoutError, SyncSender};
 use std::time::{Duration, Instant};
+
+/// How often the writer takes what the cycle queued: each transition is on disk well within
+/// a second, and an idle writer wakes 20 times a second for a look at an empty vector.
+pub(super) const POLL: Duration = Duration::from_millis(50);
 
 /// What goes through the queue. An evaluator's transition is plain data and the path table is
 /// shared, so handing one over allocates nothing.
@@ -26,7 +32,7 @@ pub(super) enum Msg {
         event: AlarmEvent,
         by: Box<Operator>,
     },
-    /// Answer once everything before is on disk.
+    /// Answer once everything before is on disk (on the control channel).
     Flush(SyncSender<()>),
     Stop,
 }
@@ -85,7 +91,7 @@ impl Counters {
 /// ```
 #[derive(Clone)]
 pub struct JournalSender {
-    pub(super) tx: SyncSender<Msg>,
+    pub(super) queue: Arc<Handoff>,
     pub(super) paths: Arc<[String]>,
     pub(super) counters: Arc<Counters>,
 }
@@ -99,7 +105,7 @@ impl JournalSender {
             event: *event,
             value,
         };
-        if let Err(TrySendError::Full(_) | TrySendError::Disconnected(_)) = self.tx.try_send(msg) {
+        if self.queue.offer(msg).is_err() {
             self.counters.count(false, event.time_ns);
         }
     }
@@ -112,7 +118,7 @@ impl JournalSender {
             event: *event,
             by: Box::new(by),
         };
-        if self.tx.try_send(msg).is_err() {
+        if self.queue.offer(msg).is_err() {
             self.counters.count(true, event.time_ns);
         }
     }
@@ -138,6 +144,9 @@ struct Out {
 /// The writer thread's state.
 pub(super) struct Writer {
     pub file: JournalFile,
+    /// Transitions and actions, from the cycle.
+    pub queue: Arc<Handoff>,
+    /// Flushes and the stop.
     pub rx: Receiver<Msg>,
     pub counters: Arc<Counters>,
     pub options: JournalOptions,
@@ -160,12 +169,14 @@ impl Writer {
         };
         let mut window = (Instant::now(), 0usize);
         let mut flushes = Vec::new();
+        let mut taken = Vec::with_capacity(self.options.queue);
         loop {
             let wait = if out.dirty {
                 (out.last_sync + interval).saturating_duration_since(Instant::now())
             } else {
-                Duration::from_secs(3600)
-            };
+                POLL
+            }
+            .min(POLL);
             let mut stop = false;
             let first = match self.rx.recv_timeout(wait) {
                 Ok(m) => Some(m),
@@ -175,12 +186,13 @@ impl Writer {
                     None
                 }
             };
-            // What else is queued now, at most a queue's worth: a flood cannot hold the
-            // batch open forever.
+            // The other control messages waiting, then what the cycle queued: everything
+            // queued before a flush was asked for is in it.
             let rest: Vec<Msg> = std::iter::from_fn(|| self.rx.try_recv().ok())
-                .take(self.options.queue)
+                .take(16)
                 .collect();
-            for msg in first.into_iter().chain(rest) {
+            self.queue.take(&mut taken);
+            for msg in first.into_iter().chain(rest).chain(taken.drain(..)) {
                 match msg {
                     Msg::Flush(tx) => flushes.push(tx),
                     Msg::Stop => stop = true,
