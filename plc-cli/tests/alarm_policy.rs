@@ -163,6 +163,10 @@ fn actions_follow_the_write_policy_and_the_alarm_states() {
     assert!(ok(plc_here(&["alarms", s])).contains("shelved until"));
     ok(plc_here(&["unshelve", s, "door_open"]));
     refused(plc_here(&["unshelve", s, "door_open"]), "not shelved");
+    // The journal has each action within a second.
+    wait_until("the unshelve in the history", || {
+        ok(plc_here(&["alarms", s, "--history"])).contains("unshelved")
+    });
     let history = ok(plc_here(&["alarms", s, "--history"]));
     for what in [
         "reset by",
@@ -201,22 +205,13 @@ impl Nobody {
     }
 
     fn plc(&self, args: &[&str]) -> Output {
-        use std::os::unix::process::CommandExt;
-        let mut cmd = Command::new(&self.bin);
-        cmd.args(args).env(plc_io::shm::RUNTIME_DIR_ENV, &self.rt);
-        // SAFETY: only async-signal-safe calls between fork and exec.
-        unsafe {
-            cmd.pre_exec(|| {
-                // In `nogroup` (65534): a reader of the program, not a writer.
-                if libc::setgroups(0, std::ptr::null()) != 0
-                    || libc::setgid(65534) != 0
-                    || libc::setuid(65534) != 0
-                {
-                    return Err(std::io::Error::last_os_error());
-                }
-                Ok(())
-            });
-        }
-        cmd.output_guarded().unwrap()
+        // In `nogroup` (65534): a reader of the program, not a writer.
+        common::as_nobody(
+            Command::new(&self.bin)
+                .args(args)
+                .env(plc_io::shm::RUNTIME_DIR_ENV, &self.rt),
+        )
+        .output_guarded()
+        .unwrap()
     }
 }

@@ -5,35 +5,9 @@
 
 mod common;
 
-use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, wait_until};
+use common::{plc, stderr, stdout, tensile_tester, wait_until};
 use plc_test_support::TmuxSession;
-use std::fs::File;
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-/// The main example's binary, built beside `plc` by `cargo test --workspace`.
-fn tensile_tester(dir: &Path, segment: &str) -> ChildGuard {
-    let bin = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name("tensile_tester");
-    assert!(
-        bin.is_file(),
-        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p examples --bin \
-         tensile_tester` first)",
-        bin.display()
-    );
-    let log = File::create(dir.join("tensile_tester.log")).unwrap();
-    let child = Command::new(bin)
-        .args(["--segment", segment])
-        .arg("--retain")
-        .arg(dir.join("retain"))
-        .stdout(log.try_clone().unwrap())
-        .stderr(log)
-        .spawn_guarded()
-        .unwrap();
-    wait_until("the tensile tester to start", || {
-        plc(&["get", segment, "state_cycles"]).status.success()
-    });
-    child
-}
+use std::path::PathBuf;
 
 fn scratch(test: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("plc-alarms-{test}-{}", std::process::id()));

@@ -261,7 +261,6 @@ fn set_by_a_user_the_program_does_not_let_write_reports_the_rule() {
         eprintln!("skipped: switching to another uid needs root");
         return;
     }
-    use std::os::unix::process::CommandExt;
     let base = std::env::temp_dir().join(format!("plc-cli-policy-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&base);
     std::fs::create_dir(&base).unwrap();
@@ -282,21 +281,13 @@ fn set_by_a_user_the_program_does_not_let_write_reports_the_rule() {
     let plc_bin =
         plc_test_support::install_executable(env!("CARGO_BIN_EXE_plc").as_ref(), &base).unwrap();
     let as_nobody = |args: &[&str]| {
-        let mut cmd = Command::new(&plc_bin);
-        cmd.args(args).env(plc_io::shm::RUNTIME_DIR_ENV, &dir);
-        // SAFETY: only async-signal-safe calls between fork and exec.
-        unsafe {
-            cmd.pre_exec(|| {
-                if libc::setgroups(0, std::ptr::null()) != 0
-                    || libc::setgid(65534) != 0
-                    || libc::setuid(65534) != 0
-                {
-                    return Err(std::io::Error::last_os_error());
-                }
-                Ok(())
-            });
-        }
-        cmd.output_guarded().unwrap()
+        common::as_nobody(
+            Command::new(&plc_bin)
+                .args(args)
+                .env(plc_io::shm::RUNTIME_DIR_ENV, &dir),
+        )
+        .output_guarded()
+        .unwrap()
     };
     wait_until("the program to start", || {
         as_nobody(&["get", &segment, "counter"]).status.success()

@@ -7,7 +7,6 @@ mod common;
 use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, terminate, wait_until};
 use plc_core::GlobalMemory;
 use plc_io::Runtime;
-use std::fs::File;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::Duration;
@@ -70,30 +69,12 @@ fn counter(segment: &str, period_us: u64) -> Program {
     p
 }
 
-/// The main example's binary, built beside `plc` by `cargo test --workspace`.
+/// The main example, stopped as Ctrl-C would when dropped, and its log.
 fn tensile_tester(dir: &Path, segment: &str) -> (Program, PathBuf) {
-    let bin = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name("tensile_tester");
-    assert!(
-        bin.is_file(),
-        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p examples --bin \
-         tensile_tester` first)",
-        bin.display()
-    );
-    let log_path = dir.join("tensile_tester.log");
-    let log = File::create(&log_path).unwrap();
-    let child = Command::new(bin)
-        .args(["--segment", segment])
-        .arg("--retain")
-        .arg(dir.join("retain"))
-        .stdout(log.try_clone().unwrap())
-        .stderr(log)
-        .spawn_guarded()
-        .unwrap();
-    let p = Program(child);
-    wait_until("the tensile tester to start", || {
-        plc(&["get", segment, "state_cycles"]).status.success()
-    });
-    (p, log_path)
+    (
+        Program(common::tensile_tester(dir, segment)),
+        dir.join("tensile_tester.log"),
+    )
 }
 
 fn scratch(test: &str) -> PathBuf {

@@ -41,3 +41,47 @@ pub fn wait_until(what: &str, mut f: impl FnMut() -> bool) {
 pub fn terminate(child: &mut ChildGuard) -> bool {
     child.terminate().is_ok_and(|s| s.success())
 }
+
+/// Starts the main example's binary (built beside `plc` by `cargo test --workspace`) as
+/// segment `segment`, its retained values in `dir/retain` and its output in
+/// `dir/tensile_tester.log`, and waits until it runs.
+pub fn tensile_tester(dir: &std::path::Path, segment: &str) -> ChildGuard {
+    let bin = std::path::Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name("tensile_tester");
+    assert!(
+        bin.is_file(),
+        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p examples --bin \
+         tensile_tester` first)",
+        bin.display()
+    );
+    let log = std::fs::File::create(dir.join("tensile_tester.log")).unwrap();
+    let child = Command::new(bin)
+        .args(["--segment", segment])
+        .arg("--retain")
+        .arg(dir.join("retain"))
+        .stdout(log.try_clone().unwrap())
+        .stderr(log)
+        .spawn_guarded()
+        .unwrap();
+    wait_until("the tensile tester to start", || {
+        plc(&["get", segment, "state_cycles"]).status.success()
+    });
+    child
+}
+
+/// Makes `cmd` run as uid and gid 65534 (`nobody`, `nogroup`) with no other groups: a user
+/// outside a program's own, for the write policy's tests (the caller must be root).
+pub fn as_nobody(cmd: &mut Command) -> &mut Command {
+    use std::os::unix::process::CommandExt;
+    // SAFETY: only async-signal-safe calls between fork and exec.
+    unsafe {
+        cmd.pre_exec(|| {
+            if libc::setgroups(0, std::ptr::null()) != 0
+                || libc::setgid(65534) != 0
+                || libc::setuid(65534) != 0
+            {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        })
+    }
+}

@@ -26,6 +26,16 @@ pub enum Level {
 }
 
 impl Level {
+    /// Every level, in this order (a table's code of a level is its place here).
+    pub const ALL: [Level; 6] = [
+        Level::Normal,
+        Level::Active,
+        Level::Low,
+        Level::LowLow,
+        Level::High,
+        Level::HighHigh,
+    ];
+
     /// 0 for normal, 1 for a first level (`active`, `low`, `high`), 2 for a second.
     pub const fn rank(self) -> u8 {
         match self {

@@ -240,16 +240,7 @@ pub(super) fn bounded(text: &str, max: usize) -> String {
 
 /// A level by the name tools show (`high-high`), as plc-core names them.
 pub(super) fn level_by_name(name: &str) -> Option<Level> {
-    [
-        Level::Normal,
-        Level::Active,
-        Level::Low,
-        Level::LowLow,
-        Level::High,
-        Level::HighHigh,
-    ]
-    .into_iter()
-    .find(|l| l.name() == name)
+    Level::ALL.into_iter().find(|l| l.name() == name)
 }
 
 /// Levels written by name (`"high-high"`), as tools show them.

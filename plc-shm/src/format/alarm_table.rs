@@ -141,14 +141,7 @@ const STATES: [AlarmState; 8] = [
 ];
 
 /// The levels by their code on the wire.
-const LEVELS: [Level; 6] = [
-    Level::Normal,
-    Level::Active,
-    Level::Low,
-    Level::LowLow,
-    Level::High,
-    Level::HighHigh,
-];
+const LEVELS: [Level; 6] = Level::ALL;
 
 /// Stores `changed` alarms (number, entry) under the table's sequence word; numbers beyond
 /// the table are skipped.
