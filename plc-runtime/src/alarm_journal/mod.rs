@@ -36,13 +36,13 @@
 //! # Written off the cycle
 //!
 //! [`AlarmJournal::open`] reads the file and starts a writer thread; the cycle hands each
-//! transition to a [`JournalSender`], which never blocks and allocates nothing: when its
-//! queue is full the transition is only counted, and the journal gets a
-//! [`Entry::Summarised`] record with the count. The writer also records at most
-//! [`JournalOptions::per_second`] records a second (the rest summarised), so a flood cannot
-//! wear the disk out. Each record is written at once and synced within
-//! [`JournalOptions::sync_interval`] (one second), at most one sync per interval, and a last
-//! time at stop.
+//! transition to a [`JournalSender`], which never waits and allocates nothing: when its
+//! queue is full (or the writer is taking it that instant) the transition is only counted,
+//! and the journal gets a [`Entry::Summarised`] record with the count. The writer takes the
+//! queue every 50 ms, and also records at most [`JournalOptions::per_second`] records a
+//! second (the rest summarised), so a flood cannot wear the disk out. Each record is written
+//! when taken and synced within [`JournalOptions::sync_interval`] (one second) of that, at
+//! most one sync per interval, and a last time at stop.
 //!
 //! # Hostile files
 //!
