@@ -45,6 +45,7 @@
 #![deny(missing_docs)]
 
 pub mod address;
+pub mod alarms;
 pub mod auth;
 pub mod gate;
 pub mod mapping;
