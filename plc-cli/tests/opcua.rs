@@ -10,6 +10,10 @@ use std::time::{Duration, Instant};
 
 use plc_test_support::{ChildGuard, SpawnGuarded};
 
+/// A program's alarms as OPC UA conditions.
+#[path = "opcua/alarms.rs"]
+mod alarms;
+
 /// The venv's python, which has asyncua.
 fn python() -> PathBuf {
     match std::env::var_os("PLC_OPCUA_PYTHON") {
@@ -63,8 +67,15 @@ fn wait_for(what: &str, mut ready: impl FnMut() -> bool) {
 
 /// Runs the client script; panics with its output unless it succeeds.
 fn client(dir: &Path, args: &[&str]) {
-    let script =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../plc-opcua/tests/client/opcua_client.py");
+    script(dir, "opcua_client.py", args);
+}
+
+/// Runs the client script `name` (in `plc-opcua/tests/client/`); panics with its output and
+/// the tails of the logs in `dir` unless it succeeds.
+fn script(dir: &Path, name: &str, args: &[&str]) {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../plc-opcua/tests/client")
+        .join(name);
     let out = Command::new(python())
         .arg(script)
         .args(args)

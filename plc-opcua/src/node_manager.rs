@@ -52,11 +52,11 @@ pub fn builder(
 ) -> impl NodeManagerBuilder {
     InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {
         let uri = mapping::namespace_uri(&segment);
-        let ns = context
-            .type_tree
-            .write()
-            .namespaces_mut()
-            .add_namespace(&uri);
+        let ns = {
+            let mut type_tree = context.type_tree.write();
+            alarms::register_condition_id(&mut type_tree);
+            type_tree.namespaces_mut().add_namespace(&uri)
+        };
         space.add_namespace(&uri, ns);
         let alarms = Arc::new(AlarmSpace::new(segment.clone(), ns, &first.alarms));
         let layout = Layout::new(first, ns);

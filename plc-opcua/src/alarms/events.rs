@@ -17,7 +17,7 @@ use opcua::types::{
 use plc_core::alarm::{AlarmState, Level};
 
 /// The supertypes of an OffNormalAlarmType, itself first.
-const OFF_NORMAL: &[ObjectTypeId] = &[
+pub(crate) const OFF_NORMAL: &[ObjectTypeId] = &[
     ObjectTypeId::OffNormalAlarmType,
     ObjectTypeId::DiscreteAlarmType,
     ObjectTypeId::AlarmConditionType,
@@ -27,7 +27,7 @@ const OFF_NORMAL: &[ObjectTypeId] = &[
 ];
 
 /// The supertypes of an ExclusiveLimitAlarmType, itself first.
-const EXCLUSIVE_LIMIT: &[ObjectTypeId] = &[
+pub(crate) const EXCLUSIVE_LIMIT: &[ObjectTypeId] = &[
     ObjectTypeId::ExclusiveLimitAlarmType,
     ObjectTypeId::LimitAlarmType,
     ObjectTypeId::AlarmConditionType,

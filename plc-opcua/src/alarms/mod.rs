@@ -290,6 +290,22 @@ impl Registry {
     }
 }
 
+/// Lets event filters select ConditionId: the NodeId attribute of a condition type with an
+/// empty browse path (Part 9, 5.5.2). async-opcua checks each select clause against the type
+/// tree, where no such path is registered, and drops a clause it refuses from the answer (the
+/// fields after it then shift, and a client reads them under the wrong names); registered,
+/// the clause passes and [`events::AlarmEvent`] answers it with the condition's NodeId.
+pub fn register_condition_id(type_tree: &mut opcua::nodes::DefaultTypeTree) {
+    use opcua::types::{NodeClass, ObjectTypeId};
+    let types = events::OFF_NORMAL.iter().chain(events::EXCLUSIVE_LIMIT);
+    for &t in types.filter(|&&t| t != ObjectTypeId::BaseEventType) {
+        let type_id = NodeId::from(t);
+        // A NodeId of no node: the type tree wants one for the property it records.
+        let property = NodeId::new(0, format!("plc-vars:ConditionId:{}", t as u32));
+        type_tree.add_type_property(&property, &type_id, &[], NodeClass::Object);
+    }
+}
+
 /// The status a refused acknowledgement answers with.
 pub fn ack_refusal(e: &ShmError) -> StatusCode {
     match e {
