@@ -15,7 +15,12 @@ pub struct Alarmed {
     door: bool,
     #[plc(
         direction = "command",
-        alarm(text = "Oil temperature", high = 80.0, high_high = 95.0, severity = 600)
+        alarm(
+            text = "Oil temperature",
+            high = 80.0,
+            high_high = 95.0,
+            severity = 600
+        )
     )]
     oil: f32,
     #[plc(direction = "command", alarm(text = "Filter dirty", severity = 300))]

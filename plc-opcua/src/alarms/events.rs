@@ -89,9 +89,9 @@ impl Condition {
             ["ReceiveTime"] => Variant::from(self.received),
             ["Message"] => text(&self.text),
             ["Severity"] | ["LastSeverity"] => Variant::from(self.severity),
-            ["ConditionClassId"] => Variant::from(NodeId::from(
-                ObjectTypeId::ProcessConditionClassType,
-            )),
+            ["ConditionClassId"] => {
+                Variant::from(NodeId::from(ObjectTypeId::ProcessConditionClassType))
+            }
             ["ConditionClassName"] => text("Process"),
             ["BranchId"] => Variant::from(NodeId::null()),
             ["Retain"] => Variant::from(self.retain()),
@@ -122,9 +122,10 @@ impl Condition {
     /// ShelvingState/CurrentState (+ Id) and ShelvingState/UnshelveTime.
     fn shelving(&self, rest: &[&str]) -> Variant {
         let (name, id) = match (self.entry.state, self.entry.shelved_until_ns) {
-            (AlarmState::Shelved, Some(_)) => {
-                ("TimedShelved", ObjectId::ShelvedStateMachineType_TimedShelved)
-            }
+            (AlarmState::Shelved, Some(_)) => (
+                "TimedShelved",
+                ObjectId::ShelvedStateMachineType_TimedShelved,
+            ),
             (AlarmState::Shelved, None) => (
                 "OneShotShelved",
                 ObjectId::ShelvedStateMachineType_OneShotShelved,
@@ -154,7 +155,10 @@ impl Condition {
             return Variant::Empty;
         }
         let (name, id) = match self.entry.level {
-            Level::HighHigh => ("HighHigh", ObjectId::ExclusiveLimitStateMachineType_HighHigh),
+            Level::HighHigh => (
+                "HighHigh",
+                ObjectId::ExclusiveLimitStateMachineType_HighHigh,
+            ),
             Level::High => ("High", ObjectId::ExclusiveLimitStateMachineType_High),
             Level::Low => ("Low", ObjectId::ExclusiveLimitStateMachineType_Low),
             Level::LowLow => ("LowLow", ObjectId::ExclusiveLimitStateMachineType_LowLow),
@@ -348,5 +352,122 @@ impl Event for RefreshEvent {
 
     fn event_type_id(&self) -> &NodeId {
         &self.type_id
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use plc_shm::{AlarmDescriptor, AlarmEntry};
+
+    fn event(limit: bool) -> AlarmEvent {
+        let mut c = Condition::new(
+            4,
+            0,
+            &AlarmDescriptor {
+                path: "oil".into(),
+                text: "Oil temperature".into(),
+                severity: 600,
+                variable: 0,
+                leaf: 0,
+                active_when: (!limit).then_some(true),
+                high_high: Some(95.0),
+                high: Some(80.0),
+                low: None,
+                low_low: None,
+                deadband: 0.0,
+                delay_ns: 0,
+                latched: false,
+                suppress_when: None,
+            },
+        );
+        c.entry = AlarmEntry {
+            state: AlarmState::ActiveUnacknowledged,
+            level: if limit { Level::High } else { Level::Active },
+            acknowledged: false,
+            since_ns: 1_700_000_000_000_000_000,
+            shelved_until_ns: None,
+        };
+        AlarmEvent::new(c, StatusCode::Good)
+    }
+
+    fn path(names: &[&str]) -> Vec<QualifiedName> {
+        names.iter().map(|n| QualifiedName::new(0, *n)).collect()
+    }
+
+    fn field(e: &AlarmEvent, type_id: impl Into<NodeId>, names: &[&str]) -> Variant {
+        let (range, path) = (NumericRange::None, path(names));
+        e.get_field(&type_id.into(), AttributeId::Value, &range, &path)
+    }
+
+    #[test]
+    fn fields_answer_for_the_event_type_its_supertypes_and_base_event_type_only() {
+        let e = event(true);
+        for t in EXCLUSIVE_LIMIT {
+            assert_eq!(field(&e, *t, &["Severity"]), Variant::from(600u16), "{t:?}");
+        }
+        assert_eq!(
+            field(&e, NodeId::null(), &["ActiveState", "Id"]),
+            true.into()
+        );
+        assert_eq!(
+            field(&e, ObjectTypeId::OffNormalAlarmType, &["Severity"]),
+            Variant::Empty,
+            "a bool alarm's type is not a limit alarm's"
+        );
+        assert_eq!(
+            field(
+                &e,
+                ObjectTypeId::BaseEventType,
+                &["LimitState", "CurrentState"]
+            ),
+            text("High")
+        );
+        assert_eq!(
+            field(&e, ObjectTypeId::BaseEventType, &["Nonsense"]),
+            Variant::Empty
+        );
+        let other_ns = vec![QualifiedName::new(3, "Severity")];
+        let base = NodeId::from(ObjectTypeId::BaseEventType);
+        let none = NumericRange::None;
+        let v = e.get_field(&base, AttributeId::Value, &none, &other_ns);
+        assert_eq!(v, Variant::Empty, "fields are of namespace 0");
+        assert_eq!(
+            e.event_type_id(),
+            &NodeId::from(ObjectTypeId::ExclusiveLimitAlarmType)
+        );
+        assert_eq!(*e.time(), utc(1_700_000_000_000_000_000));
+    }
+
+    #[test]
+    fn condition_id_is_the_condition_node() {
+        let e = event(false);
+        let condition = NodeId::from(ObjectTypeId::ConditionType);
+        let id = e.get_field(&condition, AttributeId::NodeId, &NumericRange::None, &[]);
+        assert_eq!(id, Variant::from(NodeId::new(4, "oil#alarm")));
+        assert_eq!(
+            field(
+                &e,
+                ObjectTypeId::BaseEventType,
+                &["LimitState", "CurrentState"]
+            ),
+            Variant::Empty,
+            "a bool alarm has no LimitState"
+        );
+    }
+
+    #[test]
+    fn refresh_events_answer_base_event_fields() {
+        let start = RefreshEvent::new(true, ByteString::from(b"r1".to_vec()));
+        let base = NodeId::from(ObjectTypeId::BaseEventType);
+        let (none, event_type) = (NumericRange::None, path(&["EventType"]));
+        let v = start.get_field(&base, AttributeId::Value, &none, &event_type);
+        assert_eq!(
+            v,
+            Variant::from(NodeId::from(ObjectTypeId::RefreshStartEventType))
+        );
+        let condition = NodeId::from(ObjectTypeId::ConditionType);
+        let v = start.get_field(&condition, AttributeId::Value, &none, &event_type);
+        assert_eq!(v, Variant::Empty, "a refresh event is no condition");
     }
 }

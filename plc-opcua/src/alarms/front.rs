@@ -13,16 +13,14 @@ use opcua::server::CreateMonitoredItem;
 use opcua::server::diagnostics::NamespaceMetadata;
 use opcua::server::node_manager::memory::{CoreNodeManagerBuilder, InMemoryNodeManagerBuilder};
 use opcua::server::node_manager::{
-    AddNodeItem, AddReferenceItem, BrowseNode, BrowsePathItem, DeleteNodeItem,
-    DeleteReferenceItem, DynNodeManager, ExternalReferenceRequest, HistoryNode,
-    HistoryUpdateNode, MethodCall, MonitoredItemRef, MonitoredItemUpdateRef, NodeManager,
-    NodeManagerBuilder, QueryRequest, ReadNode, RegisterNodeItem, RequestContext, ServerContext,
-    WriteNode,
+    AddNodeItem, AddReferenceItem, BrowseNode, BrowsePathItem, DeleteNodeItem, DeleteReferenceItem,
+    DynNodeManager, ExternalReferenceRequest, HistoryNode, HistoryUpdateNode, MethodCall,
+    MonitoredItemRef, MonitoredItemUpdateRef, NodeManager, NodeManagerBuilder, QueryRequest,
+    ReadNode, RegisterNodeItem, RequestContext, ServerContext, WriteNode,
 };
 use opcua::types::{
     ExpandedNodeId, MonitoringMode, NodeId, ReadAnnotationDataDetails, ReadAtTimeDetails,
-    ReadEventDetails, ReadProcessedDetails, ReadRawModifiedDetails, StatusCode,
-    TimestampsToReturn,
+    ReadEventDetails, ReadProcessedDetails, ReadRawModifiedDetails, StatusCode, TimestampsToReturn,
 };
 use std::sync::Arc;
 
@@ -286,7 +284,11 @@ impl NodeManager for CoreFront {
         self.inner.delete_nodes(context, nodes_to_delete).await
     }
 
-    async fn delete_node_references(&self, context: &RequestContext, to_delete: &[&DeleteNodeItem]) {
+    async fn delete_node_references(
+        &self,
+        context: &RequestContext,
+        to_delete: &[&DeleteNodeItem],
+    ) {
         self.inner.delete_node_references(context, to_delete).await
     }
 

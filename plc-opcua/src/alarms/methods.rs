@@ -104,7 +104,10 @@ impl AlarmMethods {
             };
             let results = vec![
                 status(matches!(args[0], Variant::ByteString(_))),
-                status(matches!(args[1], Variant::LocalizedText(_) | Variant::Empty)),
+                status(matches!(
+                    args[1],
+                    Variant::LocalizedText(_) | Variant::Empty
+                )),
             ];
             call.set_argument_error(results);
             return StatusCode::BadInvalidArgument;

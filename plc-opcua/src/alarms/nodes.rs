@@ -55,8 +55,16 @@ const fn limit(mut v: Var) -> Var {
 
 /// The condition's objects (state machines) with their type, parents before their variables.
 const OBJECTS: &[(&str, ObjectTypeId, bool)] = &[
-    ("ShelvingState", ObjectTypeId::ShelvedStateMachineType, false),
-    ("LimitState", ObjectTypeId::ExclusiveLimitStateMachineType, true),
+    (
+        "ShelvingState",
+        ObjectTypeId::ShelvedStateMachineType,
+        false,
+    ),
+    (
+        "LimitState",
+        ObjectTypeId::ExclusiveLimitStateMachineType,
+        true,
+    ),
 ];
 
 /// The condition's variables, each after its parent.
@@ -141,10 +149,14 @@ pub fn insert(space: &mut AddressSpace, alarms: &AlarmSpace) {
 }
 
 fn insert_condition(space: &mut AddressSpace, ns: u16, program: &NodeId, c: &Condition) {
-    ObjectBuilder::new(&c.node, QualifiedName::new(ns, c.path.as_str()), c.path.as_str())
-        .description(LocalizedText::from(c.text.as_str()))
-        .has_type_definition(c.types()[0])
-        .insert(space);
+    ObjectBuilder::new(
+        &c.node,
+        QualifiedName::new(ns, c.path.as_str()),
+        c.path.as_str(),
+    )
+    .description(LocalizedText::from(c.text.as_str()))
+    .has_type_definition(c.types()[0])
+    .insert(space);
     link(space, program, c);
     // The type's Acknowledge, which a client calls with the condition as the object.
     space.insert_reference(
@@ -156,10 +168,14 @@ fn insert_condition(space: &mut AddressSpace, ns: u16, program: &NodeId, c: &Con
         if *limit_only && c.limits.is_none() {
             continue;
         }
-        ObjectBuilder::new(&field_node(&c.node, path), QualifiedName::new(0, *path), *path)
-            .has_type_definition(*type_id)
-            .component_of(c.node.clone())
-            .insert(space);
+        ObjectBuilder::new(
+            &field_node(&c.node, path),
+            QualifiedName::new(0, *path),
+            *path,
+        )
+        .has_type_definition(*type_id)
+        .component_of(c.node.clone())
+        .insert(space);
     }
     let read = AccessLevel::CURRENT_READ;
     for v in VARS.iter().filter(|v| has(c, v)) {
@@ -294,6 +310,9 @@ mod tests {
                 v.path
             );
         }
-        assert!(!has(&c, &VARS.iter().find(|v| v.path == "LowLimit").unwrap()));
+        assert!(!has(
+            &c,
+            VARS.iter().find(|v| v.path == "LowLimit").unwrap()
+        ));
     }
 }

@@ -146,34 +146,31 @@ impl AlarmPoller {
                 return;
             }
         };
-        let mut events = Vec::new();
-        let mut changed = HashSet::new();
-        {
+        let (events, changed) = {
             let mut table = self.alarms.table();
             table.connected = true;
-            let n = table.conditions.len().min(states.len());
-            let start = if n == 0 { 0 } else { self.cursor % n };
-            let now = DateTime::now();
-            for k in 0..n {
-                let i = (start + k) % n;
-                if table.conditions[i].entry == states[i] {
-                    continue;
-                }
-                if self.mirrored && events.len() >= EVENTS_PER_POLL {
-                    // The rest at the next poll, from here.
-                    self.cursor = i;
-                    break;
-                }
-                let c = &mut table.conditions[i];
-                c.entry = states[i];
-                c.received = now;
-                c.event_id = self.alarms.next_event_id(i);
-                changed.insert(c.path.clone());
-                if self.mirrored {
-                    events.push(AlarmEvent::new(c.clone(), nodes::quality(true)));
-                }
-            }
-        }
+            let bound = if self.mirrored {
+                EVENTS_PER_POLL
+            } else {
+                usize::MAX
+            };
+            let (changed, cursor) = mirror(&mut table, &states, self.cursor, bound, |i| {
+                self.alarms.next_event_id(i)
+            });
+            self.cursor = cursor;
+            let events: Vec<AlarmEvent> = match self.mirrored {
+                true => changed
+                    .iter()
+                    .map(|&i| AlarmEvent::new(table.conditions[i].clone(), nodes::quality(true)))
+                    .collect(),
+                false => Vec::new(),
+            };
+            let paths: HashSet<String> = changed
+                .iter()
+                .map(|&i| table.conditions[i].path.clone())
+                .collect();
+            (events, paths)
+        };
         self.mirrored = true;
         if changed.is_empty() {
             return;
@@ -186,7 +183,8 @@ impl AlarmPoller {
         let monitored = self.shared.monitored();
         let of_changed = monitored.iter().filter(|id| {
             id.namespace == self.alarms.ns
-                && parse_node_id(id).is_some_and(|(path, f)| !f.is_empty() && changed.contains(path))
+                && parse_node_id(id)
+                    .is_some_and(|(path, f)| !f.is_empty() && changed.contains(path))
         });
         self.subscriptions.maybe_notify(
             of_changed.map(|id| (id, AttributeId::Value)),
@@ -222,5 +220,110 @@ impl AlarmPoller {
             }
         }
         let _ = job.reply.send(result);
+    }
+}
+
+/// Mirrors `states` into `table`: each condition whose state changed takes it, with a new
+/// EventId (`event_id`) and receive time. At most `bound` of them, starting at `cursor`;
+/// returns the numbers of those that changed and where the next call starts (where this one
+/// stopped when it hit the bound, so every alarm gets its turn).
+fn mirror(
+    table: &mut Table,
+    states: &[plc_shm::AlarmEntry],
+    cursor: usize,
+    bound: usize,
+    mut event_id: impl FnMut(usize) -> opcua::types::ByteString,
+) -> (Vec<usize>, usize) {
+    let n = table.conditions.len().min(states.len());
+    let start = if n == 0 { 0 } else { cursor % n };
+    let now = DateTime::now();
+    let mut changed = Vec::new();
+    for k in 0..n {
+        let i = (start + k) % n;
+        if table.conditions[i].entry == states[i] {
+            continue;
+        }
+        if changed.len() >= bound {
+            return (changed, i);
+        }
+        let c = &mut table.conditions[i];
+        c.entry = states[i];
+        c.received = now;
+        c.event_id = event_id(i);
+        changed.push(i);
+    }
+    (changed, start)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use plc_core::alarm::{AlarmState, Level};
+    use plc_shm::AlarmEntry;
+
+    fn alarms(n: usize) -> Vec<AlarmDescriptor> {
+        (0..n)
+            .map(|i| AlarmDescriptor {
+                path: format!("doors[{i}]"),
+                text: "Door open".into(),
+                severity: 500,
+                variable: 0,
+                leaf: i,
+                active_when: Some(true),
+                high_high: None,
+                high: None,
+                low: None,
+                low_low: None,
+                deadband: 0.0,
+                delay_ns: 0,
+                latched: false,
+                suppress_when: None,
+            })
+            .collect()
+    }
+
+    const RAISED: AlarmEntry = AlarmEntry {
+        state: AlarmState::ActiveUnacknowledged,
+        level: Level::Active,
+        acknowledged: false,
+        since_ns: 1,
+        shelved_until_ns: None,
+    };
+
+    #[test]
+    fn a_flood_of_transitions_is_sent_a_bounded_batch_per_poll_and_every_alarm_gets_its_turn() {
+        let mut table = Table::new(2, &alarms(1000));
+        let states = vec![RAISED; 1000];
+        let mut seen = HashSet::new();
+        let mut cursor = 0;
+        let mut polls = 0;
+        loop {
+            let (changed, next) = mirror(&mut table, &states, cursor, EVENTS_PER_POLL, |_| {
+                opcua::types::ByteString::null()
+            });
+            if changed.is_empty() {
+                break;
+            }
+            assert!(changed.len() <= EVENTS_PER_POLL);
+            seen.extend(changed);
+            cursor = next;
+            polls += 1;
+        }
+        assert_eq!(seen.len(), 1000);
+        assert_eq!(polls, 1000_usize.div_ceil(EVENTS_PER_POLL));
+        assert!(table.conditions.iter().all(|c| c.entry == RAISED));
+    }
+
+    #[test]
+    fn a_table_shorter_or_longer_than_the_conditions_is_mirrored_as_far_as_both_go() {
+        let mut table = Table::new(2, &alarms(3));
+        let (changed, _) = mirror(&mut table, &[RAISED; 5], 7, usize::MAX, |_| {
+            opcua::types::ByteString::null()
+        });
+        assert_eq!(changed.len(), 3);
+        let (changed, _) = mirror(&mut table, &[AlarmEntry::NORMAL], 0, usize::MAX, |_| {
+            opcua::types::ByteString::null()
+        });
+        assert_eq!(changed, vec![0]);
     }
 }
