@@ -224,7 +224,7 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
         let subscriptions = handle.subscriptions().clone();
         let (stop, reads, writes, period) = (stop.clone(), p.reads, p.writes, p.period);
         let for_sampler = shared.clone();
-        let (ack_tx, acks) = mpsc::channel::<AckJob>();
+        let (ack_tx, acks) = mpsc::sync_channel::<AckJob>(crate::alarms::ACK_QUEUE);
         shared.alarms.set_ack_queue(ack_tx);
         let poller = AlarmPoller::new(
             shared.alarms.clone(),

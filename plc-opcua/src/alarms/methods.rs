@@ -172,8 +172,8 @@ impl AlarmMethods {
             user: user.clone(),
             reply,
         };
-        if alarms.send_ack(job).is_none() {
-            return StatusCode::BadServerHalted;
+        if let Err(status) = alarms.send_ack(job) {
+            return refuse("the server cannot take more acknowledgements now", status);
         }
         match tokio::time::timeout(ACK_TIMEOUT, answer).await {
             Ok(Ok(Ok(()))) => {

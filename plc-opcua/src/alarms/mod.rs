@@ -20,7 +20,7 @@ use opcua::types::{ByteString, DateTime, NodeId, StatusCode};
 use plc_shm::{AlarmDescriptor, AlarmEntry, ShmError};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::mpsc::Sender;
+use std::sync::mpsc::{SyncSender, TrySendError};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError, RwLock};
 use tokio::sync::oneshot;
 
@@ -171,6 +171,10 @@ impl Table {
     }
 }
 
+/// The acknowledgements that may wait for a segment's alarm thread (each waits for a cycle of
+/// the program): more at once are refused, so signed-in users cannot queue without bound.
+pub const ACK_QUEUE: usize = 64;
+
 /// An acknowledgement for the segment's alarm thread to send the program.
 pub struct AckJob {
     /// The alarm's number.
@@ -190,7 +194,7 @@ pub struct AlarmSpace {
     /// The segment's namespace index.
     pub ns: u16,
     table: Mutex<Table>,
-    acks: Mutex<Option<Sender<AckJob>>>,
+    acks: Mutex<Option<SyncSender<AckJob>>>,
     /// Numbers events: with `epoch`, an EventId no other event of this server had.
     sequence: AtomicU64,
     epoch: u64,
@@ -239,13 +243,21 @@ impl AlarmSpace {
     }
 
     /// Connects the alarm thread's queue of acknowledgements.
-    pub fn set_ack_queue(&self, acks: Sender<AckJob>) {
+    pub fn set_ack_queue(&self, acks: SyncSender<AckJob>) {
         *lock(&self.acks) = Some(acks);
     }
 
-    /// Sends an acknowledgement to the alarm thread; `None` once it has stopped.
-    pub fn send_ack(&self, job: AckJob) -> Option<()> {
-        lock(&self.acks).as_ref()?.send(job).ok()
+    /// Queues an acknowledgement for the alarm thread: BadTooManyOperations while
+    /// [`ACK_QUEUE`] wait already, BadServerHalted once the thread has stopped.
+    pub fn send_ack(&self, job: AckJob) -> Result<(), StatusCode> {
+        let acks = lock(&self.acks);
+        let Some(acks) = acks.as_ref() else {
+            return Err(StatusCode::BadServerHalted);
+        };
+        acks.try_send(job).map_err(|e| match e {
+            TrySendError::Full(_) => StatusCode::BadTooManyOperations,
+            TrySendError::Disconnected(_) => StatusCode::BadServerHalted,
+        })
     }
 }
 
