@@ -237,6 +237,10 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
         space: &RwLock<AddressSpace>,
         items: &mut [&mut &mut CreateMonitoredItem],
     ) {
+        // The long queue is for events (alarm clients): a value's item keeps 10 at most.
+        for item in items.iter_mut() {
+            item.revise_queue_size(alarms::VALUE_QUEUE);
+        }
         let to_read: Vec<_> = items.iter().map(|i| i.item_to_monitor()).collect();
         let values = self
             .read_values(context, space, &to_read, 0.0, TimestampsToReturn::Both)

@@ -179,6 +179,10 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
         limits.subscriptions.max_monitored_items_per_sub = asked.monitored_items;
         limits.subscriptions.max_subscriptions_per_session = SUBSCRIPTIONS_PER_SESSION;
         limits.subscriptions.max_queued_notifications = asked.monitored_items.max(20);
+        // An alarm client's event queue: a ConditionRefresh of many active alarms, or a flood
+        // of transitions, arrives between two publishes. Values keep async-opcua's queue of
+        // 10 at most (each node manager revises their items down to it).
+        limits.subscriptions.max_monitored_item_queue_size = crate::alarms::EVENT_QUEUE;
         limits.max_sessions = asked.sessions;
         let per_call = asked.nodes_per_call;
         limits.operational.max_nodes_per_read = per_call;

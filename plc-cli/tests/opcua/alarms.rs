@@ -66,6 +66,7 @@ fn alarms_are_conditions_with_events_acknowledgement_and_refresh() {
         &dir,
         "opcua_alarms.py",
         &[
+            "check",
             &url,
             &segment,
             env!("CARGO_BIN_EXE_plc"),
@@ -92,5 +93,55 @@ fn alarms_are_conditions_with_events_acknowledgement_and_refresh() {
             && server_log.contains("(BadUserAccessDenied)"),
         "the anonymous acknowledgement's refusal is logged:\n{server_log}"
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// As many alarms as a plant's, raised and cleared at once by `raise_all`.
+#[derive(plc_core::GlobalMemory, Debug, Clone)]
+pub struct Flooded {
+    #[plc(alarm(text = "Door open", severity = 700))]
+    doors: [bool; FLOOD],
+    #[plc(direction = "command")]
+    raise_all: bool,
+}
+
+/// The alarms of [`Flooded`]: two polls' worth of events (256 a poll), all in one subscriber's
+/// queue of 1,000 with a ConditionRefresh's two more.
+const FLOOD: usize = 500;
+
+#[test]
+fn a_flood_of_alarms_reaches_a_subscriber_whole() {
+    python();
+    let dir = test_dir("alarm-flood");
+    let segment = format!("opcua_flood_{}", std::process::id());
+    let rt = plc_io::Runtime::<Flooded>::builder()
+        .period(Duration::from_millis(1))
+        .segment(&segment)
+        .handle_signals(false)
+        .build()
+        .expect("the program starts");
+    let stop = rt.stop_handle();
+    let program = std::thread::spawn(move || {
+        rt.run(|ctx| {
+            let raise = ctx.gm.raise_all;
+            ctx.gm.doors.iter_mut().for_each(|d| *d = raise);
+        })
+    });
+    wait_for("the program", || {
+        plc_io::shm::DynSegment::attach(&segment).is_ok()
+    });
+    let (_server, port) = serve(&dir, &segment, None);
+    let url = format!("opc.tcp://127.0.0.1:{port}/");
+    let count = FLOOD.to_string();
+    script(
+        &dir,
+        "opcua_alarms.py",
+        &["flood", &url, &segment, env!("CARGO_BIN_EXE_plc"), &count],
+    );
+    stop.stop();
+    program
+        .join()
+        .expect("the program thread")
+        .expect("the program stops");
     let _ = std::fs::remove_dir_all(&dir);
 }

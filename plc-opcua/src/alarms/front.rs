@@ -19,8 +19,9 @@ use opcua::server::node_manager::{
     ReadNode, RegisterNodeItem, RequestContext, ServerContext, WriteNode,
 };
 use opcua::types::{
-    ExpandedNodeId, MonitoringMode, NodeId, ReadAnnotationDataDetails, ReadAtTimeDetails,
-    ReadEventDetails, ReadProcessedDetails, ReadRawModifiedDetails, StatusCode, TimestampsToReturn,
+    AttributeId, ExpandedNodeId, MonitoringMode, NodeId, ReadAnnotationDataDetails,
+    ReadAtTimeDetails, ReadEventDetails, ReadProcessedDetails, ReadRawModifiedDetails, StatusCode,
+    TimestampsToReturn,
 };
 use std::sync::Arc;
 
@@ -204,6 +205,12 @@ impl NodeManager for CoreFront {
         context: &RequestContext,
         items: &mut [&mut CreateMonitoredItem],
     ) -> Result<(), StatusCode> {
+        // Only event items get the long queue alarm clients need.
+        for item in items.iter_mut() {
+            if item.item_to_monitor().attribute_id != AttributeId::EventNotifier {
+                item.revise_queue_size(super::VALUE_QUEUE);
+            }
+        }
         self.inner.create_monitored_items(context, items).await
     }
 

@@ -171,6 +171,14 @@ impl Table {
     }
 }
 
+/// The most events a monitored item holds between two publishes (a value's item holds
+/// [`VALUE_QUEUE`]).
+pub const EVENT_QUEUE: usize = 1000;
+
+/// The most values a monitored item of a value holds between two publishes (async-opcua's
+/// default).
+pub const VALUE_QUEUE: usize = 10;
+
 /// The acknowledgements that may wait for a segment's alarm thread (each waits for a cycle of
 /// the program): more at once are refused, so signed-in users cannot queue without bound.
 pub const ACK_QUEUE: usize = 64;

@@ -1,8 +1,9 @@
 """A program's alarms as OPC UA conditions, checked by an independent client (python asyncua).
 
-    opcua_alarms.py URL SEGMENT PLC PKI WORKDIR USER PASSWORD
+    opcua_alarms.py check URL SEGMENT PLC PKI WORKDIR USER PASSWORD
+    opcua_alarms.py flood URL SEGMENT PLC COUNT
 
-The program declares `door` (bool, severity 700), `oil` (limits high 80, high_high 95,
+`check`: the program declares `door` (bool, severity 700), `oil` (limits high 80, high_high 95,
 severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Checked:
     - each alarm a condition under the program's object (OffNormalAlarmType,
       ExclusiveLimitAlarmType), its variables readable by an anonymous session over None
@@ -16,6 +17,10 @@ severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Ch
       the user; again: BadConditionBranchAlreadyAcked; an old EventId: BadEventIdUnknown
     - ConditionRefresh: the calling subscription alone gets the retained conditions
     - `door` back to normal: the event of the return, Retain false
+`flood`: the program declares COUNT bool alarms `doors[i]`, all raised and cleared with
+`raise_all` (`plc set`): a subscriber (queue of 1,000) gets every one of the COUNT raises,
+a ConditionRefresh gives all COUNT between its RefreshStartEvent and RefreshEndEvent, and
+every return follows; each in its time (`figure:` lines).
 Prints one `ok:` line per check and `figure:` lines; exits 1 with `FAILED:` on the first that
 fails.
 """
@@ -150,9 +155,9 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         await conditions_readable(client, ns)
         severe, every = Events(), Events()
         sub = await client.create_subscription(10, severe)
-        await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(600), queuesize=100)
+        await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(600), queuesize=1000)
         sub_all = await client.create_subscription(10, every)
-        await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=100)
+        await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=1000)
 
         t = time.perf_counter()
         plc(plc_bin, "set", segment, "door=true")
@@ -248,9 +253,58 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         await sub_all.delete()
 
 
+async def run_flood(url, segment, plc_bin, count):
+    count = int(count)
+    async with Client(url, timeout=30) as client:
+        events = Events()
+        sub = await client.create_subscription(10, events)
+        await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(), queuesize=1000)
+
+        async def all_of(active, what):
+            t = time.perf_counter()
+            deadline = time.monotonic() + 60
+            while True:
+                doors = {e["SourceName"] for e in events.got
+                         if e["SourceName"].startswith("doors[") and e["ActiveState/Id"] == active}
+                if len(doors) == count:
+                    return time.perf_counter() - t
+                check(time.monotonic() < deadline, f"{len(doors)} of {count} {what}")
+                await asyncio.sleep(0.01)
+
+        plc(plc_bin, "set", segment, "raise_all=true")
+        took = await all_of(True, "raises")
+        figure(f"opcua_{count}_alarm_raises_all_delivered_ms", round(took * 1000))
+        ok(f"{count} alarms raised at once: every raise delivered ({took * 1000:.0f} ms)")
+
+        events.got.clear()
+        condition_type = client.get_node(ua.ObjectIds.ConditionType)
+        await condition_type.call_method(REFRESH, ua.Variant(sub.subscription_id, ua.VariantType.UInt32))
+        deadline = time.monotonic() + 30
+        while len(events.got) < count + 2:
+            check(time.monotonic() < deadline, f"ConditionRefresh: {len(events.got)} events")
+            await asyncio.sleep(0.01)
+        types = [e["EventType"] for e in events.got]
+        check(types[0] == ua.NodeId(ua.ObjectIds.RefreshStartEventType)
+              and types[-1] == ua.NodeId(ua.ObjectIds.RefreshEndEventType),
+              "ConditionRefresh's events are not bracketed")
+        check(len({e["SourceName"] for e in events.got[1:-1]}) == count, "ConditionRefresh")
+        ok(f"ConditionRefresh: all {count} between RefreshStartEvent and RefreshEndEvent")
+
+        events.got.clear()
+        plc(plc_bin, "set", segment, "raise_all=false")
+        took = await all_of(False, "returns")
+        ok(f"{count} alarms back to normal: every return delivered ({took * 1000:.0f} ms)")
+        await sub.delete()
+
+
 def main():
     try:
-        asyncio.run(run(*sys.argv[1:8]))
+        if sys.argv[1] == "check":
+            asyncio.run(run(*sys.argv[2:9]))
+        elif sys.argv[1] == "flood":
+            asyncio.run(run_flood(*sys.argv[2:6]))
+        else:
+            raise Failed(f"unknown command {sys.argv[1]}")
     except Failed as e:
         print(f"FAILED: {e}", flush=True)
         sys.exit(1)
