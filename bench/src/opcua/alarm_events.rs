@@ -88,7 +88,9 @@ pub(super) async fn alarm_event_latency(
     if created.iter().any(|c| !c.result.status_code.is_good()) {
         return Err("the event monitored item was refused".into());
     }
-    let index = seg.index_of(path).map_err(|e| e.to_string())?;
+    let index = seg
+        .index_of(path)
+        .ok_or_else(|| format!("the program has no `{path}`"))?;
     let force = seg
         .check_force(Write {
             index,
