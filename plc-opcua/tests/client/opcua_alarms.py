@@ -9,7 +9,8 @@ severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Ch
       ExclusiveLimitAlarmType), its variables readable by an anonymous session over None
     - events through an event filter with `Severity >= 600` (an anonymous session over None):
       the raise of `door` with its ConditionId, Time, Message, SourceName, ActiveState/Id,
-      AckedState/Id, Retain; `oil` above its high limit with LimitState High; `filter`
+      AckedState/Id, Retain, and its ActiveState/Id variable's monitored item turns true;
+      `oil` above its high limit with LimitState High; `filter`
       (severity 300) not delivered, while a subscription without the filter gets it
     - Acknowledge by an anonymous session over None: BadUserAccessDenied
     - Acknowledge by the user over SignAndEncrypt with the event's EventId: Good, the event of
@@ -96,6 +97,16 @@ class Events:
                 pass
 
 
+class Values:
+    """A data change subscription's values."""
+
+    def __init__(self):
+        self.got = []
+
+    def datachange_notification(self, node, value, data):
+        self.got.append(value)
+
+
 def of(path, active, acked):
     return lambda e: (e["SourceName"] == path and e["ActiveState/Id"] == active
                       and e["AckedState/Id"] == acked)
@@ -158,6 +169,9 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(600), queuesize=1000)
         sub_all = await client.create_subscription(10, every)
         await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=1000)
+        values = Values()
+        sub_values = await client.create_subscription(10, values)
+        await sub_values.subscribe_data_change(client.get_node(ua.NodeId("door#alarm/ActiveState/Id", ns)))
 
         t = time.perf_counter()
         plc(plc_bin, "set", segment, "door=true")
@@ -169,7 +183,13 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
               f"the raise's fields: {raised}")
         check(raised["EventType"] == ua.NodeId(ua.ObjectIds.OffNormalAlarmType), "its type")
         check(abs(raised["Time"].timestamp() - time.time()) < 30, f"its Time {raised['Time']}")
-        ok(f"door raised: its event through `Severity >= 600` with ConditionId, in "
+        deadline = time.monotonic() + 10
+        while values.got[-1:] != [True]:
+            check(time.monotonic() < deadline, f"door's ActiveState/Id monitored: {values.got}")
+            await asyncio.sleep(0.01)
+        check(values.got[0] is False, f"door's ActiveState/Id monitored: {values.got}")
+        ok(f"door raised: its event through `Severity >= 600` with ConditionId (and its "
+           f"monitored ActiveState/Id turned true), in "
            f"{(raised['received'] - t) * 1000:.0f} ms from `plc set` (a process) on")
 
         plc(plc_bin, "set", segment, "oil=85")
@@ -251,6 +271,7 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         figure("plc_set_to_opcua_event_ms_max", round(delays[-1], 1))
         await sub.delete()
         await sub_all.delete()
+        await sub_values.delete()
 
 
 async def run_flood(url, segment, plc_bin, count):
