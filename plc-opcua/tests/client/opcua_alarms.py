@@ -2,6 +2,7 @@
 
     opcua_alarms.py check URL SEGMENT PLC PKI WORKDIR USER PASSWORD
     opcua_alarms.py flood URL SEGMENT PLC COUNT
+    opcua_alarms.py conditions URL SEGMENT PATH,PATH...
 
 `check`: the program declares `door` (bool, severity 700), `oil` (limits high 80, high_high 95,
 severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Checked:
@@ -22,6 +23,9 @@ severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Ch
 `raise_all` (`plc set`): a subscriber (queue of 1,000) gets every one of the COUNT raises,
 a ConditionRefresh gives all COUNT between its RefreshStartEvent and RefreshEndEvent, and
 every return follows; each in its time (`figure:` lines).
+`conditions`: waits (at most 15 s) until the program's object holds exactly the conditions of
+the alarms at these paths (after a new declaration), each linked from its variable
+(HasCondition) and readable.
 Prints one `ok:` line per check and `figure:` lines; exits 1 with `FAILED:` on the first that
 fails.
 """
@@ -318,10 +322,37 @@ async def run_flood(url, segment, plc_bin, count):
         await sub.delete()
 
 
+async def run_conditions(url, segment, expected):
+    want = sorted(expected.split(","))
+    deadline = time.monotonic() + 15
+    async with Client(url, timeout=30) as client:
+        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
+        program = client.get_node(ua.NodeId(1, ns))
+        while True:
+            try:
+                ids = [c.nodeid.Identifier for c in await program.get_children()]
+                paths = sorted(i[:-len("#alarm")] for i in ids if str(i).endswith("#alarm"))
+                linked = [await client.get_node(ua.NodeId(p, ns)).get_referenced_nodes(
+                    ua.ObjectIds.HasCondition) for p in paths]
+                linked = [[n.nodeid for n in nodes] for nodes in linked]
+                names = [await client.get_node(ua.NodeId(f"{p}#alarm/ConditionName", ns)).read_value()
+                         for p in paths]
+            except ua.UaStatusCodeError:
+                paths = None  # rebuilt between the browse and the reads: browse again
+            if paths == want and names == want and all(
+                    nodes == [ua.NodeId(f"{p}#alarm", ns)] for p, nodes in zip(paths, linked)):
+                break
+            check(time.monotonic() < deadline, f"expected the conditions {want}, still {paths}")
+            await asyncio.sleep(0.1)
+    ok(f"the program's conditions are {want}, each linked from its variable")
+
+
 def main():
     try:
         if sys.argv[1] == "check":
             asyncio.run(run(*sys.argv[2:9]))
+        elif sys.argv[1] == "conditions":
+            asyncio.run(run_conditions(*sys.argv[2:5]))
         elif sys.argv[1] == "flood":
             asyncio.run(run_flood(*sys.argv[2:6]))
         else:
