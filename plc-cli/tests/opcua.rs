@@ -288,13 +288,21 @@ fn a_changed_declaration_rebuilds_the_namespace() {
     let (_server, port) = serve(&dir, &segment, None);
     let url = format!("opc.tcp://127.0.0.1:{port}/");
     client(&dir, &["names", &url, &segment, "count,door,speed"]);
-    script(&dir, "opcua_alarms.py", &["conditions", &url, &segment, "door"]);
+    script(
+        &dir,
+        "opcua_alarms.py",
+        &["conditions", &url, &segment, "door"],
+    );
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the first owner stops");
     let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
     let owner = run_owner::<After>(segment.clone(), stop.clone());
     client(&dir, &["names", &url, &segment, "count,grid,lid"]);
-    script(&dir, "opcua_alarms.py", &["conditions", &url, &segment, "lid"]);
+    script(
+        &dir,
+        "opcua_alarms.py",
+        &["conditions", &url, &segment, "lid"],
+    );
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the second owner stops");
     let _ = std::fs::remove_dir_all(&dir);
