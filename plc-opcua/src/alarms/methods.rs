@@ -177,7 +177,8 @@ impl AlarmMethods {
         }
         match tokio::time::timeout(ACK_TIMEOUT, answer).await {
             Ok(Ok(Ok(()))) => {
-                log::info!("OPC UA acknowledgement by `{user}`: {target}: \"{comment}\"");
+                // Debug-quoted: a comment cannot forge log lines.
+                log::info!("OPC UA acknowledgement by `{user}`: {target}: {comment:?}");
                 StatusCode::Good
             }
             Ok(Ok(Err(e))) => refuse(&e.to_string(), ack_refusal(&e)),
