@@ -86,6 +86,14 @@ class Events:
         self.got.append(fields)
         self.arrived.set()
 
+    async def count(self, n, what, timeout=10):
+        """Waits until `n` events have come, then a little longer for any more."""
+        deadline = time.monotonic() + timeout
+        while len(self.got) < n:
+            check(time.monotonic() < deadline, f"{what}: {len(self.got)} events, not {n}")
+            await asyncio.sleep(0.01)
+        await asyncio.sleep(0.3)
+
     async def wait(self, what, match, timeout=10):
         deadline = time.monotonic() + timeout
         while True:
@@ -176,6 +184,10 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         values = Values()
         sub_values = await client.create_subscription(10, values)
         await sub_values.subscribe_data_change(client.get_node(ua.NodeId("door#alarm/ActiveState/Id", ns)))
+        deadline = time.monotonic() + 10
+        while not values.got:  # its first value, before the raise replaces it in the queue
+            check(time.monotonic() < deadline, "door's ActiveState/Id monitored: no value")
+            await asyncio.sleep(0.01)
 
         t = time.perf_counter()
         plc(plc_bin, "set", segment, "door=true")
@@ -213,12 +225,12 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         before, before_all = len(severe.got), len(every.got)
         condition_type = client.get_node(ua.ObjectIds.ConditionType)
         await condition_type.call_method(REFRESH, ua.Variant(sub.subscription_id, ua.VariantType.UInt32))
-        await asyncio.sleep(0.5)
+        await severe.count(before + 2, "ConditionRefresh")
         again = sorted(e["SourceName"] for e in severe.got[before:])
         check(again == ["door", "oil"], f"ConditionRefresh gave {again}")
         check(len(every.got) == before_all, "ConditionRefresh reached another subscription")
         await client.nodes.server.call_method(REFRESH, ua.Variant(sub_all.subscription_id, ua.VariantType.UInt32))
-        await asyncio.sleep(0.5)
+        await every.count(before_all + 5, "ConditionRefresh without a filter")
         types = [e["EventType"] for e in every.got[before_all:]]
         check(types[0] == ua.NodeId(ua.ObjectIds.RefreshStartEventType)
               and types[-1] == ua.NodeId(ua.ObjectIds.RefreshEndEventType) and len(types) == 5,
