@@ -11,7 +11,8 @@ severity 600) and `filter` (bool, severity 300), all writable with `plc set`. Ch
     - events through an event filter with `Severity >= 600` (an anonymous session over None):
       the raise of `door` with its ConditionId, Time, Message, SourceName, ActiveState/Id,
       AckedState/Id, Retain, and its ActiveState/Id variable's monitored item turns true;
-      `oil` above its high limit with LimitState High; `filter`
+      `oil` above its high limit with LimitState High, through `OfType(LimitAlarmType)` too
+      (which `door`'s does not pass); `filter`
       (severity 300) not delivered, while a subscription without the filter gets it
     - Acknowledge by an anonymous session over None: BadUserAccessDenied
     - Acknowledge by the user over SignAndEncrypt with the event's EventId: Good, the event of
@@ -57,8 +58,9 @@ def operand(path, attribute=ua.AttributeIds.Value, type_id=ua.ObjectIds.BaseEven
     return op
 
 
-def event_filter(min_severity=None):
-    """The fields above and ConditionId; with `min_severity`, `Severity >= min_severity`."""
+def event_filter(min_severity=None, of_type=None):
+    """The fields above and ConditionId; with `min_severity`, `Severity >= min_severity`; with
+    `of_type`, `OfType(of_type)`."""
     f = ua.EventFilter()
     f.SelectClauses = [operand(p) for p in FIELDS]
     f.SelectClauses.append(operand("", ua.AttributeIds.NodeId, ua.ObjectIds.ConditionType))
@@ -67,6 +69,12 @@ def event_filter(min_severity=None):
         el.FilterOperator = ua.FilterOperator.GreaterThanOrEqual
         el.FilterOperands = [operand("Severity"),
                              ua.LiteralOperand(Value=ua.Variant(min_severity, ua.VariantType.UInt16))]
+        f.WhereClause = ua.ContentFilter()
+        f.WhereClause.Elements = [el]
+    if of_type is not None:
+        el = ua.ContentFilterElement()
+        el.FilterOperator = ua.FilterOperator.OfType
+        el.FilterOperands = [ua.LiteralOperand(Value=ua.Variant(ua.NodeId(of_type)))]
         f.WhereClause = ua.ContentFilter()
         f.WhereClause.Elements = [el]
     return f
@@ -181,6 +189,10 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(600), queuesize=1000)
         sub_all = await client.create_subscription(10, every)
         await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=1000)
+        limits = Events()
+        sub_limits = await client.create_subscription(10, limits)
+        await sub_limits.subscribe_events(
+            ua.ObjectIds.Server, evfilter=event_filter(of_type=ua.ObjectIds.LimitAlarmType), queuesize=1000)
         values = Values()
         sub_values = await client.create_subscription(10, values)
         await sub_values.subscribe_data_change(client.get_node(ua.NodeId("door#alarm/ActiveState/Id", ns)))
@@ -212,7 +224,10 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         high = await severe.wait("of oil high", of("oil", True, False))
         check(high["LimitState/CurrentState"].Text == "High", f"oil's LimitState {high}")
         check(high["EventType"] == ua.NodeId(ua.ObjectIds.ExclusiveLimitAlarmType), "its type")
-        ok("oil above its high limit: LimitState High, ExclusiveLimitAlarmType")
+        await limits.wait("of oil through OfType(LimitAlarmType)", of("oil", True, False))
+        check(all(e["SourceName"] == "oil" for e in limits.got), "OfType(LimitAlarmType) let a bool alarm's event through")
+        ok("oil above its high limit: LimitState High, ExclusiveLimitAlarmType; through "
+           "`OfType(LimitAlarmType)`, which the door's did not pass")
 
         plc(plc_bin, "set", segment, "filter=true")
         await every.wait("of filter raised (no filter)", of("filter", True, False))
@@ -288,6 +303,7 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         await sub.delete()
         await sub_all.delete()
         await sub_values.delete()
+        await sub_limits.delete()
 
 
 async def run_flood(url, segment, plc_bin, count):
