@@ -10,6 +10,10 @@ use std::time::{Duration, Instant};
 
 use plc_test_support::{ChildGuard, SpawnGuarded};
 
+/// A program's alarms as OPC UA conditions.
+#[path = "opcua/alarms.rs"]
+mod alarms;
+
 /// The venv's python, which has asyncua.
 fn python() -> PathBuf {
     match std::env::var_os("PLC_OPCUA_PYTHON") {
@@ -63,8 +67,15 @@ fn wait_for(what: &str, mut ready: impl FnMut() -> bool) {
 
 /// Runs the client script; panics with its output unless it succeeds.
 fn client(dir: &Path, args: &[&str]) {
-    let script =
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../plc-opcua/tests/client/opcua_client.py");
+    script(dir, "opcua_client.py", args);
+}
+
+/// Runs the client script `name` (in `plc-opcua/tests/client/`); panics with its output and
+/// the tails of the logs in `dir` unless it succeeds.
+fn script(dir: &Path, name: &str, args: &[&str]) {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../plc-opcua/tests/client")
+        .join(name);
     let out = Command::new(python())
         .arg(script)
         .args(args)
@@ -233,14 +244,18 @@ pub struct Before {
     count: u32,
     #[plc(direction = "command")]
     speed: f64,
+    #[plc(alarm = "Door open")]
+    door: bool,
 }
 
-/// Its next declaration: `speed` gone, `grid` new.
+/// Its next declaration: `speed` and the door's alarm gone, `grid` and the lid's alarm new.
 #[derive(plc_core::GlobalMemory, Debug, Clone)]
 pub struct After {
     #[plc(direction = "status")]
     count: u32,
     grid: [i16; 6],
+    #[plc(alarm = "Lid open")]
+    lid: bool,
 }
 
 /// Runs an owner of `T` on `segment`, applying writes and publishing every millisecond, until
@@ -272,12 +287,22 @@ fn a_changed_declaration_rebuilds_the_namespace() {
     });
     let (_server, port) = serve(&dir, &segment, None);
     let url = format!("opc.tcp://127.0.0.1:{port}/");
-    client(&dir, &["names", &url, &segment, "count,speed"]);
+    client(&dir, &["names", &url, &segment, "count,door,speed"]);
+    script(
+        &dir,
+        "opcua_alarms.py",
+        &["conditions", &url, &segment, "door"],
+    );
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the first owner stops");
     let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
     let owner = run_owner::<After>(segment.clone(), stop.clone());
-    client(&dir, &["names", &url, &segment, "count,grid"]);
+    client(&dir, &["names", &url, &segment, "count,grid,lid"]);
+    script(
+        &dir,
+        "opcua_alarms.py",
+        &["conditions", &url, &segment, "lid"],
+    );
     stop.store(true, std::sync::atomic::Ordering::Relaxed);
     owner.join().expect("the second owner stops");
     let _ = std::fs::remove_dir_all(&dir);

@@ -5,7 +5,7 @@
 
 use crate::mapping;
 use opcua::nodes::{ObjectBuilder, VariableBuilder};
-use opcua::server::address_space::AddressSpace;
+use opcua::server::address_space::{AddressSpace, EventNotifier};
 use opcua::types::{LocalizedText, NodeId, ObjectId, ObjectTypeId, QualifiedName, VariableTypeId};
 use plc_core::rules::path::{Visit, walk};
 use plc_shm::{LayoutDescriptor, VarDescriptor};
@@ -124,6 +124,8 @@ impl Layout {
             ))
             .organized_by(ObjectId::ObjectsFolder)
             .has_type_definition(ObjectTypeId::BaseObjectType)
+            // Its alarms' events: subscribe here for one program's, on Server for all.
+            .event_notifier(EventNotifier::SUBSCRIBE_TO_EVENTS)
             .insert(space);
         for o in &self.objects {
             ObjectBuilder::new(

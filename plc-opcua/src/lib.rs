@@ -31,6 +31,31 @@
 //! `1,0:2`, OPC UA's NumericRange; BadIndexRangeNoData past its end). Every write is logged with
 //! its user and the old and new value.
 //!
+//! # Alarms
+//!
+//! Each alarm of the program is a condition (OPC UA Part 9) under the program's object:
+//! `ns=<ns>;s=<path>#alarm`, an OffNormalAlarmType for a bool alarm and an
+//! ExclusiveLimitAlarmType for a limit alarm, with ActiveState, AckedState, EnabledState,
+//! SuppressedState (suppressed by design), ShelvingState/CurrentState, LimitState/CurrentState
+//! (High, HighHigh, Low, LowLow), Severity, Message (the alarm's text), SourceName and
+//! ConditionName (its path), Time (the program's time of the transition), Retain (anything
+//! but normal), Quality, Comment and ClientUserId of the last acknowledgement, and the limits;
+//! each readable (and monitorable) as a variable `…#alarm/ActiveState/Id`. Every transition
+//! (raised, acknowledged, returned to normal, shelved, ...) is an event from the program's
+//! object (subscribe there, or on Server for every segment), filtered by the subscriber's
+//! select and where clauses; ConditionId (the NodeId select clause of ConditionType) is the
+//! condition's node. The server reads the program's alarm table every 10 ms and sends at
+//! most 256 events a poll per segment (a flood follows over the next polls).
+//!
+//! Acknowledge (AcknowledgeableConditionType's, `i=9111`, on the condition with the EventId of
+//! its last event and a comment) is for users of the users file over Sign or SignAndEncrypt,
+//! as writes are: it reaches the program through its socket, and its alarm journal records
+//! the user. Refusals: BadUserAccessDenied (anonymous, or not a user), BadEventIdUnknown (not
+//! the condition's last event), BadConditionBranchAlreadyAcked (nothing waits for an
+//! acknowledgement). ConditionRefresh and ConditionRefresh2 send the calling subscription
+//! alone a RefreshStartEvent, the retained conditions and a RefreshEndEvent (through its
+//! filters: those have Severity 1).
+//!
 //! # Security
 //!
 //! Endpoints: security policy None (anonymous sessions may browse and read) and Basic256Sha256
@@ -45,6 +70,7 @@
 #![deny(missing_docs)]
 
 pub mod address;
+pub mod alarms;
 pub mod auth;
 pub mod gate;
 pub mod mapping;

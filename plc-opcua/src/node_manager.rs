@@ -3,6 +3,7 @@
 //! go to the segment's threads, which alone touch its shared memory.
 
 use crate::address::Layout;
+use crate::alarms::{self, AlarmSpace, Registry};
 use crate::mapping;
 use crate::shared::{ReadJob, Shared, WriteJob};
 use crate::users_file::UsersFile;
@@ -38,27 +39,32 @@ pub struct SegmentNodes {
 }
 
 /// The builder of a segment's node manager: registers the namespace `urn:plc-vars:<segment>`
-/// and inserts the nodes of the segment's first layout. `ns` receives the namespace index.
+/// and inserts the nodes of the segment's first layout, and the conditions of its alarms
+/// (added to `registry`, where the condition methods find them).
 pub fn builder(
     segment: String,
     first: plc_shm::LayoutDescriptor,
     period: Duration,
     users: Arc<UsersFile>,
     unsigned_writes: bool,
-    make_shared: impl FnOnce(Layout) -> Arc<Shared> + Send + 'static,
+    registry: Arc<Registry>,
+    make_shared: impl FnOnce(Layout, Arc<AlarmSpace>) -> Arc<Shared> + Send + 'static,
 ) -> impl NodeManagerBuilder {
     InMemoryNodeManagerBuilder::new(move |context: ServerContext, space: &mut AddressSpace| {
         let uri = mapping::namespace_uri(&segment);
-        let ns = context
-            .type_tree
-            .write()
-            .namespaces_mut()
-            .add_namespace(&uri);
+        let ns = {
+            let mut type_tree = context.type_tree.write();
+            alarms::register_condition_id(&mut type_tree);
+            type_tree.namespaces_mut().add_namespace(&uri)
+        };
         space.add_namespace(&uri, ns);
+        let alarms = Arc::new(AlarmSpace::new(segment.clone(), ns, &first.alarms));
         let layout = Layout::new(first, ns);
         layout.insert_into(space, &segment, period);
+        alarms::nodes::insert(space, &alarms);
+        registry.add(alarms.clone());
         SegmentNodes {
-            shared: make_shared(layout),
+            shared: make_shared(layout, alarms),
             users,
             unsigned_writes,
             namespace: NamespaceMetadata {
@@ -199,6 +205,14 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
             let space = space.read();
             for node in nodes {
                 match space.validate_node_read(context, node) {
+                    // A condition's variable: from the mirror of the alarm table.
+                    Ok(_) if alarms::parse_node_id(&node.node_id).is_some() => {
+                        let value = alarms::nodes::value(&self.shared.alarms, &node.node_id)
+                            .map(|dv| ranged(dv, &node.index_range, timestamps));
+                        results.push(Some(value.unwrap_or_else(|| {
+                            mapping::status_only(StatusCode::BadNodeIdUnknown)
+                        })));
+                    }
                     Ok(_) => {
                         wanted.push((node.node_id.clone(), node.index_range.clone()));
                         results.push(None);
@@ -223,6 +237,10 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
         space: &RwLock<AddressSpace>,
         items: &mut [&mut &mut CreateMonitoredItem],
     ) {
+        // The long queue is for events (alarm clients): a value's item keeps 10 at most.
+        for item in items.iter_mut() {
+            item.revise_queue_size(alarms::VALUE_QUEUE);
+        }
         let to_read: Vec<_> = items.iter().map(|i| i.item_to_monitor()).collect();
         let values = self
             .read_values(context, space, &to_read, 0.0, TimestampsToReturn::Both)
@@ -290,4 +308,28 @@ impl InMemoryNodeManagerImpl for SegmentNodes {
         }
         Ok(())
     }
+}
+
+/// A condition variable's value with an index range and the timestamps asked for applied.
+fn ranged(mut dv: DataValue, range: &NumericRange, timestamps: TimestampsToReturn) -> DataValue {
+    if *range != NumericRange::None {
+        match dv.value.as_ref().map(|v| v.range_of(range)) {
+            Some(Ok(v)) => dv.value = Some(v),
+            Some(Err(status)) => return mapping::status_only(status),
+            None => {}
+        }
+    }
+    if matches!(
+        timestamps,
+        TimestampsToReturn::Server | TimestampsToReturn::Neither
+    ) {
+        dv.source_timestamp = None;
+    }
+    if matches!(
+        timestamps,
+        TimestampsToReturn::Source | TimestampsToReturn::Neither
+    ) {
+        dv.server_timestamp = None;
+    }
+    dv
 }

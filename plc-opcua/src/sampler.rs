@@ -213,6 +213,7 @@ impl Sampler {
                 let mut space = self.space.write();
                 layout.remove_from(&mut space);
                 new.insert_into(&mut space, &self.shared.segment, seg.status().stats.period);
+                crate::alarms::nodes::relink(&mut space, &self.shared.alarms);
             }
             self.shared.set_layout(new);
             log::info!(

@@ -1,6 +1,9 @@
 //! `plc opcua serve`: the server's configuration (endpoints, certificate, limits), one node
 //! manager and two threads per segment, and the run until Ctrl-C or SIGTERM.
 
+use crate::alarms::methods::AlarmMethods;
+use crate::alarms::poller::AlarmPoller;
+use crate::alarms::{AckJob, AlarmSpace, Registry};
 use crate::auth::{PlcAuth, RefusePlainTextPasswords};
 use crate::gate::{Gate, GateLimits};
 use crate::node_manager::{self, SegmentManager};
@@ -109,6 +112,8 @@ struct Pending {
     reads: mpsc::Receiver<crate::shared::ReadJob>,
     writes: mpsc::Receiver<crate::shared::WriteJob>,
     shared: Arc<Mutex<Option<Arc<Shared>>>>,
+    /// The alarms the conditions were first built from.
+    alarms: Vec<plc_shm::AlarmDescriptor>,
 }
 
 /// Serves the segments until Ctrl-C or SIGTERM.
@@ -128,7 +133,8 @@ pub fn serve(options: &ServeOptions) -> Result<(), ServeError> {
 
 async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeError> {
     prepare_private_dir(&options.pki)?;
-    let mut builder = configure(options, users.clone())?;
+    let registry = Arc::new(Registry::default());
+    let mut builder = configure(options, users.clone(), registry.clone())?;
     let mut pending = Vec::new();
     let mut fastest = Duration::from_secs(1);
     for name in &options.segments {
@@ -147,8 +153,9 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
             period,
             users.clone(),
             options.limits.allow_unsigned_writes,
-            move |layout| {
-                let shared = Arc::new(Shared::new(segment, layout, read_tx, write_tx));
+            registry.clone(),
+            move |layout, alarms: Arc<AlarmSpace>| {
+                let shared = Arc::new(Shared::new(segment, layout, alarms, read_tx, write_tx));
                 *fill.lock().unwrap_or_else(|e| e.into_inner()) = Some(shared.clone());
                 shared
             },
@@ -159,6 +166,7 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
             reads,
             writes,
             shared: slot,
+            alarms: seg.alarms().to_vec(),
         });
     }
     // Sampling and publishing down to the fastest owner's period, in whole milliseconds.
@@ -171,6 +179,10 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
         limits.subscriptions.max_monitored_items_per_sub = asked.monitored_items;
         limits.subscriptions.max_subscriptions_per_session = SUBSCRIPTIONS_PER_SESSION;
         limits.subscriptions.max_queued_notifications = asked.monitored_items.max(20);
+        // An alarm client's event queue: a ConditionRefresh of many active alarms, or a flood
+        // of transitions, arrives between two publishes. Values keep async-opcua's queue of
+        // 10 at most (each node manager revises their items down to it).
+        limits.subscriptions.max_monitored_item_queue_size = crate::alarms::EVENT_QUEUE;
         limits.max_sessions = asked.sessions;
         let per_call = asked.nodes_per_call;
         limits.operational.max_nodes_per_read = per_call;
@@ -216,6 +228,19 @@ async fn run(options: &ServeOptions, users: Arc<UsersFile>) -> Result<(), ServeE
         let subscriptions = handle.subscriptions().clone();
         let (stop, reads, writes, period) = (stop.clone(), p.reads, p.writes, p.period);
         let for_sampler = shared.clone();
+        let (ack_tx, acks) = mpsc::sync_channel::<AckJob>(crate::alarms::ACK_QUEUE);
+        shared.alarms.set_ack_queue(ack_tx);
+        let poller = AlarmPoller::new(
+            shared.alarms.clone(),
+            p.alarms,
+            shared.clone(),
+            space.clone(),
+            subscriptions.clone(),
+        );
+        let alarm_stop = stop.clone();
+        threads.push(spawn(&format!("opcua-a-{}", p.name), move || {
+            poller.run(acks, alarm_stop)
+        })?);
         // A segment handle stays in the thread that attached it: each thread makes its own.
         threads.push(spawn(&format!("opcua-{}", p.name), move || {
             Sampler::new(for_sampler, period, space, subscriptions).run(reads, stop)
@@ -327,14 +352,28 @@ async fn listen(host: &str, port: u16) -> Result<tokio::net::TcpListener, ServeE
 }
 
 /// The server's endpoints, certificate store, users and decoding rules.
-fn configure(options: &ServeOptions, users: Arc<UsersFile>) -> Result<ServerBuilder, ServeError> {
+fn configure(
+    options: &ServeOptions,
+    users: Arc<UsersFile>,
+    registry: Arc<Registry>,
+) -> Result<ServerBuilder, ServeError> {
     let anonymous = [ANONYMOUS_USER_TOKEN_ID.to_string()];
     let mut none = ServerEndpoint::new_none("/", &anonymous);
     // A user name token on the None endpoint is encrypted under Basic256Sha256 (RSA-OAEP).
     none.password_security_policy = Some(SecurityPolicy::Basic256Sha256.to_uri().to_string());
     let secure = |mode| ServerEndpoint::new("/", SecurityPolicy::Basic256Sha256, mode, &anonymous);
     let host = hostname();
+    let methods = AlarmMethods::new(
+        registry,
+        users.clone(),
+        options.limits.allow_unsigned_writes,
+    );
+    // The core node manager behind the front that answers the condition methods, then the
+    // diagnostics one: async-opcua's two, in its order.
     Ok(ServerBuilder::new()
+        .without_node_managers()
+        .with_node_manager(crate::alarms::front::builder(methods))
+        .with_node_manager(opcua::server::diagnostics::DiagnosticsNodeManagerBuilder)
         .application_name("plc-vars OPC UA server")
         .application_uri(format!("urn:plc-vars:opcua-server:{host}"))
         .product_uri("urn:plc-vars:opcua-server")

@@ -3,6 +3,7 @@
 //! queues from one to the other.
 
 use crate::address::Layout;
+use crate::alarms::AlarmSpace;
 use opcua::server::MonitoredItemHandle;
 use opcua::types::{DataValue, NodeId, NumericRange, StatusCode, TimestampsToReturn};
 use plc_core::Value;
@@ -90,6 +91,8 @@ impl Monitored {
 pub struct Shared {
     /// The segment's name.
     pub segment: String,
+    /// The program's alarms, as conditions.
+    pub alarms: Arc<AlarmSpace>,
     layout: RwLock<Arc<Layout>>,
     monitored: Mutex<Monitored>,
     reads: Mutex<Sender<ReadJob>>,
@@ -103,15 +106,17 @@ fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
 }
 
 impl Shared {
-    /// State for `segment`, its first layout and the senders of its job queues.
+    /// State for `segment`, its first layout, its alarms and the senders of its job queues.
     pub fn new(
         segment: String,
         layout: Layout,
+        alarms: Arc<AlarmSpace>,
         reads: Sender<ReadJob>,
         writes: Sender<WriteJob>,
     ) -> Shared {
         Shared {
             segment,
+            alarms,
             layout: RwLock::new(Arc::new(layout)),
             monitored: Mutex::default(),
             reads: Mutex::new(reads),

@@ -26,11 +26,19 @@
 //!   `cycle_with_opcua_clients_ratio_10k`: the same on the 10,000-variable program, the 10
 //!   clients monitoring 1,000 nodes each (about 340 of the values change every cycle).
 //!
+//! - `opcua_alarm_event_p50_ms`, `opcua_alarm_event_p99_ms`: on the main example, a tool
+//!   forces `guard_door_open` true and releases it (25 times, 100 with `--full`; 50 ms
+//!   apart); each event's latency at a subscriber of the Server object's events (publishing
+//!   1 ms) is its arrival (client wall clock) less its Time, the UTC time of the program's
+//!   cycle that saw the transition. The server polls the alarm table every 10 ms, so about
+//!   5 ms plus the publishing path is the median to expect, 10 ms plus it the worst.
+//!
 //! The owner runs on a CPU of its own (the last this process may use), the server and the
 //! clients on the others, as a machine builder gives the program its own core
 //! (`opcua_placement` says which); with one CPU all share it. Without that the figure measures
 //! the scheduler: whatever runs on the owner's core between two cycles evicts its caches.
 
+mod alarm_events;
 mod client;
 mod notify;
 mod ratio;
@@ -145,12 +153,27 @@ async fn main_example(
     let nodes: Vec<NodeId> = paths.iter().map(|p| NodeId::new(ns, p.as_str())).collect();
     let shares = vec![&nodes[..]; clients.len()];
     let load = cycle_ratio(&clients, &seg, &shares, if quick { 5 } else { 15 }).await;
+    let toggles = if quick { 25 } else { 100 };
+    let alarms =
+        alarm_events::alarm_event_latency(&clients[0].session, &seg, "guard_door_open", toggles)
+            .await;
     for c in clients {
         c.close().await;
     }
     drop((server, seg, program));
     let mut out = format!("opcua_main_example_nodes: {}\n", nodes.len());
     load?.write(&mut out, "");
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    match alarms {
+        Ok(a) => {
+            let _ = writeln!(out, "opcua_alarm_event_p50_ms: {:.2}", ms(a.p50));
+            let _ = writeln!(out, "opcua_alarm_event_p99_ms: {:.2}", ms(a.p99));
+            let _ = writeln!(out, "opcua_alarm_event_count: {}", a.count);
+        }
+        Err(why) => {
+            let _ = writeln!(out, "opcua_alarm_event_p99_ms: unavailable ({why})");
+        }
+    }
     Ok(out)
 }
 

@@ -156,13 +156,16 @@ def flatten(variables, prefix="", parent_writable=None):
 
 
 async def browse_variables(node, found, depth=0):
-    """Every variable under `node`, through objects (a structure level is an object)."""
+    """Every variable under `node`, through objects (a structure level is an object), the
+    alarms' conditions left out."""
     check(depth < 16, "the tree is deeper than 16 levels")
     for child in await node.get_children():
         cls = await child.read_node_class()
         if cls == ua.NodeClass.Variable:
             found.append(child)
         elif cls == ua.NodeClass.Object:
+            if "#alarm" in str(child.nodeid.Identifier):
+                continue  # an alarm's condition: opcua_alarms.py checks those
             await browse_variables(child, found, depth + 1)
 
 
