@@ -280,20 +280,10 @@ mod tests {
             2,
             0,
             &plc_shm::AlarmDescriptor {
-                path: "oil".into(),
-                text: "Oil temperature".into(),
                 severity: 600,
-                variable: 0,
-                leaf: 0,
-                active_when: None,
                 high_high: Some(95.0),
                 high: Some(80.0),
-                low: None,
-                low_low: None,
-                deadband: 0.0,
-                delay_ns: 0,
-                latched: false,
-                suppress_when: None,
+                ..plc_shm::AlarmDescriptor::limit("oil", "Oil temperature", 0, 0)
             },
         );
         for v in VARS {

@@ -263,22 +263,7 @@ mod tests {
 
     fn alarms(n: usize) -> Vec<AlarmDescriptor> {
         (0..n)
-            .map(|i| AlarmDescriptor {
-                path: format!("doors[{i}]"),
-                text: "Door open".into(),
-                severity: 500,
-                variable: 0,
-                leaf: i,
-                active_when: Some(true),
-                high_high: None,
-                high: None,
-                low: None,
-                low_low: None,
-                deadband: 0.0,
-                delay_ns: 0,
-                latched: false,
-                suppress_when: None,
-            })
+            .map(|i| AlarmDescriptor::discrete(&format!("doors[{i}]"), "Door open", 0, i))
             .collect()
     }
 

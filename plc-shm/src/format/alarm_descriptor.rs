@@ -62,6 +62,45 @@ fn is_zero_ns(x: &i64) -> bool {
 }
 
 impl AlarmDescriptor {
+    /// A bool alarm on leaf `leaf` of variable `variable`, active when true, severity 500,
+    /// without delay, latching or suppression: for tools and tests that describe an alarm
+    /// without a program's Rust type. Set the rest with struct update syntax.
+    ///
+    /// ```
+    /// use plc_shm::AlarmDescriptor;
+    /// let oil = AlarmDescriptor {
+    ///     high: Some(80.0),
+    ///     ..AlarmDescriptor::limit("oil", "Oil temperature", 0, 0)
+    /// };
+    /// assert!(oil.is_limit() && !AlarmDescriptor::discrete("door", "Door open", 1, 0).is_limit());
+    /// ```
+    pub fn discrete(path: &str, text: &str, variable: usize, leaf: usize) -> AlarmDescriptor {
+        AlarmDescriptor {
+            path: path.to_string(),
+            text: text.to_string(),
+            severity: 500,
+            variable,
+            leaf,
+            active_when: Some(true),
+            high_high: None,
+            high: None,
+            low: None,
+            low_low: None,
+            deadband: 0.0,
+            delay_ns: 0,
+            latched: false,
+            suppress_when: None,
+        }
+    }
+
+    /// A limit alarm on a number, with no limit yet (set them with struct update syntax).
+    pub fn limit(path: &str, text: &str, variable: usize, leaf: usize) -> AlarmDescriptor {
+        AlarmDescriptor {
+            active_when: None,
+            ..AlarmDescriptor::discrete(path, text, variable, leaf)
+        }
+    }
+
     /// Whether it is a limit alarm on a number (else a bool's).
     pub fn is_limit(&self) -> bool {
         self.active_when.is_none()
