@@ -272,7 +272,13 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
             shown = plc(plc_bin, "alarms", segment)
             line = [x for x in shown.splitlines() if " door " in f" {x} "]
             check(line and "active acknowledged" in line[0], f"`plc alarms`:\n{shown}")
-            history = plc(plc_bin, "alarms", segment, "--history")
+            # The journal's writer takes the cycle's records every 50 ms: look for up to 5 s.
+            deadline = time.monotonic() + 5
+            while True:
+                history = plc(plc_bin, "alarms", segment, "--history")
+                if ("operator" in history and "seen from the HMI" in history) or time.monotonic() > deadline:
+                    break
+                await asyncio.sleep(0.05)
             check("operator" in history and "seen from the HMI" in history,
                   f"the journal names the user and comment:\n{history}")
             ok("Acknowledge by the user over SignAndEncrypt: Good, its event follows, the "
