@@ -188,7 +188,7 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         sub = await client.create_subscription(10, severe)
         await sub.subscribe_events(ua.ObjectIds.Server, evfilter=event_filter(600), queuesize=1000)
         sub_all = await client.create_subscription(10, every)
-        await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=1000)
+        every_item = await sub_all.subscribe_events(ua.NodeId(1, ns), evfilter=event_filter(), queuesize=1000)
         limits = Events()
         sub_limits = await client.create_subscription(10, limits)
         await sub_limits.subscribe_events(
@@ -250,8 +250,19 @@ async def run(url, segment, plc_bin, pki, workdir, user, password):
         check(types[0] == ua.NodeId(ua.ObjectIds.RefreshStartEventType)
               and types[-1] == ua.NodeId(ua.ObjectIds.RefreshEndEventType) and len(types) == 5,
               f"ConditionRefresh without a filter: {types}")
+        # ConditionRefresh2 names the monitored item too: the same five events again.
+        before_all = len(every.got)
+        refresh2 = ua.NodeId(ua.ObjectIds.ConditionType_ConditionRefresh2)
+        await condition_type.call_method(refresh2, ua.Variant(sub_all.subscription_id, ua.VariantType.UInt32),
+                                         ua.Variant(every_item, ua.VariantType.UInt32))
+        await every.count(before_all + 5, "ConditionRefresh2")
+        types = [e["EventType"] for e in every.got[before_all:]]
+        check(types[0] == ua.NodeId(ua.ObjectIds.RefreshStartEventType)
+              and types[-1] == ua.NodeId(ua.ObjectIds.RefreshEndEventType) and len(types) == 5,
+              f"ConditionRefresh2: {types}")
         ok("ConditionRefresh: the calling subscription alone gets the retained conditions "
-           "(RefreshStartEvent and RefreshEndEvent around them when its filter lets them)")
+           "(RefreshStartEvent and RefreshEndEvent around them when its filter lets them); "
+           "ConditionRefresh2 the same for one monitored item")
 
         door = client.get_node(raised["ConditionId"])
         status = await status_of_call(door, ua.Variant(raised["EventId"], ua.VariantType.ByteString),
