@@ -42,7 +42,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 from asyncua import Client, ua  # noqa: E402
 from asyncua.crypto import security_policies  # noqa: E402
 
-from opcua_client import Failed, check, figure, ok, plc, user_client  # noqa: E402
+from opcua_common import Failed, check, figure, ok, plc, user_client  # noqa: E402
 
 FIELDS = ["EventId", "EventType", "SourceName", "Time", "Message", "Severity", "Retain",
           "ActiveState/Id", "AckedState/Id", "LimitState/CurrentState", "ConditionName"]

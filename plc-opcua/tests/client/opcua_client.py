@@ -35,14 +35,10 @@ Prints one `ok:` line per check; exits 1 with `FAILED:` and the reason on the fi
 """
 
 import asyncio
-import contextvars
-import hashlib
-import itertools
 import json
 import math
 import shutil
 import socket
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -52,147 +48,26 @@ from asyncua.crypto import security_policies
 from asyncua.crypto.cert_gen import setup_self_signed_certificate
 from cryptography.x509.oid import ExtendedKeyUsageOID
 
-# IEC 61131-3 elementary types and their OPC UA built-in DataTypes (ns=0 numeric ids).
-DATA_TYPES = {
-    "BOOL": ua.ObjectIds.Boolean, "SINT": ua.ObjectIds.SByte, "USINT": ua.ObjectIds.Byte,
-    "BYTE": ua.ObjectIds.Byte, "INT": ua.ObjectIds.Int16, "UINT": ua.ObjectIds.UInt16,
-    "WORD": ua.ObjectIds.UInt16, "DINT": ua.ObjectIds.Int32, "UDINT": ua.ObjectIds.UInt32,
-    "DWORD": ua.ObjectIds.UInt32, "LINT": ua.ObjectIds.Int64, "ULINT": ua.ObjectIds.UInt64,
-    "LWORD": ua.ObjectIds.UInt64, "REAL": ua.ObjectIds.Float, "LREAL": ua.ObjectIds.Double,
-    "STRING": ua.ObjectIds.String, "LTIME": ua.ObjectIds.Duration,
-}
-READ = ua.AccessLevel.CurrentRead.mask
-WRITE = ua.AccessLevel.CurrentWrite.mask
 
-
-class Failed(Exception):
-    pass
-
-
-def check(condition, what):
-    if not condition:
-        raise Failed(what)
-
-
-def ok(what):
-    print(f"ok: {what}", flush=True)
-
-
-def plc(plc_bin, *args):
-    out = subprocess.run([plc_bin, *args], capture_output=True, text=True, timeout=30)
-    check(out.returncode == 0, f"`plc {' '.join(args)}` failed: {out.stderr}")
-    return out.stdout
-
-
-def plc_get(plc_bin, segment, names):
-    values = {}
-    for line in plc(plc_bin, "get", segment, *names).splitlines():
-        name, _, value = line.partition(" = ")
-        values[name] = value
-    return values
-
-
-def as_plc_text(iec_type, value):
-    """A value read over OPC UA as `plc get` prints it."""
-    if iec_type == "BOOL":
-        return "true" if value else "false"
-    if iec_type in ("REAL", "LREAL"):
-        return None  # compared as numbers
-    return str(value)
-
-
-LTIME_UNITS = {"d": 86_400_000, "h": 3_600_000, "m": 60_000, "s": 1000, "ms": 1,
-               "us": 1e-3, "ns": 1e-6}
-
-
-def ltime_ms(text):
-    """A duration as `plc get` prints it for a person (`90.5 s`, exact unless digits are asked
-    for) or as an IEC literal (`LTIME#1m30s500ms`), in milliseconds."""
-    import re
-    from decimal import Decimal, InvalidOperation
-    if text.endswith(" s"):
-        try:
-            return float(Decimal(text[:-2]) * 1000)
-        except InvalidOperation:
-            check(False, f"not a duration: {text!r}")
-    check("#" in text, f"not a duration: {text!r}")
-    body = text.split("#", 1)[1].replace("_", "")
-    sign = -1 if body.startswith("-") else 1
-    parts = re.findall(r"(\d+(?:\.\d+)?)(ms|us|ns|d|h|m|s)", body.lstrip("+-"))
-    check(parts, f"not a duration: {text!r}")
-    return sign * sum(float(n) * LTIME_UNITS[u] for n, u in parts)
-
-
-def same_value(iec_type, plc_text, value):
-    if iec_type in ("REAL", "LREAL"):
-        return float(plc_text) == float(value)
-    if iec_type == "LTIME":
-        # OPC UA's Duration is a Double of milliseconds.
-        return abs(ltime_ms(plc_text) - float(value)) < 1e-6
-    return as_plc_text(iec_type, value) == plc_text
-
-
-def flatten(variables, prefix="", parent_writable=None):
-    """The basic values of `plc list --json`'s variables, each with its path (its NodeId), its
-    BrowseName and whether a tool may write it: a structure's members by path, an array of
-    structures element by element (`axes[1].pos`)."""
-    out = []
-    for v in variables:
-        path = prefix + v["name"]
-        if parent_writable is None:
-            writable = v["access"] == "read_write" and v["direction"] not in ("input", "status")
-        else:
-            writable = parent_writable and v["access"] == "read_write"
-        if v.get("members"):
-            dims = v.get("dims") or []
-            elements = itertools.product(*[range(d) for d in dims]) if dims else [None]
-            for coords in elements:
-                at = path if coords is None else f"{path}[{','.join(map(str, coords))}]"
-                out += flatten(v["members"], at + ".", writable)
-        else:
-            out.append(dict(v, path=path, browse=v["name"], writable=writable,
-                            top=parent_writable is None))
-    return out
-
-
-async def browse_variables(node, found, depth=0):
-    """Every variable under `node`, through objects (a structure level is an object), the
-    alarms' conditions left out."""
-    check(depth < 16, "the tree is deeper than 16 levels")
-    for child in await node.get_children():
-        cls = await child.read_node_class()
-        if cls == ua.NodeClass.Variable:
-            found.append(child)
-        elif cls == ua.NodeClass.Object:
-            if "#alarm" in str(child.nodeid.Identifier):
-                continue  # an alarm's condition: opcua_alarms.py checks those
-            await browse_variables(child, found, depth + 1)
-
-
-async def status_of(client, node_id, attribute=ua.AttributeIds.Value):
-    """The DataValue of an attribute, a bad status included (asyncua's own read raises)."""
-    res = await client.uaclient.read(ua.ReadParameters(NodesToRead=[
-        ua.ReadValueId(NodeId=node_id, AttributeId=attribute)]))
-    return res[0]
-
-
-async def write_status(client, node_id, variant):
-    params = ua.WriteParameters(NodesToWrite=[ua.WriteValue(
-        NodeId=node_id, AttributeId=ua.AttributeIds.Value, Value=ua.DataValue(variant))])
-    return (await client.uaclient.write(params))[0]
-
-
-async def write_range(client, node_id, values, index_range):
-    variant = ua.Variant(values, ua.VariantType.Int16)
-    params = ua.WriteParameters(NodesToWrite=[ua.WriteValue(
-        NodeId=node_id, AttributeId=ua.AttributeIds.Value, IndexRange=index_range,
-        Value=ua.DataValue(variant))])
-    return (await client.uaclient.write(params))[0]
-
-
-def expect_status(status, name, what):
-    check(status.name == name, f"{what}: expected {name}, got {status.name}")
-    ok(f"{what}: {name}")
+from opcua_common import (
+    DATA_TYPES,
+    Failed,
+    READ,
+    WRITE,
+    browse_variables,
+    check,
+    expect_status,
+    flatten,
+    ok,
+    plc,
+    plc_get,
+    same_value,
+    status_of,
+    user_client,
+    write_range,
+    write_status,
+)
+from opcua_attack import run_attack, run_read100
 
 
 async def address_space(client, segment, variables):
@@ -566,42 +441,6 @@ async def run_ranges(url, segment, user, password, pki, workdir):
         ok("1,100 elements whole: BadTooManyOperations at once; in two parts: applied")
 
 
-async def user_client(url, user, password, pki, workdir):
-    """A user's client as a careful HMI connects: Basic256Sha256 Sign, its certificate trusted
-    by the server (placed in the server's pki/trusted/ under the name the server looks for)."""
-    key, cert = Path(workdir) / "hmi-key.pem", Path(workdir) / "hmi-cert.der"
-    app_uri = "urn:plc-vars:test-hmi"
-    async def make():
-        # Patient: a name that failed waits up to 5 s before its password is checked.
-        client = Client(url, timeout=30)
-        client.application_uri = app_uri
-        client.set_user(user)
-        client.set_password(password)
-        await client.set_security(security_policies.SecurityPolicyBasic256Sha256, str(cert),
-                                  str(key), mode=ua.MessageSecurityMode.Sign)
-        return client
-
-    if not cert.exists():
-        await setup_self_signed_certificate(key, cert, app_uri, socket.gethostname(),
-                                            [ExtendedKeyUsageOID.CLIENT_AUTH], {"commonName": "plc-vars hmi"})
-        # As an operator trusts a new HMI: its first try is refused and its certificate kept
-        # in pki/rejected/, from where it is moved to pki/trusted/.
-        try:
-            first = await make()
-            await first.connect()
-            await first.disconnect()
-            raise Failed("an untrusted HMI certificate was accepted")
-        except Failed:
-            raise
-        except Exception:
-            pass
-        thumbprint = hashlib.sha1(cert.read_bytes()).hexdigest()
-        found = [f for f in (Path(pki) / "rejected").glob("*.der") if f"[{thumbprint}]" in f.name]
-        check(len(found) == 1, f"the HMI's certificate is not in {pki}/rejected")
-        shutil.move(str(found[0]), str(Path(pki) / "trusted" / found[0].name))
-    return await make()
-
-
 async def unsigned_user_refused(url, user, password):
     """A user over None: the None endpoint offers no user name, and a client that sends one
     anyway is refused; the session never gets to write."""
@@ -687,209 +526,6 @@ async def run_released(url, segment, user, password, pki, workdir):
             check(time.time() < deadline, f"setpoint: expected 7.0, still {got}")
             await asyncio.sleep(0.02)
         ok("setpoint reads 7.0")
-
-
-# The client address a connection comes from (loopback: every 127.0.0.0/8 address is this
-# machine's), set per task; asyncua has no option for it.
-SOURCE = contextvars.ContextVar("SOURCE", default=None)
-_create_connection = asyncio.base_events.BaseEventLoop.create_connection
-
-
-async def _create_connection_from(self, factory, host=None, port=None, **kw):
-    if SOURCE.get() and "sock" not in kw:
-        kw.setdefault("local_addr", (SOURCE.get(), 0))
-    return await _create_connection(self, factory, host, port, **kw)
-
-
-asyncio.base_events.BaseEventLoop.create_connection = _create_connection_from
-
-
-def figure(name, value):
-    print(f"figure: {name}: {value}", flush=True)
-
-
-def peak_memory_mb(pid):
-    for line in Path(f"/proc/{pid}/status").read_text().splitlines():
-        if line.startswith("VmHWM:"):
-            return int(line.split()[1]) / 1024
-    raise Failed("no VmHWM")
-
-
-async def run_read100(url, segment, seconds):
-    """Reads 100 nodes again and again for `seconds` from 127.0.0.3; prints the latencies."""
-    SOURCE.set("127.0.0.3")
-    async with Client(url) as client:
-        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
-        nodes = [client.get_node(ua.NodeId(n, ns)) for n in READ_NODES] * 20
-        nodes = nodes[:100]
-        latencies = []
-        end = time.time() + float(seconds)
-        while time.time() < end:
-            t = time.perf_counter()
-            await client.read_values(nodes)
-            latencies.append((time.perf_counter() - t) * 1000)
-            await asyncio.sleep(0.01)
-    latencies.sort()
-    print(json.dumps({"n": len(latencies), "p50": latencies[len(latencies) // 2],
-                      "max": latencies[-1]}), flush=True)
-
-
-READ_NODES = ["state_cycles", "test_speed_mm_s", "force_kn", "elongation_mm", "cmd_start"]
-
-
-async def sessions_from_one_address(url, segment, user, password, pki, workdir):
-    """30 anonymous sessions from 127.0.0.1: the address's share is held, the rest refused
-    with BadTooManySessions; then an operator from 127.0.0.2 signs in and writes."""
-    SOURCE.set("127.0.0.1")
-    held, refused = [], []
-    for _ in range(30):
-        c = Client(url, timeout=10)
-        try:
-            await c.connect()
-            held.append(c)
-        except Exception as e:
-            refused.append(f"{type(e).__name__}: {e}")
-    figure("anonymous_sessions_held_of_30_from_one_address", len(held))
-    check(len(held) == 10, f"{len(held)} of 30 anonymous sessions from one address held")
-    check(all("BadTooManySessions" in r for r in refused), f"refused as: {set(refused)}")
-    ok(f"30 anonymous sessions from 127.0.0.1: {len(held)} held, {len(refused)} refused "
-       "(BadTooManySessions)")
-    SOURCE.set("127.0.0.2")
-    op = await user_client(url, user, password, pki, workdir)
-    t = time.perf_counter()
-    async with op:
-        figure("operator_sign_in_ms_beside_30_anonymous", round((time.perf_counter() - t) * 1000))
-        ns = await op.get_namespace_index(f"urn:plc-vars:{segment}")
-        status = await write_status(op, ua.NodeId("test_speed_mm_s", ns),
-                                    ua.Variant(2.75, ua.VariantType.Double))
-        expect_status(status, "Good", "the operator's write from 127.0.0.2")
-    ok("an operator from 127.0.0.2 signs in over Sign and writes while they are held")
-    for c in held:
-        await c.disconnect()
-    SOURCE.set(None)
-
-
-async def monitored_items_flood(url, segment, seconds=8):
-    """100,000 monitored items in one call are refused, 10,000 accepted, while another
-    client's Reads of 100 nodes (another process, from 127.0.0.3) stay fast."""
-    reader = await asyncio.create_subprocess_exec(
-        sys.executable, __file__, "read100", url, segment, str(seconds),
-        stdout=asyncio.subprocess.PIPE)
-    await asyncio.sleep(1.5)
-    SOURCE.set("127.0.0.4")
-    async with Client(url, timeout=30) as client:
-        ns = await client.get_namespace_index(f"urn:plc-vars:{segment}")
-        sub = await client.create_subscription(100, None)
-        node_ids = [ua.NodeId(n, ns) for n in READ_NODES]
-
-        def requests(n):
-            out = []
-            for k in range(n):
-                p = ua.MonitoringParameters()
-                p.ClientHandle = k
-                p.SamplingInterval = 100
-                p.QueueSize = 1
-                r = ua.MonitoredItemCreateRequest()
-                r.ItemToMonitor = ua.ReadValueId(NodeId=node_ids[k % len(node_ids)],
-                                                 AttributeId=ua.AttributeIds.Value)
-                r.MonitoringMode = ua.MonitoringMode.Reporting
-                r.RequestedParameters = p
-                out.append(r)
-            return out
-
-        t = time.perf_counter()
-        try:
-            await sub.create_monitored_items(requests(100_000))
-            raise Failed("100,000 monitored items in one call were accepted")
-        except Failed:
-            raise
-        except Exception as e:
-            # Refused while it is decoded (an array longer than the server's bound) or by the
-            # per-call limit: either way before any item is made.
-            check(any(c in str(e) for c in ("BadDecodingError", "BadTooManyOperations",
-                                            "BadTooManyMonitoredItems", "BadRequestTooLarge")),
-                  f"100,000 items refused, but as {type(e).__name__}: {e}")
-            why = type(e).__name__
-        figure("monitored_items_100k_refused_ms", round((time.perf_counter() - t) * 1000))
-        ok(f"100,000 monitored items in one CreateMonitoredItems: refused ({why})")
-        t = time.perf_counter()
-        results = await sub.create_monitored_items(requests(10_000))
-        check(len(results) == 10_000, f"{len(results)} results")
-        figure("monitored_items_10k_created_ms", round((time.perf_counter() - t) * 1000))
-        ok("10,000 monitored items in one call (a plant's every variable): accepted")
-        await asyncio.sleep(2)
-        await sub.delete()
-    out, _ = await reader.communicate()
-    got = json.loads(out.decode().strip().splitlines()[-1])
-    figure("read_100_nodes_p50_ms_under_monitored_items_flood", round(got["p50"], 1))
-    figure("read_100_nodes_max_ms_under_monitored_items_flood", round(got["max"], 1))
-    check(got["n"] > 10, f"only {got['n']} Reads in {seconds} s")
-    check(got["p50"] < 100 and got["max"] < 1000,
-          f"Reads of 100 nodes slowed: p50 {got['p50']:.1f} ms, max {got['max']:.1f} ms")
-    ok(f"another client's Read of 100 nodes meanwhile: p50 {got['p50']:.1f} ms, "
-       f"max {got['max']:.1f} ms ({got['n']} Reads)")
-
-
-async def sign_in_flood(url, segment, user, password, pki, workdir, server_pid):
-    """200 failed sign-ins, 40 at a time from 40 addresses, half with the operator's name and
-    half with names nobody has: the server's memory stays bounded and the operator's own
-    sign-in works."""
-    before = peak_memory_mb(server_pid)
-    queue = list(range(200))
-    failed, other = 0, []
-
-    async def attacker(k):
-        nonlocal failed
-        SOURCE.set(f"127.0.1.{k + 10}")
-        while queue:
-            n = queue.pop()
-            name = user if n % 2 else f"nobody{n}"
-            c = await user_client(url, name, "wrong password", pki, workdir)
-            try:
-                await c.connect()
-                other.append("a wrong password was accepted")
-                await c.disconnect()
-            except Exception as e:
-                if "BadUserAccessDenied" in str(e) or "BadIdentityTokenRejected" in str(e):
-                    failed += 1
-                else:
-                    other.append(f"{type(e).__name__}: {e}")
-
-    t = time.perf_counter()
-    # In two halves, to see whether the peak keeps growing with the count.
-    all_ = queue
-    queue = all_[:100]
-    await asyncio.wait_for(asyncio.gather(*(attacker(k) for k in range(40))), 120)
-    half = peak_memory_mb(server_pid)
-    queue = all_[100:]
-    await asyncio.wait_for(asyncio.gather(*(attacker(k) for k in range(40))), 120)
-    flood_s = time.perf_counter() - t
-    figure("server_peak_memory_mb_after_100_failed_sign_ins", round(half))
-    check(not other, f"sign-ins ended otherwise: {set(other)}")
-    check(failed == 200, f"{failed} of 200 failed")
-    peak = peak_memory_mb(server_pid)
-    figure("sign_in_flood_200_seconds", round(flood_s, 1))
-    figure("server_peak_memory_mb_before_sign_in_flood", round(before))
-    figure("server_peak_memory_mb_after_sign_in_flood", round(peak))
-    # Before the sign-in checks had threads of their own and a bound, the same flood took the
-    # server from 221 to 1,983 MB.
-    check(peak - before < 500, f"the server's peak memory grew from {before:.0f} to {peak:.0f} MB")
-    ok(f"200 failed sign-ins (40 at a time) in {flood_s:.1f} s: the server's peak memory "
-       f"{before:.0f} -> {peak:.0f} MB")
-    SOURCE.set("127.0.0.5")
-    t = time.perf_counter()
-    async with await user_client(url, user, password, pki, workdir) as op:
-        ms = round((time.perf_counter() - t) * 1000)
-        figure("operator_sign_in_ms_after_flood", ms)
-        ns = await op.get_namespace_index(f"urn:plc-vars:{segment}")
-        await op.get_node(ua.NodeId("state_cycles", ns)).read_value()
-    ok(f"the operator's own sign-in after the flood works ({ms} ms: its name's wait included)")
-
-
-async def run_attack(url, segment, user, password, pki, workdir, server_pid):
-    await sessions_from_one_address(url, segment, user, password, pki, workdir)
-    await monitored_items_flood(url, segment)
-    await sign_in_flood(url, segment, user, password, pki, workdir, server_pid)
 
 
 def main():
