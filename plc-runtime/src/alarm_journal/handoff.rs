@@ -9,7 +9,7 @@
 //! if the writer holds the lock (for a swap of two vectors) through every try, or the queue is
 //! full, the transition is counted and the journal summarises it.
 
-use super::writer::Msg;
+use super::message::Msg;
 use std::sync::{Mutex, TryLockError};
 
 /// Tries of the lock before a transition is counted instead: the writer holds it for a few

@@ -3,8 +3,9 @@
 
 use super::file::{self, JournalFile};
 use super::handoff::Handoff;
+use super::message::Msg;
 use super::read::Contents;
-use super::writer::{Counters, JournalSender, Msg, Writer};
+use super::writer::{Counters, JournalSender, Writer};
 use super::{DEFAULT_CAPACITY, JournalError};
 use std::path::{Path, PathBuf};
 use std::sync::Arc;

@@ -82,6 +82,7 @@ mod file;
 mod frame;
 mod handoff;
 mod journal;
+mod message;
 mod read;
 mod record;
 mod replay;

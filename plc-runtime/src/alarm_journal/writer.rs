@@ -7,35 +7,18 @@
 use super::file::JournalFile;
 use super::frame::{Item, encode};
 use super::handoff::Handoff;
+use super::message::Msg;
 use super::record::{Entry, MAX_PATH, Operator, Record, bounded};
 use super::{JournalError, JournalOptions};
 use plc_core::alarm::AlarmEvent;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicI64, AtomicU64, Ordering::Relaxed};
-use std::sync::mpsc::{Receiver, RecvTimeoutError, SyncSender};
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::time::{Duration, Instant};
 
 /// How often the writer takes what the cycle queued: each transition is on disk well within
 /// a second, and an idle writer wakes 20 times a second for a look at an empty vector.
 pub(super) const POLL: Duration = Duration::from_millis(50);
-
-/// What goes through the queue. An evaluator's transition is plain data and the path table is
-/// shared, so handing one over allocates nothing.
-pub(super) enum Msg {
-    Event {
-        paths: Arc<[String]>,
-        event: AlarmEvent,
-        value: f64,
-    },
-    Action {
-        paths: Arc<[String]>,
-        event: AlarmEvent,
-        by: Box<Operator>,
-    },
-    /// Answer once everything before is on disk (on the control channel).
-    Flush(SyncSender<()>),
-    Stop,
-}
 
 /// What was not recorded one by one, counted by whoever found the queue full.
 pub(super) struct Counters {
