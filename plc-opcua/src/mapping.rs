@@ -4,8 +4,8 @@
 
 use opcua::nodes::AccessLevel;
 use opcua::types::{
-    Array, DataTypeId, DataValue, DateTime, NodeId, NumericRange, StatusCode, Variant,
-    VariantScalarTypeId,
+    Array, DataTypeId, DataValue, DateTime, NodeId, NumericRange, StatusCode, TimestampsToReturn,
+    Variant, VariantScalarTypeId,
 };
 use plc_core::{FixedString, IecType, Value, ValueError};
 use plc_shm::{OwnerState, ShmError, VarDescriptor};
@@ -372,6 +372,24 @@ pub fn status_only(status: StatusCode) -> DataValue {
         server_timestamp: Some(DateTime::now()),
         server_picoseconds: None,
     }
+}
+
+/// `dv` with only the timestamps a client asked for (a Read's or a monitored item's
+/// `TimestampsToReturn`).
+pub fn keep_timestamps(mut dv: DataValue, timestamps: TimestampsToReturn) -> DataValue {
+    if matches!(
+        timestamps,
+        TimestampsToReturn::Server | TimestampsToReturn::Neither
+    ) {
+        dv.source_timestamp = None;
+    }
+    if matches!(
+        timestamps,
+        TimestampsToReturn::Source | TimestampsToReturn::Neither
+    ) {
+        dv.server_timestamp = None;
+    }
+    dv
 }
 
 /// OPC UA's DateTime (100 ns ticks since 1601-01-01) of a cycle stamped `ns` nanoseconds after

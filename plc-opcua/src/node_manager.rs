@@ -319,17 +319,5 @@ fn ranged(mut dv: DataValue, range: &NumericRange, timestamps: TimestampsToRetur
             None => {}
         }
     }
-    if matches!(
-        timestamps,
-        TimestampsToReturn::Server | TimestampsToReturn::Neither
-    ) {
-        dv.source_timestamp = None;
-    }
-    if matches!(
-        timestamps,
-        TimestampsToReturn::Source | TimestampsToReturn::Neither
-    ) {
-        dv.server_timestamp = None;
-    }
-    dv
+    mapping::keep_timestamps(dv, timestamps)
 }

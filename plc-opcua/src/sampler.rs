@@ -307,7 +307,7 @@ impl Snapshot<'_> {
         // The whole node's status, also for an index range that leaves its forced element out:
         // the node is what a client monitors.
         let forced = mapping::holds_force(self.forced, node.index, node.first_leaf, var.elements());
-        let mut dv = DataValue {
+        let dv = DataValue {
             value: Some(variant),
             status: Some(mapping::forced_status(self.status, forced)),
             source_timestamp: self.source,
@@ -315,19 +315,7 @@ impl Snapshot<'_> {
             server_timestamp: Some(DateTime::now()),
             server_picoseconds: None,
         };
-        if matches!(
-            timestamps,
-            TimestampsToReturn::Server | TimestampsToReturn::Neither
-        ) {
-            dv.source_timestamp = None;
-        }
-        if matches!(
-            timestamps,
-            TimestampsToReturn::Source | TimestampsToReturn::Neither
-        ) {
-            dv.server_timestamp = None;
-        }
-        dv
+        mapping::keep_timestamps(dv, timestamps)
     }
 }
 

@@ -28,8 +28,9 @@ impl RuntimeAlarms {
         if command.all {
             let mut done = 0;
             for i in 0..self.len() {
-                done += usize::from(self.act_on(i, by.clone(), step).is_ok());
+                done += usize::from(self.act_on(i, &by, step).is_ok());
             }
+            self.recount();
             return match done {
                 0 => Err(AlarmRefusal {
                     which: 0,
@@ -49,8 +50,9 @@ impl RuntimeAlarms {
         }
         for &i in &command.alarms {
             // The trial took each: the same steps on the same states take them again.
-            let _ = self.act_on(i, by.clone(), step);
+            let _ = self.act_on(i, &by, step);
         }
+        self.recount();
         Ok(())
     }
 }

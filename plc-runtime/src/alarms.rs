@@ -248,7 +248,7 @@ impl RuntimeAlarms {
 
     /// Counts again if a transition or an action happened since the last count: one walk
     /// over the alarms then, none in a cycle where nothing happened.
-    fn recount(&mut self) {
+    pub(crate) fn recount(&mut self) {
         if !std::mem::take(&mut self.recount) {
             return;
         }
@@ -363,27 +363,30 @@ impl RuntimeAlarms {
         let i = self
             .find(path)
             .ok_or_else(|| AlarmActionError::Unknown { path: path.into() })?;
-        self.act_on(i, by, action)
+        self.act_on(i, &by, action)
             .map_err(|error| AlarmActionError::Refused {
                 path: path.into(),
                 error,
-            })
+            })?;
+        self.recount();
+        Ok(())
     }
 
     /// Does `action` to alarm `i` (a number below [`len`](Self::len)) for `by`, journaled.
+    /// The counts are due again: the caller counts once after all its actions
+    /// ([`recount`](Self::recount)), not once an alarm.
     pub(crate) fn act_on(
         &mut self,
         i: usize,
-        by: Operator,
+        by: &Operator,
         action: impl FnOnce(&mut Alarms, usize, &str) -> Result<AlarmEvent, ActionError>,
     ) -> Result<(), ActionError> {
         let event = action(&mut self.alarms, i, &by.user)?;
         if let Some(sender) = &self.sender {
-            sender.record_action(&event, by);
+            sender.record_action(&event, by.clone());
         }
         self.mark(i);
         self.recount = true;
-        self.recount();
         Ok(())
     }
 

@@ -193,13 +193,10 @@ where
             // Forces after the writes: a forced value is what the program reads, whatever
             // the bus or a tool gave it.
             if let Some(shm) = shm.as_mut() {
-                if alarmed {
-                    // Operators' actions on alarms come with the writes, in their order.
-                    let alarms = &mut ctx.alarms;
-                    shm.apply_requests_with_alarms(&mut ctx.gm, |_, _| {}, |c| alarms.command(c));
-                } else {
-                    shm.apply_requests(&mut ctx.gm);
-                }
+                // Operators' actions on alarms come with the writes, in their order (a
+                // program without alarms gets none: its socket refuses them).
+                let alarms = &mut ctx.alarms;
+                shm.apply_requests_with_alarms(&mut ctx.gm, |_, _| {}, |c| alarms.command(c));
                 shm.apply_forces(&mut ctx.gm);
             }
             #[cfg(feature = "cycle-probe")]

@@ -53,12 +53,7 @@ pub fn run(action: AlarmAction, args: &ActArgs) -> Result<(), Error> {
 
 /// Runs `plc shelve`.
 pub fn shelve(args: &ShelveArgs) -> Result<(), Error> {
-    let literal = if args.duration.contains('#') {
-        args.duration.trim().to_string()
-    } else {
-        format!("T#{}", args.duration.trim())
-    };
-    let time = plc_core::Time::parse(&literal).map_err(|e| {
+    let time = super::duration(&args.duration).map_err(|e| {
         format!(
             "--for {:?}: not a duration such as `30m`, `1h` or `T#2h30m`: {e}",
             args.duration

@@ -68,12 +68,7 @@ fn since_ns(text: &str) -> Result<i64, Error> {
     if let Some(ns) = plc_shm::parse_utc(text) {
         return Ok(ns);
     }
-    let literal = if text.contains('#') {
-        text.trim().to_string()
-    } else {
-        format!("T#{}", text.trim())
-    };
-    let ago = plc_core::Time::parse(&literal).map_err(|e| {
+    let ago = super::duration(text).map_err(|e| {
         format!(
             "--since {text:?}: neither a UTC time (`2026-12-05 14:00`) nor how long ago (`2h`, \
              `30m`): {e}"

@@ -37,6 +37,16 @@ pub fn period_of(rate: f64, max: f64, what: &str) -> Result<std::time::Duration,
     Ok(std::time::Duration::from_secs_f64(1.0 / rate))
 }
 
+/// A duration as an operator writes it: `30m`, `1h`, or an IEC literal such as `T#2h30m`.
+pub fn duration(text: &str) -> Result<plc_core::Time, plc_core::TimeError> {
+    let text = text.trim();
+    if text.contains('#') {
+        plc_core::Time::parse(text)
+    } else {
+        plc_core::Time::parse(&format!("T#{text}"))
+    }
+}
+
 /// Whether `spec` names a value inside a structure or by coordinates (`axes[1].pos`,
 /// `grid[1,2]`), or a structured variable: such names go through the paths of the
 /// segment's descriptor.

@@ -13,8 +13,8 @@ pub struct Marks {
     forced_vars: HashSet<usize>,
     /// The values alarms watch, (variable, leaf) -> the alarms' numbers.
     alarm_leaves: HashMap<(usize, usize), Vec<usize>>,
-    /// The variables holding one.
-    alarm_vars: HashSet<usize>,
+    /// The same by variable: a line of a whole variable looks up its own alarms, not all.
+    alarm_vars: HashMap<usize, Vec<usize>>,
     /// The alarms that want an operator's eye now (active or unacknowledged).
     alarmed: HashSet<usize>,
 }
@@ -34,14 +34,16 @@ impl Marks {
     /// The alarm marks of `seg`'s declaration, nothing forced or alarmed yet.
     pub fn new(seg: &DynSegment) -> Marks {
         let mut alarm_leaves: HashMap<(usize, usize), Vec<usize>> = HashMap::new();
+        let mut alarm_vars: HashMap<usize, Vec<usize>> = HashMap::new();
         for (n, a) in seg.alarms().iter().enumerate() {
             alarm_leaves
                 .entry((a.variable, a.leaf))
                 .or_default()
                 .push(n);
+            alarm_vars.entry(a.variable).or_default().push(n);
         }
         Marks {
-            alarm_vars: alarm_leaves.keys().map(|&(v, _)| v).collect(),
+            alarm_vars,
             alarm_leaves,
             forced: HashSet::new(),
             forced_vars: HashSet::new(),
@@ -78,11 +80,8 @@ impl Marks {
         match (var, leaf) {
             (Some(v), _) => Mark {
                 forced: self.forced_vars.contains(&v),
-                alarm: self.alarm_vars.contains(&v),
-                alarmed: self
-                    .alarm_leaves
-                    .iter()
-                    .any(|(&(av, _), numbers)| av == v && alarmed(numbers)),
+                alarm: self.alarm_vars.contains_key(&v),
+                alarmed: self.alarm_vars.get(&v).is_some_and(alarmed),
             },
             (None, Some(at)) => Mark {
                 forced: self.forced.contains(&at),
