@@ -54,4 +54,7 @@ if ! "$spb_venv/bin/python" -c "import pysparkplug, sys; sys.exit(pysparkplug.__
 fi
 export PLC_SPARKPLUG_PYTHON="$PWD/$spb_venv/bin/python"
 
+# The loader's tests load real program modules: cargo builds a `cdylib` only when asked.
+cargo build -p plc-test-module-counter -p plc-test-module-foreign
+
 cargo test --workspace "$@"

@@ -16,6 +16,15 @@ pub struct BitMapping {
     pub bit: u8,
 }
 
+/// A bus description compiled into a program: `#[plc(bus = "bus/machine.toml")]`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BusSource {
+    /// The path as the attribute wrote it (relative to the crate's directory).
+    pub file: &'static str,
+    /// The file's text when the program was compiled.
+    pub text: &'static str,
+}
+
 /// Everything a tool needs to know about one variable: its name, type, place in the image,
 /// links and attributes. The derive builds one per field, in declaration order.
 ///
@@ -306,6 +315,11 @@ pub trait GlobalMemory: Sized {
     /// instance. Empty unless the derive says otherwise, so impls written by hand need not
     /// name it. See [`alarm`](crate::alarm).
     const ALARMS: &'static [crate::alarm::AlarmDecl] = &[];
+
+    /// The bus description the struct was checked against (`#[plc(bus = "...")]`), if it
+    /// names one: a program built as a module hands it to its host, which runs that bus
+    /// unless told otherwise.
+    const BUS: Option<BusSource> = None;
 
     /// Copies each bit-mapped bool out of its source word (the JSON variable-list format: after reading inputs).
     fn unpack_bits(&mut self);

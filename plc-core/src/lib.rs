@@ -56,9 +56,14 @@ pub mod write;
 #[allow(missing_docs)]
 pub mod __private;
 
+/// This crate's version: part of the fingerprint a program module and its host compare, since
+/// both must agree on the image format it defines.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
 pub use fixed_string::{FixedString, Truncated};
 pub use global_memory::{
-    Access, BitMapping, Direction, GlobalMemory, Location, SetError, VarInfo, layout_hash,
+    Access, BitMapping, BusSource, Direction, GlobalMemory, Location, SetError, VarInfo,
+    layout_hash,
 };
 pub use plc_rules::{
     AddressError, AddressErrorKind, Area, IecAddress, IecType, Size, Time, TimeError, TypeFamily,

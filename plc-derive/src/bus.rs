@@ -100,3 +100,23 @@ pub fn track(path: Option<&PathBuf>) -> TokenStream {
         None => TokenStream::new(),
     }
 }
+
+/// `const BUS = Some(("bus/machine.toml", include_str!("...")))` in the impl: the description
+/// as written and its text, which a program built as a module hands its host, so the host
+/// runs the bus it was compiled against.
+pub fn constant(c: &Container, path: Option<&PathBuf>) -> TokenStream {
+    match (c.bus.as_ref(), path.and_then(|p| p.to_str())) {
+        (Some(bus), Some(p)) => {
+            let written = &bus.value;
+            let krate = &c.krate;
+            quote!(
+                const BUS: ::core::option::Option<#krate::BusSource> =
+                    ::core::option::Option::Some(#krate::BusSource {
+                        file: #written,
+                        text: ::core::include_str!(#p),
+                    });
+            )
+        }
+        _ => TokenStream::new(),
+    }
+}

@@ -7,6 +7,8 @@
 //!   alarms evaluated, bit packing, publishing, retaining.
 //! - `ethercat` (feature `ethercat`, default): EtherCAT I/O through ethercrab, on real
 //!   hardware or the simulated bus of `ethercat-sim`.
+//! - `module` (feature `module`, default): [`program!`] builds a program as a loadable module,
+//!   which a host runs and swaps for a new build between two cycles.
 //! - `import`: JSON and CSV variable lists to Rust (feature `import`), and back (feature
 //!   `export`).
 //!
@@ -21,6 +23,12 @@
 pub use plc_ethercat as ethercat;
 #[cfg(any(feature = "import", feature = "export"))]
 pub use plc_import as import;
+#[cfg(feature = "module")]
+pub use plc_module as module;
+/// Makes a `cdylib` crate a program module that `plc run` runs and `plc change` swaps in: see
+/// [`module`].
+#[cfg(feature = "module")]
+pub use plc_module::program;
 #[cfg(feature = "runtime")]
 pub use plc_runtime::{alarm_journal, retain};
 #[cfg(feature = "shm")]

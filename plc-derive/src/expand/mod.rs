@@ -34,6 +34,7 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
     check::check(&mut c, &mut cx);
     let bus_file = crate::bus::check(&c, &mut cx);
     let tracked = crate::bus::track(bus_file.as_ref());
+    let bus_const = crate::bus::constant(&c, bus_file.as_ref());
     // Type-dependent checks run whatever else failed, so all mistakes show at once.
     let asserts = asserts::expand(&c);
     if cx.has_errors() {
@@ -90,6 +91,7 @@ pub fn derive(input: &DeriveInput, kind: Kind) -> TokenStream {
                 type Image = #image_ident;
                 #(#body)*
                 #alarm_assoc
+                #bus_const
             }
 
             #[automatically_derived]

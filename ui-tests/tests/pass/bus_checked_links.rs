@@ -16,6 +16,20 @@ pub struct Gm {
     horn: bool,
 }
 
+/// A struct without a bus description has none to hand a host.
+#[derive(GlobalMemory, Debug, Clone)]
+pub struct NoBus {
+    count: u16,
+}
+
 fn main() {
     assert_eq!(Gm::VARIABLES.len(), 4);
+    // The description as written and its text, which a program module hands its host.
+    let bus = Gm::BUS.expect("the struct names a bus description");
+    assert_eq!(bus.file, "../examples/bus/tensile_tester.toml");
+    assert_eq!(
+        bus.text,
+        include_str!("../../../examples/bus/tensile_tester.toml")
+    );
+    assert_eq!(NoBus::BUS, None);
 }
