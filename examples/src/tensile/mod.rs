@@ -14,13 +14,14 @@
 //! servo axis's part of the program, `plant` the machine.
 
 pub mod crosshead;
+pub mod drive;
 pub mod plant;
 mod program;
 #[cfg(test)]
 mod tests;
 mod vars;
 
-pub use program::{TickInfo, process_tick};
+pub use program::{TickInfo, process_tick, tick};
 pub use vars::{Axis, Gm, State, axis};
 
 use ethercat_sim::{Device, SimBus};

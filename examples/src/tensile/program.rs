@@ -208,3 +208,15 @@ fn update_axes(gm: &mut Gm, state: State) {
     gm.axes[axis::LIFT].pos_mm = if gm.ls_lift_neg { 0.0 } else { 5.0 };
     gm.axes[axis::CENTERING].pos_mm = if state == State::Idle { 20.0 } else { 0.0 };
 }
+
+/// The program's tick as a runtime or a module host calls it: [`process_tick`] with the
+/// cycle's facts. All of the program's state is in [`Gm`] (its function block instances and
+/// axes included), so a new build taking over between two cycles carries it on.
+pub fn tick(ctx: &mut plc_io::Context<Gm>) {
+    let info = TickInfo {
+        period: ctx.stats.period,
+        inputs_valid: ctx.inputs_valid,
+        now: ctx.now(),
+    };
+    process_tick(&mut ctx.gm, info);
+}
