@@ -14,6 +14,10 @@ use std::fmt;
 const OUTPUTS: u8 = 3;
 const INPUTS: u8 = 4;
 
+/// The problem of a link on a bus made without a description.
+const NO_NAMES: &str = "this bus was made from a list of devices, which names no entries: make \
+                        it with `SimBus::from_description` from the bus description";
+
 /// Why an I/O access by link name failed: the link and what to change.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LinkError {
@@ -128,6 +132,32 @@ impl SimBus {
         decode(link, &entry, &bytes)
     }
 
+    /// The direction of the entry `link` names, or why the bus has no such entry (as
+    /// [`set_input`](Self::set_input) refuses it): a check of a plant model's links before
+    /// the bus runs, when a device whose process data the MainDevice configures over CoE
+    /// (the AKD, the EL3004) has none to read yet.
+    ///
+    /// ```
+    /// use ethercat_sim::SimBus;
+    /// use plc_rules::bus::{devices, BusConfig, PdoDirection};
+    /// let bus = SimBus::from_description(&BusConfig {
+    ///     devices: vec![devices::ek1100("coupler"), devices::akd("axis")],
+    /// })?;
+    /// assert_eq!(bus.link_direction("ethercat.axis.statusword")?, PdoDirection::Input);
+    /// let err = bus.input::<u16>("ethercat.axis.statusword").unwrap_err();
+    /// assert!(err.to_string().contains("only once the bus went through PRE-OP"), "{err}");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn link_direction(&self, link: &str) -> Result<PdoDirection, LinkError> {
+        let error = |problem: String| LinkError {
+            link: link.to_owned(),
+            problem,
+        };
+        let layout = self.layout.as_ref().ok_or_else(|| error(NO_NAMES.into()))?;
+        let parsed = Link::parse(link).map_err(|e| error(e.to_string()))?;
+        find(layout, &parsed).map(|e| e.direction).map_err(error)
+    }
+
     /// Every link name of the bus description the bus was made from, in ring order and each
     /// device's entry order (inputs first); empty for a bus made from a list of devices.
     pub fn links(&self) -> Vec<String> {
@@ -154,11 +184,7 @@ impl SimBus {
             problem,
         };
         let Some(layout) = &self.layout else {
-            return Err(error(
-                "this bus was made from a list of devices, which names no entries: make it \
-                 with `SimBus::from_description` from the bus description"
-                    .into(),
-            ));
+            return Err(error(NO_NAMES.into()));
         };
         let parsed = Link::parse(link).map_err(|e| error(e.to_string()))?;
         let entry = find(layout, &parsed).map_err(error)?;
@@ -265,8 +291,10 @@ fn beyond(link: &str, entry: &EntryLayout, bytes: usize) -> LinkError {
         link: link.to_owned(),
         problem: format!(
             "the entry is bits {}..{} of the {} data of the device at ring position {}, which \
-             has {bytes} bytes of it: make the description's entries those of the device, as \
-             a bus scan reports them",
+             has {bytes} bytes of it now: a device whose process data the MainDevice configures \
+             over CoE (the AKD, the EL3004) has its size only once the bus went through \
+             PRE-OP; otherwise make the description's entries those of the device, as a bus \
+             scan reports them",
             entry.bit_offset,
             entry.bit_offset + entry.bits as usize,
             entry.direction,
