@@ -125,6 +125,33 @@ pub enum DescriptionError {
     },
 }
 
+impl DescriptionError {
+    /// The error with `origin` (a file name) as where the description came from, for a
+    /// description read by the caller and handed over as a `BusConfig`.
+    ///
+    /// ```
+    /// use ethercat_sim::SimBus;
+    /// use plc_rules::bus::{BusConfig, devices};
+    /// let mut drive = devices::akd("axis");
+    /// drive.identity.product = 0x1234;
+    /// let err = SimBus::from_description(&BusConfig { devices: vec![drive] }).unwrap_err();
+    /// let err = err.with_origin("bus/machine.toml");
+    /// assert!(err.to_string().starts_with("bus/machine.toml: no simulated bus: device `axis`"));
+    /// ```
+    pub fn with_origin(self, origin: impl Into<String>) -> Self {
+        match self {
+            DescriptionError::Refused(mut e) => {
+                e.source = origin.into();
+                DescriptionError::Refused(e)
+            }
+            DescriptionError::NoModel { devices, .. } => DescriptionError::NoModel {
+                origin: origin.into(),
+                devices,
+            },
+        }
+    }
+}
+
 /// A device of a description that the simulator has no model for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Unmodelled {

@@ -142,7 +142,10 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let (transport, tower, options) = match &args.interface {
         Some(name) => (Transport::Interface(name.clone()), None, Options::default()),
         None => {
-            let (transport, sim) = Transport::simulated(&config)?;
+            let (transport, sim) = Transport::simulated(&config).map_err(|e| match &args.bus {
+                Some(path) => e.with_origin(path.display().to_string()),
+                None => e.with_origin("the built-in bus description"),
+            })?;
             (transport, Some(sim), Options::simulated())
         }
     };
