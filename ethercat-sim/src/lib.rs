@@ -15,6 +15,14 @@
 //! - [`SimBus`]: devices in ring order; datagrams (APRD/APWR, FPRD/FPWR, BRD/BWR,
 //!   LRD/LWR/LRW, FRMW and the read-write variants) with working counters as real ESCs count
 //!   them; inputs, outputs and faults for tests.
+//! - Feature `description`: the bus from a bus description alone
+//!   (`SimBus::from_description`, `SimBus::from_description_file`: each device the
+//!   description lists becomes the model with its identity; a device without a model is
+//!   refused naming it), and its I/O by the link names of the description
+//!   (`SimBus::set_input("ethercat.lamps.green", true)`, `SimBus::input`, `SimBus::output`,
+//!   values as `LinkValue` converts them), for a plant model that animates a machine.
+//!   The description's format and link rules are plc-rules'; without the feature the
+//!   simulator depends on no plc crate.
 //! - [`inproc`]: the bus as ethercrab's network, in process, through its `PduTx`/`PduRx`.
 //! - [`raw`] (Linux): the bus behind a network interface (a veth pair), for a MainDevice
 //!   using its own raw socket.
@@ -86,6 +94,8 @@ mod bus;
 mod coe;
 mod datagram;
 mod dc;
+#[cfg(feature = "description")]
+mod description;
 mod device;
 pub mod esc;
 mod fault;
@@ -95,6 +105,8 @@ mod transport;
 pub use bus::{FrameCounters, REPLY_SOURCE, SimBus};
 pub use datagram::{Command, Datagram, ETHERTYPE, Malformed, datagram_frame};
 pub use dc::{HOP_NS, Sync0};
+#[cfg(feature = "description")]
+pub use description::{DescriptionError, LinkError, LinkValue, Unmodelled};
 pub use device::Device;
 pub use esc::EscInfo;
 pub use fault::SdoInfoFault;

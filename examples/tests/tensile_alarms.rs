@@ -5,7 +5,7 @@
 use examples::tensile::{self, Gm, TickInfo, process_tick};
 use plc_core::alarm::AlarmState;
 use plc_io::Runtime;
-use plc_io::ethercat::{BusConfig, EtherCatBackend, Options};
+use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport};
 use plc_io::shm::DynSegment;
 use std::os::unix::fs::DirBuilderExt;
 use std::sync::{Arc, Mutex};
@@ -52,12 +52,10 @@ fn a_normal_test_raises_no_alarm_and_an_open_guard_door_raises_one_and_holds_the
     let dir = std::env::temp_dir().join(format!("tensile-alarms-{id}"));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::DirBuilder::new().mode(0o700).create(&dir).unwrap();
-    let sim = tensile::simulated_bus();
-    let _plant = tensile::plant::Plant::spawn(sim.clone()).unwrap();
     let config = BusConfig::from_toml_str(tensile::BUS_TOML).unwrap();
-    let backend =
-        EtherCatBackend::<Gm>::new(config, tensile::sim_transport(sim), Options::simulated())
-            .unwrap();
+    let (transport, sim) = Transport::simulated(&config).unwrap();
+    let _plant = tensile::plant::Plant::spawn(sim).unwrap();
+    let backend = EtherCatBackend::<Gm>::new(config, transport, Options::simulated()).unwrap();
     let period = Duration::from_millis(1);
     let builder = Runtime::<Gm>::builder()
         .period(period)

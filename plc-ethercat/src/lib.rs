@@ -25,6 +25,10 @@
 //!
 //! [`scan`] reads a bus description from the SubDevices themselves, for commissioning.
 //!
+//! Feature `sim`: the simulated bus of `ethercat-sim` made from the bus description alone,
+//! with the transport to it (`Transport::simulated`) and its I/O by link name for a plant
+//! model (module `sim`), so a program needs no dependency on the simulator.
+//!
 //! Feature `backend` (default) builds the runtime's backend (step 3); without it this crate
 //! is the bus description and the scan alone, for tools that never run a cycle.
 //!
@@ -72,6 +76,8 @@ mod process_data;
 mod recovery;
 pub mod resolve;
 pub mod scan;
+#[cfg(feature = "sim")]
+pub mod sim;
 #[cfg(feature = "backend")]
 mod startup;
 #[cfg(feature = "backend")]

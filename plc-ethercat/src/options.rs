@@ -27,7 +27,9 @@ impl Transport {
     /// (usually on a thread of its own), returning a guard kept until the bus stops.
     ///
     /// With the simulated bus of `ethercat-sim`:
-    /// `Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus))))`.
+    /// `Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus))))`,
+    /// which feature `sim` writes for you: `Transport::simulated(&bus_config)` makes the
+    /// simulated bus from the description and the transport to it.
     pub fn custom(
         start: impl FnOnce(PduTx<'static>, PduRx<'static>) -> std::io::Result<DriverGuard>
         + Send

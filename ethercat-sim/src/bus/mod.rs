@@ -52,6 +52,9 @@ struct Ring {
 #[derive(Clone)]
 pub struct SimBus {
     ring: Arc<Mutex<Ring>>,
+    /// The names of the bus description the bus was made from, for I/O by link name.
+    #[cfg(feature = "description")]
+    pub(crate) layout: Option<Arc<plc_rules::bus::BusLayout>>,
 }
 
 impl std::fmt::Debug for SimBus {
@@ -107,6 +110,8 @@ impl SimBus {
                 epoch: Instant::now(),
                 now: 0,
             })),
+            #[cfg(feature = "description")]
+            layout: None,
         }
     }
 
@@ -116,7 +121,7 @@ impl SimBus {
         self.ring.lock().unwrap_or_else(|e| e.into_inner())
     }
 
-    fn with<R>(&self, pos: usize, f: impl FnOnce(&mut Device) -> R) -> R {
+    pub(crate) fn with<R>(&self, pos: usize, f: impl FnOnce(&mut Device) -> R) -> R {
         let mut ring = self.ring();
         let n = ring.devices.len();
         let d = ring

@@ -15,15 +15,17 @@
 //! `--cpu N` (run the cycle and the bus on CPU N, the runtime's other threads elsewhere),
 //! `--realtime-priority P` (SCHED_FIFO at P, 1 to 99: root or CAP_SYS_NICE).
 //!
-//! On the simulated bus (EK1100, EL1004, EL2889, EL2004 and an AKD servo drive moving the
-//! test crosshead) a model of the machine runs on a thread: it reads the drive outputs and the
-//! crosshead's position and sets the limit switches and the break detector, so the program
-//! runs one test after another. A status line is printed each second: the machine's state,
+//! Without `--interface` the bus is simulated, made from the bus description alone (the
+//! built-in one: EK1100, EL1004, EL2889, EL2004 and an AKD servo drive moving the test
+//! crosshead), and a model of the machine runs on a thread: it reads the drive outputs and the
+//! crosshead's position and sets the limit switches and the break detector by their link
+//! names, so the program runs one test after another. A status line is printed each second: the machine's state,
 //! the crosshead's position and PLCopen state, the force, and the signal tower's lamps.
 
 use examples::tensile;
 
 use plc_io::Runtime;
+use plc_io::ethercat::sim::SimBus;
 use plc_io::ethercat::{BusConfig, EtherCatBackend, Options, Transport};
 use plc_io::shm::DynSegment;
 use std::path::PathBuf;
@@ -137,20 +139,22 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         Some(path) => BusConfig::load(path)?,
         None => BusConfig::from_toml_str(tensile::BUS_TOML)?,
     };
-    let mut options = Options::default();
-    let mut _plant = None;
-    let mut tower = None;
-    let transport = match &args.interface {
-        Some(name) => Transport::Interface(name.clone()),
+    let (transport, tower, options) = match &args.interface {
+        Some(name) => (Transport::Interface(name.clone()), None, Options::default()),
         None => {
-            let sim = tensile::simulated_bus();
-            _plant = Some(tensile::plant::Plant::spawn(sim.clone())?);
-            tower = Some(sim.clone());
-            options = Options::simulated();
-            tensile::sim_transport(sim)
+            let (transport, sim) = Transport::simulated(&config).map_err(|e| match &args.bus {
+                Some(path) => e.with_origin(path.display().to_string()),
+                None => e.with_origin("the built-in bus description"),
+            })?;
+            (transport, Some(sim), Options::simulated())
         }
     };
     let backend = EtherCatBackend::<Gm>::new(config, transport, options)?;
+    // The machine's model, once the program's links are known to be good on this bus.
+    let _plant = match &tower {
+        Some(sim) => Some(tensile::plant::Plant::spawn(sim.clone())?),
+        None => None,
+    };
     let links = backend.bindings().count();
     let retain_dir = args.retain.clone().unwrap_or_else(default_retain_dir);
     let retain = retain_dir.join("tensile_tester.retain");
@@ -201,17 +205,18 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
 }
 
 /// What the simulated signal tower (the EL2004's four outputs) shows: `G y r h`, a capital
-/// for a lamp that is on, read from the terminal itself, as a look at the machine would
-/// (`plc force tensile_tester lamp_red=true` lights `R` whatever the program writes).
-fn tower_text(bus: &ethercat_sim::SimBus) -> String {
-    ["g", "y", "r", "h"]
+/// for a lamp that is on, read from the terminal itself by the program's link names, as a
+/// look at the machine would (`plc force tensile_tester lamp_red=true` lights `R` whatever
+/// the program writes).
+fn tower_text(bus: &SimBus) -> String {
+    ["green", "yellow", "red", "horn"]
         .iter()
-        .enumerate()
-        .map(|(bit, lamp)| {
-            if bus.output_bit(tensile::position::LAMPS, bit) {
-                lamp.to_uppercase()
-            } else {
-                lamp.to_string()
+        .map(|lamp| {
+            let letter = &lamp[..1];
+            match bus.output::<bool>(&format!("ethercat.lamps.{lamp}")) {
+                Ok(true) => letter.to_uppercase(),
+                Ok(false) => letter.to_string(),
+                Err(_) => "?".into(),
             }
         })
         .collect::<Vec<_>>()
@@ -222,7 +227,7 @@ fn tower_text(bus: &ethercat_sim::SimBus) -> String {
 /// with the simulated tower's lamps as the terminal shows them.
 fn status_line(
     segment: String,
-    tower: Option<ethercat_sim::SimBus>,
+    tower: Option<SimBus>,
     stop: plc_io::StopHandle,
 ) -> std::thread::JoinHandle<()> {
     std::thread::spawn(move || {

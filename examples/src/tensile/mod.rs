@@ -24,13 +24,17 @@ mod vars;
 pub use program::{TickInfo, process_tick, tick};
 pub use vars::{Axis, Gm, State, axis};
 
-use ethercat_sim::{Device, SimBus};
-use plc_io::ethercat::Transport;
+use plc_io::ethercat::sim::SimBus;
+use plc_io::ethercat::{BusConfig, Transport};
 
-/// The bus description of the example (`examples/bus/tensile_tester.toml`).
+/// The bus description of the example (`examples/bus/tensile_tester.toml`): the one place
+/// that lists the machine's devices, for the program's links, the real bus and the simulated
+/// one alike.
 pub const BUS_TOML: &str = include_str!("../../bus/tensile_tester.toml");
 
-/// Ring positions of the simulated SubDevices, as in the bus description.
+/// Ring positions of the devices in [`BUS_TOML`], for code that addresses the simulated
+/// devices or ethercrab's SubDevices by position (the benchmarks' direct loop); the plant
+/// model uses link names.
 pub mod position {
     /// EK1100 coupler.
     pub const COUPLER: usize = 0;
@@ -44,19 +48,24 @@ pub mod position {
     pub const CROSSHEAD: usize = 4;
 }
 
-/// The simulated machine: EK1100, EL1004, EL2889, EL2004 and an AKD servo drive in the ring
-/// order of [`BUS_TOML`].
+/// The simulated machine, made from [`BUS_TOML`] alone (an EK1100, an EL1004, an EL2889, an
+/// EL2004 and an AKD servo drive, in its ring order). For a description given at run time,
+/// use [`Transport::simulated`], which refuses a device without a model by name.
+///
+/// ```
+/// let bus = examples::tensile::simulated_bus();
+/// assert_eq!(bus.device_names(), ["EK1100", "EL1004", "EL2889", "EL2004", "AKD"]);
+/// ```
 pub fn simulated_bus() -> SimBus {
-    SimBus::new(vec![
-        Device::ek1100(),
-        Device::el1004(),
-        Device::el2889(),
-        Device::el2004(),
-        Device::akd(),
-    ])
+    let made = BusConfig::from_toml_str(BUS_TOML)
+        .map_err(|e| e.to_string())
+        .and_then(|config| SimBus::from_description(&config).map_err(|e| e.to_string()));
+    // The description is compiled in and its test (`the_built_in_description_makes_the_
+    // simulated_bus`) makes this bus: a failure here is a broken build, not a user's input.
+    made.unwrap_or_else(|e| panic!("the built-in tensile_tester.toml: {e}"))
 }
 
 /// The in-process transport to a simulated bus (no privileges needed).
 pub fn sim_transport(bus: SimBus) -> Transport {
-    Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, bus)?)))
+    Transport::sim(&bus)
 }

@@ -1,13 +1,14 @@
 //! A model of the tensile tester's mechanics, run on a thread against the simulated bus: it
 //! reads the drive outputs the program sets (EL2889) and the crosshead's position as the
 //! simulated AKD measures it, and sets the limit switches and the break detector (EL1004), so
-//! the program runs real tests without hardware. The guard door and the overtravel switch are
+//! the program runs real tests without hardware. It names the I/O by the links of the bus
+//! description, as the program's declaration does. The guard door and the overtravel switch are
 //! not among the EL1004's 4 channels: they read 0, the door closed and the crosshead within its
 //! travel, so the machine runs with no alarm.
 
 use super::crosshead::INCREMENTS_PER_MM;
-use super::position::{CROSSHEAD, INPUTS, OUTPUTS};
-use ethercat_sim::SimBus;
+use plc_io::ethercat::PdoDirection;
+use plc_io::ethercat::sim::SimBus;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::thread::JoinHandle;
@@ -18,8 +19,13 @@ const CENTERING_S: f64 = 0.8;
 const LIFT_S: f64 = 0.4;
 /// How far the crosshead pulls a specimen before it breaks, mm, specimen after specimen.
 pub(super) const BREAK_MM: [f64; 4] = [5.0, 6.2, 4.4, 7.2];
-/// The AKD's position actual value (0x6064), in increments.
-const POSITION_ACTUAL: u16 = 0x6064;
+/// The impact67 input word: bit 0 centering jaw negative limit, 1 positive limit, 2 lift
+/// lower limit, 3 specimen break detector.
+const DIGITAL_INPUTS: &str = "ethercat.impact67_0.digital_inputs";
+/// The impact67 output word: bit 0 lift brake release, 1 centering drive, 2 lift drive up.
+const DIGITAL_OUTPUTS: &str = "ethercat.impact67_0.digital_outputs";
+/// The AKD's position actual value (0x6064), in increments, as the drive sends it.
+const POSITION_ACTUAL: &str = "ethercat.crosshead.position_actual_value";
 
 /// The running model; stops and joins its thread when dropped.
 pub struct Plant {
@@ -28,8 +34,24 @@ pub struct Plant {
 }
 
 impl Plant {
-    /// Starts the model against `bus`.
+    /// Starts the model against `bus`, a bus made from the tensile tester's description
+    /// (one whose links differ is refused, naming the link: the model would animate nothing).
     pub fn spawn(bus: SimBus) -> std::io::Result<Plant> {
+        for (link, direction) in [
+            (DIGITAL_INPUTS, PdoDirection::Input),
+            (DIGITAL_OUTPUTS, PdoDirection::Output),
+            (POSITION_ACTUAL, PdoDirection::Input),
+        ] {
+            let problem = match bus.link_direction(link) {
+                Ok(d) if d == direction => continue,
+                Ok(d) => format!("`{link}` is an {d} entry, and the model needs an {direction}"),
+                Err(e) => e.to_string(),
+            };
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidInput,
+                format!("the tensile tester's plant model needs its links: {problem}"),
+            ));
+        }
         let stop = Arc::new(AtomicBool::new(false));
         let flag = stop.clone();
         let thread = std::thread::Builder::new()
@@ -53,7 +75,7 @@ impl Drop for Plant {
 
 /// Where the crosshead is, mm from the drive's 0, as the drive measures it.
 fn crosshead_mm(bus: &SimBus) -> f64 {
-    let increments = bus.device(CROSSHEAD).sdo(POSITION_ACTUAL, 0).unwrap_or(0) as i32;
+    let increments = bus.input::<i32>(POSITION_ACTUAL).unwrap_or(0);
     f64::from(increments) / INCREMENTS_PER_MM
 }
 
@@ -69,7 +91,9 @@ fn run(bus: &SimBus, stop: &AtomicBool) {
     while !stop.load(Ordering::Relaxed) {
         std::thread::sleep(step.saturating_sub(last.elapsed()));
         last = Instant::now();
-        let out = |bit| bus.output_bit(OUTPUTS, bit);
+        // Spawn checked the links: a read cannot fail, and 0 would be "all drives off".
+        let outputs = bus.output::<u16>(DIGITAL_OUTPUTS).unwrap_or(0);
+        let out = |bit: u32| outputs >> bit & 1 == 1;
         let (brake_released, centering, lift_up) = (out(0), out(1), out(2));
         if centering {
             jaws = (jaws + dt / CENTERING_S).min(1.0);
@@ -95,9 +119,41 @@ fn run(bus: &SimBus, stop: &AtomicBool) {
             let from = *gripped_at.get_or_insert(at);
             broken = at - from >= BREAK_MM[tests % BREAK_MM.len()];
         }
-        bus.set_input_bit(INPUTS, 0, jaws >= 1.0);
-        bus.set_input_bit(INPUTS, 1, jaws >= 1.0);
-        bus.set_input_bit(INPUTS, 2, lift <= 0.0);
-        bus.set_input_bit(INPUTS, 3, broken);
+        let closed = u16::from(jaws >= 1.0);
+        let inputs = closed | closed << 1 | u16::from(lift <= 0.0) << 2 | u16::from(broken) << 3;
+        let _ = bus.set_input(DIGITAL_INPUTS, inputs);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{BUS_TOML, simulated_bus};
+    use super::Plant;
+    use plc_io::ethercat::{BusConfig, Transport};
+
+    #[test]
+    fn the_built_in_description_makes_the_simulated_bus_and_the_plant_finds_its_links() {
+        let bus = simulated_bus();
+        assert_eq!(
+            bus.device_names(),
+            ["EK1100", "EL1004", "EL2889", "EL2004", "AKD"]
+        );
+        assert!(Plant::spawn(bus).is_ok());
+    }
+
+    #[test]
+    fn the_plant_refuses_a_bus_without_its_links_naming_the_link() {
+        let text = BUS_TOML.replace("\"digital_inputs\"", "\"inputs\"");
+        let config = BusConfig::from_toml_str(&text).unwrap();
+        let (_, bus) = Transport::simulated(&config).unwrap();
+        let err = Plant::spawn(bus).err().expect("refused");
+        assert!(
+            err.to_string().contains(
+                "`ethercat.impact67_0.digital_inputs`: device `impact67_0` has no entry \
+                 `digital_inputs` (did you mean `digital_outputs`?): use one of `inputs`, \
+                 `digital_outputs`"
+            ),
+            "{err}"
+        );
     }
 }
