@@ -20,6 +20,7 @@
 //! plc shelve tensile_tester specimen_not_centred --for 1h
 //! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
 //! plc opcua user add users.txt operator              # password from standard input
+//! plc change tensile_tester target/release/libtensile_tester.so --dry-run   # what a change would do
 //! plc mqtt serve tensile_tester --broker mqtt://127.0.0.1:1883 --group plant --node line1
 //! ```
 
@@ -121,6 +122,9 @@ enum Command {
     /// A program's alarms: those active or waiting for an acknowledgement, most severe first
     /// (path, state, since when, text); --all every one; --history the journal.
     Alarms(cmd::alarms::AlarmsArgs),
+    /// An online change: what a new build of the program (a module, `lib<name>.so`) would do
+    /// to each value of the running one (`--dry-run`): kept, converted, added, reset, removed.
+    Change(cmd::change::ChangeArgs),
     /// Acknowledges alarms, as this user (who may is the write policy's, as for `plc set`).
     Ack(cmd::alarm_actions::ActArgs),
     /// Resets latched alarms whose condition has cleared (a reset acknowledges too).
@@ -306,6 +310,9 @@ enum BusCommand {
 }
 
 fn main() -> ExitCode {
+    // `plc` is also the short-lived child that tries a program module before it is trusted
+    // (`plc change`): that child does only this and exits.
+    plc_module::trial::serve_if_asked();
     // Die quietly on a closed pipe (`plc list x | head`), as command-line tools do.
     // SAFETY: setting a signal disposition to the default before any thread starts.
     unsafe { libc::signal(libc::SIGPIPE, libc::SIG_DFL) };
@@ -358,6 +365,7 @@ fn main() -> ExitCode {
         Command::Forces { segment, format } => cmd::force::list(&segment, &format.format()),
         Command::Trace(options) => cmd::trace::run(&options),
         Command::Alarms(args) => cmd::alarms::run(&args),
+        Command::Change(args) => cmd::change::run(&args),
         Command::Ack(args) => cmd::alarm_actions::run(AlarmAction::Acknowledge, &args),
         Command::Reset(args) => cmd::alarm_actions::run(AlarmAction::Reset, &args),
         Command::Shelve(args) => cmd::alarm_actions::shelve(&args),

@@ -42,7 +42,7 @@ mod load;
 
 pub use fingerprint::Fingerprint;
 pub use load::error::ModuleError;
-pub use load::module::{Module, ModuleFault};
+pub use load::module::{Module, ModuleFault, ModuleInfo};
 pub use load::trial;
 
 /// Makes this `cdylib` crate a program module: `program!(Gm, tick)` with

@@ -297,3 +297,16 @@ fn a_trial_program_that_does_not_answer_is_a_refusal() {
     let err = Module::load(&path, &slow).unwrap_err();
     assert!(err.to_string().contains("did not finish loading"), "{err}");
 }
+
+#[test]
+fn inspecting_a_module_gives_what_loading_it_gives() {
+    let dir = tempdir();
+    let path = counter(dir.path());
+    let info = Module::inspect(&path, &trial()).unwrap();
+    assert_eq!(info, Module::load(&path, &trial()).unwrap().info());
+    assert_eq!(info.fingerprint, plc_module::Fingerprint::host().text());
+    // Its refusals are load's.
+    let foreign = copy_of(&built("libforeign.so"), dir.path(), "libforeign.so");
+    let err = Module::inspect(&foreign, &trial()).unwrap_err();
+    assert!(matches!(err, ModuleError::Fingerprint { .. }), "{err}");
+}

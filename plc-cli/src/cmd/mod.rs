@@ -4,6 +4,7 @@ pub mod alarm_actions;
 pub mod alarm_history;
 pub mod alarms;
 pub mod bus;
+pub mod change;
 pub mod export;
 pub mod force;
 pub mod get;

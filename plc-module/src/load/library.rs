@@ -25,6 +25,8 @@ pub struct Checked {
     pub entry: &'static ProgramEntry,
     /// The crate's name.
     pub name: String,
+    /// What built it (the host's own fingerprint: it was checked to be).
+    pub fingerprint: String,
     /// The descriptor of its variables.
     pub descriptor: LayoutDescriptor,
     /// The bus description it was compiled against: file name and text.
@@ -139,6 +141,7 @@ pub fn check(path: &Path, entry: &'static ProgramEntry) -> Result<Checked, Modul
     Ok(Checked {
         entry,
         name,
+        fingerprint,
         descriptor,
         bus,
     })

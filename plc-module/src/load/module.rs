@@ -41,6 +41,20 @@ impl fmt::Display for ModuleFault {
 
 impl std::error::Error for ModuleFault {}
 
+/// What a module says of itself, checked: from [`Module::inspect`] (which loads no code into
+/// this process) or [`Module::info`].
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct ModuleInfo {
+    /// The program crate's name.
+    pub name: String,
+    /// What built it.
+    pub fingerprint: String,
+    /// Its variables, as its segment publishes them.
+    pub descriptor: LayoutDescriptor,
+    /// The bus description it was compiled against: the path as written and the text.
+    pub bus: Option<(String, String)>,
+}
+
 /// A program module loaded into this process: its descriptor and the calls that run it over
 /// an image. It is never unloaded (its code may run until the process ends): each load costs
 /// the module's size in memory for good, which a host pays once per online change.
@@ -66,6 +80,29 @@ impl Module {
     /// its ELF headers, and trying it in a child process started by `trial`.
     pub fn load(path: impl AsRef<Path>, trial: &Trial) -> Result<Module, ModuleError> {
         let path = path.as_ref();
+        let sealed = Module::checked_copy(path)?;
+        trial.run(path, &sealed)?;
+        let entry = library::open(path, &sealed.proc_path())?;
+        // The memory file stays open for good: closing it would free its number, and the
+        // loader would answer a later module at the same `/proc/self/fd/N` with this one.
+        std::mem::forget(sealed);
+        Ok(Module {
+            path: path.into(),
+            checked: library::check(path, entry)?,
+        })
+    }
+
+    /// What the module file at `path` says of itself, with every check of [`load`](Self::load)
+    /// but none of its code run in this process: only the trial child loads it. For a tool that
+    /// plans a change (`plc change --dry-run`).
+    pub fn inspect(path: impl AsRef<Path>, trial: &Trial) -> Result<ModuleInfo, ModuleError> {
+        let path = path.as_ref();
+        let sealed = Module::checked_copy(path)?;
+        trial.run(path, &sealed)
+    }
+
+    /// The file's checks, then its bytes in a sealed memory file.
+    fn checked_copy(path: &Path) -> Result<SealedCopy, ModuleError> {
         let bytes = file::read_checked(path)?;
         elf::check(&bytes).map_err(|issue| match issue {
             elf::ElfIssue::NotALibrary(why) => ModuleError::NotALibrary {
@@ -80,19 +117,9 @@ impl Module {
         let label = path
             .file_name()
             .map_or("module".into(), |n| n.to_string_lossy());
-        let sealed = SealedCopy::new(&label, &bytes).map_err(|error| ModuleError::MemoryFile {
+        SealedCopy::new(&label, &bytes).map_err(|error| ModuleError::MemoryFile {
             path: path.into(),
             error,
-        })?;
-        drop(bytes);
-        trial.run(path, &sealed)?;
-        let entry = library::open(path, &sealed.proc_path())?;
-        // The memory file stays open for good: closing it would free its number, and the
-        // loader would answer a later module at the same `/proc/self/fd/N` with this one.
-        std::mem::forget(sealed);
-        Ok(Module {
-            path: path.into(),
-            checked: library::check(path, entry)?,
         })
     }
 
@@ -103,6 +130,16 @@ impl Module {
             path: path.into(),
             checked: library::check(path, entry)?,
         })
+    }
+
+    /// What it says of itself.
+    pub fn info(&self) -> ModuleInfo {
+        ModuleInfo {
+            name: self.checked.name.clone(),
+            fingerprint: self.checked.fingerprint.clone(),
+            descriptor: self.checked.descriptor.clone(),
+            bus: self.checked.bus.clone(),
+        }
     }
 
     /// The file it was loaded from.

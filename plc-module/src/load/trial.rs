@@ -8,7 +8,7 @@
 //! program with threads may not call the dynamic loader.)
 
 use super::error::ModuleError;
-use super::module::Module;
+use super::module::{Module, ModuleInfo};
 use super::sealed::SealedCopy;
 use std::ffi::OsStr;
 use std::io::{self, Read, Write};
@@ -25,8 +25,11 @@ pub const TRIAL_ARG: &str = "--plc-module-trial";
 const CHILD_FD: i32 = 3;
 /// What starts the child's answer on its standard output (a module may print too).
 const MARK: &str = "plc-module-trial: ";
-/// The most bytes of the child's output kept.
-const MAX_OUTPUT: usize = 64 << 10;
+/// The most bytes of the child's standard output kept: its answer carries the module's
+/// descriptor and bus description, which the entry's checks bound.
+const MAX_OUTPUT: usize = 96 << 20;
+/// The most bytes of the child's standard error kept, for the reason of a crash.
+const MAX_ERRORS: usize = 64 << 10;
 
 /// How a host tries a module: which program to run as the child, and for how long.
 #[derive(Clone, Debug)]
@@ -55,8 +58,8 @@ impl Trial {
         self
     }
 
-    /// Tries the module `path` whose bytes `sealed` holds.
-    pub(crate) fn run(&self, path: &Path, sealed: &SealedCopy) -> Result<(), ModuleError> {
+    /// Tries the module `path` whose bytes `sealed` holds; what it says of itself.
+    pub(crate) fn run(&self, path: &Path, sealed: &SealedCopy) -> Result<ModuleInfo, ModuleError> {
         let failed = |why: String| ModuleError::Trial {
             path: path.into(),
             why,
@@ -90,8 +93,8 @@ impl Trial {
             ))
         })?;
         let mut child = Reaped(child);
-        let out = drain(child.0.stdout.take());
-        let err = drain(child.0.stderr.take());
+        let out = drain(child.0.stdout.take(), MAX_OUTPUT);
+        let err = drain(child.0.stderr.take(), MAX_ERRORS);
         let deadline = Instant::now() + self.timeout;
         let status = loop {
             match child.0.try_wait() {
@@ -112,7 +115,10 @@ impl Trial {
         let err = err.join().unwrap_or_default();
         let answer = out.lines().rev().find_map(|l| l.strip_prefix(MARK));
         match (answer, status.signal()) {
-            (Some("ok"), None) if status.success() => Ok(()),
+            (Some(info), None) if status.success() => info
+                .strip_prefix("ok ")
+                .and_then(|json| serde_json::from_str(json).ok())
+                .ok_or_else(|| failed("the child's answer is not one this host reads".into())),
             (Some(refusal), None) => Err(from_wire(path, refusal)),
             (_, Some(signal)) => Err(failed(format!(
                 "it crashed the child that loaded it ({}){}",
@@ -143,10 +149,14 @@ pub fn serve_if_asked() {
     let answer = Module::in_trial(&path, &format!("/proc/self/fd/{CHILD_FD}")).and_then(|m| {
         let mut image = m.initial_image().map_err(|f| fault(&path, f))?;
         m.unpack_bits(&mut image).map_err(|f| fault(&path, f))?;
-        m.pack_bits(&mut image).map_err(|f| fault(&path, f))
+        m.pack_bits(&mut image).map_err(|f| fault(&path, f))?;
+        Ok(m.info())
     });
     let line = match &answer {
-        Ok(()) => "ok".to_string(),
+        Ok(info) => match serde_json::to_string(info) {
+            Ok(json) => format!("ok {json}"),
+            Err(e) => format!("trial\tits description cannot be written: {e}"),
+        },
         Err(e) => to_wire(e),
     };
     let mut stdout = io::stdout().lock();
@@ -198,9 +208,9 @@ impl Drop for Reaped {
     }
 }
 
-/// Reads a pipe to its end on a thread, keeping its last [`MAX_OUTPUT`] bytes (the answer
-/// comes last, whatever a module printed before it).
-fn drain(pipe: Option<impl Read + Send + 'static>) -> std::thread::JoinHandle<String> {
+/// Reads a pipe to its end on a thread, keeping its last `max` bytes (the answer comes last,
+/// whatever a module printed before it).
+fn drain(pipe: Option<impl Read + Send + 'static>, max: usize) -> std::thread::JoinHandle<String> {
     std::thread::spawn(move || {
         let mut kept = Vec::new();
         let mut chunk = [0u8; 8192];
@@ -210,8 +220,8 @@ fn drain(pipe: Option<impl Read + Send + 'static>) -> std::thread::JoinHandle<St
                     Ok(0) | Err(_) => break,
                     Ok(n) => {
                         kept.extend_from_slice(&chunk[..n]);
-                        if kept.len() > MAX_OUTPUT {
-                            kept.drain(..kept.len() - MAX_OUTPUT);
+                        if kept.len() > max {
+                            kept.drain(..kept.len() - max);
                         }
                     }
                 }

@@ -34,7 +34,8 @@ pub struct Gm {
     pub panic_at_cycle: u64,
 }
 
-fn tick(ctx: &mut Context<Gm>) {
+/// One cycle: counts, copies `start` to `motor_on` while the inputs are valid, panics when asked.
+pub fn tick(ctx: &mut Context<Gm>) {
     if ctx.gm.panic_at_cycle != 0 && ctx.cycle == ctx.gm.panic_at_cycle {
         ctx.gm.count = 0;
         panic!("counter: asked to panic in cycle {}", ctx.cycle);
