@@ -39,13 +39,13 @@ struct Aligned<I>(I);
 /// snapshot in and the image out, as `plc_io::Runtime` keeps one: its data passes through
 /// three buffers (segment, image, struct), not four, which decides how the cycle grows once
 /// they outgrow a cache.
-pub struct FrameworkCycle<T: GlobalMemory> {
+pub struct FrameworkCycle<T: GlobalMemory + Clone + Send + 'static> {
     owner: ShmOwner<T>,
     gm: T,
     image: Box<Aligned<T::Image>>,
 }
 
-impl<T: GlobalMemory + Default> FrameworkCycle<T> {
+impl<T: GlobalMemory + Default + Clone + Send + 'static> FrameworkCycle<T> {
     /// Creates the segment `segment` and publishes the initial values.
     pub fn new(segment: &str) -> Result<Self, plc_io::shm::ShmError> {
         let owner = SharedGlobalMemory::<T>::create(segment)?;
@@ -63,7 +63,7 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
     #[inline(never)]
     pub fn step(&mut self) {
         self.owner
-            .snapshot_image_into(&mut self.image.0)
+            .snapshot_image_into(self.image.0.as_mut_bytes())
             .expect("the benchmark owns its segment");
         self.gm.load_image(&self.image.0);
         self.bits_and_out();
@@ -73,14 +73,14 @@ impl<T: GlobalMemory + Default> FrameworkCycle<T> {
 /// The parts of a cycle, each a step of its own, to time apart: where a cycle's time goes.
 pub type Parts<C> = [(&'static str, fn(&mut C)); 5];
 
-impl<T: GlobalMemory> FrameworkCycle<T> {
+impl<T: GlobalMemory + Clone + Send + 'static> FrameworkCycle<T> {
     /// The five parts of [`step`](Self::step): snapshot, load, bits (unpack and pack), store,
     /// publish.
     pub fn parts() -> Parts<Self> {
         [
             ("snapshot", |c| {
                 c.owner
-                    .snapshot_image_into(&mut c.image.0)
+                    .snapshot_image_into(c.image.0.as_mut_bytes())
                     .expect("the benchmark owns its segment")
             }),
             ("load", |c| c.gm.load_image(black_box(&c.image.0))),
@@ -122,7 +122,10 @@ impl<T: GlobalMemory> FrameworkCycle<T> {
 /// `small` ones (ten times the variables), side by side in `batches` batches of `iters`;
 /// prints `cycle_<large>_<part>_ns` and `cycle_<large>_<part>_over_<small>` (10 = linear)
 /// for `names` = (small, large).
-pub fn growth_by_part<S: GlobalMemory, L: GlobalMemory>(
+pub fn growth_by_part<
+    S: GlobalMemory + Clone + Send + 'static,
+    L: GlobalMemory + Clone + Send + 'static,
+>(
     batches: usize,
     iters: u32,
     small: &mut FrameworkCycle<S>,

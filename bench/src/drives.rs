@@ -81,7 +81,10 @@ fn devices(drive: bool) -> Vec<Device> {
     d
 }
 
-fn backend<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> Result<EtherCatBackend<T>, String> {
+fn backend<T: GlobalMemory + Clone + Send + 'static>(
+    bus: &SimBus,
+    config: BusConfig,
+) -> Result<EtherCatBackend<T>, String> {
     let sim = bus.clone();
     let transport =
         Transport::custom(move |tx, rx| Ok(Box::new(ethercat_sim::inproc::spawn(tx, rx, sim)?)));

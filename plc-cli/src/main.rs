@@ -20,6 +20,7 @@
 //! plc shelve tensile_tester specimen_not_centred --for 1h
 //! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
 //! plc opcua user add users.txt operator              # password from standard input
+//! plc run target/release/libtensile_tester.so   # a program module, on the simulated bus
 //! plc change tensile_tester target/release/libtensile_tester.so --dry-run   # what a change would do
 //! plc mqtt serve tensile_tester --broker mqtt://127.0.0.1:1883 --group plant --node line1
 //! ```
@@ -125,6 +126,9 @@ enum Command {
     /// An online change: what a new build of the program (a module, `lib<name>.so`) would do
     /// to each value of the running one (`--dry-run`): kept, converted, added, reset, removed.
     Change(cmd::change::ChangeArgs),
+    /// Runs a program module (`lib<name>.so` of a crate that uses `plc_io::program!`): the
+    /// cycle, its bus (simulated unless --interface), shared memory and retained values.
+    Run(cmd::run::RunArgs),
     /// Acknowledges alarms, as this user (who may is the write policy's, as for `plc set`).
     Ack(cmd::alarm_actions::ActArgs),
     /// Resets latched alarms whose condition has cleared (a reset acknowledges too).
@@ -366,6 +370,7 @@ fn main() -> ExitCode {
         Command::Trace(options) => cmd::trace::run(&options),
         Command::Alarms(args) => cmd::alarms::run(&args),
         Command::Change(args) => cmd::change::run(&args),
+        Command::Run(args) => cmd::run::run(&args),
         Command::Ack(args) => cmd::alarm_actions::run(AlarmAction::Acknowledge, &args),
         Command::Reset(args) => cmd::alarm_actions::run(AlarmAction::Reset, &args),
         Command::Shelve(args) => cmd::alarm_actions::shelve(&args),

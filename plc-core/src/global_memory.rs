@@ -302,7 +302,7 @@ pub trait GlobalMemory: Sized {
     /// strings `FixedString<N>`. The derive makes it one byte array: the bytes are those of a
     /// `#[repr(C)]` struct with one such field per variable, without that struct's compile
     /// time.
-    type Image: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy;
+    type Image: FromBytes + IntoBytes + KnownLayout + Immutable + Unaligned + Copy + Send + 'static;
 
     /// One entry per field, in declaration order.
     const VARIABLES: &'static [VarInfo];

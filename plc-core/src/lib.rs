@@ -43,6 +43,7 @@ pub mod fb;
 mod fixed_string;
 mod global_memory;
 mod image_bytes;
+pub mod memory;
 pub mod motion;
 pub mod place;
 mod plc_type;

@@ -113,6 +113,19 @@ impl crate::VarInfo {
         self.unit = Some(unit);
         self
     }
+    pub const fn dims(mut self, dims: &'static [usize]) -> Self {
+        self.dims = dims;
+        self
+    }
+    pub const fn structure(
+        mut self,
+        name: &'static str,
+        members: &'static [crate::VarInfo],
+    ) -> Self {
+        self.struct_name = Some(name);
+        self.members = members;
+        self
+    }
     pub const fn deadband(mut self, deadband: f64) -> Self {
         self.deadband = Some(deadband);
         self

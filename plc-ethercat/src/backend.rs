@@ -13,12 +13,13 @@ use super::layout::BusLayout;
 use super::options::{DriverGuard, InputsOnFault, Options, Transport};
 use super::process_data::{copy_inputs, cycle, zero_inputs, zero_outputs};
 use super::recovery::{Configured, RecoveryTimer, recover};
-use super::resolve::{Binding, resolve};
+use super::resolve::{Binding, resolve_vars};
 use super::status::{BusStatus, DcStatus};
 use async_io::block_on;
 use ethercrab::MainDevice;
 use ethercrab::subdevice_group::{HasPdi, Op, SafeOp};
 use plc_core::GlobalMemory;
+use plc_core::memory::{Memory, Schema};
 use plc_runtime::CyclePhase;
 use plc_shm::BusState;
 use std::fmt;
@@ -135,16 +136,29 @@ impl<T> fmt::Debug for EtherCatBackend<T> {
     }
 }
 
-impl<T: GlobalMemory> EtherCatBackend<T> {
+impl<T: GlobalMemory + Memory> EtherCatBackend<T> {
     /// Checks `config` and resolves every link of `T` against it; nothing is sent yet.
     pub fn new(
         config: BusConfig,
         transport: Transport,
         options: Options,
     ) -> Result<Self, EtherCatError> {
+        Self::for_schema(config, transport, options, &Schema::of::<T>())
+    }
+}
+
+impl<T: Memory> EtherCatBackend<T> {
+    /// [`new`](Self::new) for a program whose variables `schema` describes (a host's loaded
+    /// module, known only at run time).
+    pub fn for_schema(
+        config: BusConfig,
+        transport: Transport,
+        options: Options,
+        schema: &Schema,
+    ) -> Result<Self, EtherCatError> {
         config.validate()?;
         let layout = BusLayout::new(&config);
-        let bindings = resolve::<T>(&layout)?;
+        let bindings = resolve_vars(schema.variables, &layout)?;
         let (inputs, outputs) = bindings
             .into_iter()
             .partition(|b| b.entry.direction == PdoDirection::Input);

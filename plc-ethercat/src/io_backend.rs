@@ -2,7 +2,7 @@
 
 use super::backend::EtherCatBackend;
 use super::error::EtherCatError;
-use plc_core::GlobalMemory;
+use plc_core::memory::Memory;
 use plc_runtime::{CyclePhase, IoBackend, IoError, IoStatus};
 use plc_shm::BusClocks;
 
@@ -12,7 +12,7 @@ impl From<EtherCatError> for IoError {
     }
 }
 
-impl<T: GlobalMemory> IoBackend<T> for EtherCatBackend<T> {
+impl<T: Memory> IoBackend<T> for EtherCatBackend<T> {
     fn start(&mut self) -> Result<(), IoError> {
         EtherCatBackend::start(self).map_err(IoError::from)
     }

@@ -7,10 +7,11 @@ use async_io::block_on;
 use ethercrab::MainDevice;
 use ethercrab::error::Error as CrabError;
 use ethercrab::subdevice_group::HasPdi;
-use plc_core::{GlobalMemory, Value};
+use plc_core::Value;
+use plc_core::memory::Memory;
 
 /// The linked outputs of `gm` into the process data, then one exchange of the frame.
-pub(super) fn cycle<S: HasPdi, T: GlobalMemory>(
+pub(super) fn cycle<S: HasPdi, T: Memory>(
     g: &Group<S>,
     md: &MainDevice<'static>,
     gm: &T,
@@ -31,7 +32,7 @@ fn per_device(bindings: &[Binding]) -> impl Iterator<Item = (usize, &[Binding])>
         .map(|run| (run[0].entry.device, run))
 }
 
-fn write_outputs<S: HasPdi, T: GlobalMemory>(
+fn write_outputs<S: HasPdi, T: Memory>(
     g: &Group<S>,
     md: &MainDevice<'static>,
     gm: &T,
@@ -53,7 +54,7 @@ fn write_outputs<S: HasPdi, T: GlobalMemory>(
 }
 
 /// The linked inputs from the process data into `gm`.
-pub(super) fn copy_inputs<S: HasPdi, T: GlobalMemory>(
+pub(super) fn copy_inputs<S: HasPdi, T: Memory>(
     g: &Group<S>,
     md: &MainDevice<'static>,
     gm: &mut T,
@@ -75,7 +76,7 @@ pub(super) fn copy_inputs<S: HasPdi, T: GlobalMemory>(
 }
 
 /// Every linked input of `gm` to its zero.
-pub(super) fn zero_inputs<T: GlobalMemory>(gm: &mut T, inputs: &[Binding]) {
+pub(super) fn zero_inputs<T: Memory>(gm: &mut T, inputs: &[Binding]) {
     for b in inputs {
         // The zero of the variable's own type is always in range.
         let _ = gm.set(b.var, 0, Value::zero(b.var_type));

@@ -47,7 +47,7 @@ struct Io {
 
 /// Exchanges every millisecond for `cycles` cycles, or until `done` holds for a status
 /// (then true).
-fn cycle<T: GlobalMemory>(
+fn cycle<T: GlobalMemory + Clone + Send + 'static>(
     backend: &mut EtherCatBackend<T>,
     gm: &mut T,
     cycles: u32,

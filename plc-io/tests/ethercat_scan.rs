@@ -235,7 +235,11 @@ fn the_scanned_file_reads_back_through_bus_config_unchanged() {
 /// Brings `bus` to OP with `config` through plc-io's bring-up, runs three cycles of `gm` (each
 /// with valid inputs) and returns what the struct holds then. The outputs stay as the last
 /// cycle left them: `stop` would zero them.
-fn run_three_cycles<T: GlobalMemory>(bus: &SimBus, config: BusConfig, mut gm: T) -> T {
+fn run_three_cycles<T: GlobalMemory + Clone + Send + 'static>(
+    bus: &SimBus,
+    config: BusConfig,
+    mut gm: T,
+) -> T {
     let mut backend =
         EtherCatBackend::<T>::new(config, transport(bus), Options::simulated()).unwrap();
     backend.start().unwrap();

@@ -38,9 +38,12 @@ pub mod abi;
 #[doc(hidden)]
 pub mod export;
 mod fingerprint;
+mod host;
 mod load;
 
 pub use fingerprint::Fingerprint;
+pub use host::memory::ModuleMemory;
+pub use host::tick::{facts, tick};
 pub use load::error::ModuleError;
 pub use load::module::{Module, ModuleFault, ModuleInfo};
 pub use load::trial;

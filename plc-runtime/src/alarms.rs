@@ -8,11 +8,12 @@
 //! goes on.
 
 use crate::alarm_journal::{self, JournalSender, Operator};
+use plc_core::Time;
 use plc_core::alarm::{
     ActionError, AlarmEvent, AlarmState, Alarms, Level, Sample, Snapshot, alarm_paths,
     resolve_suppress,
 };
-use plc_core::{GlobalMemory, Time};
+use plc_core::memory::{Memory, Schema};
 use plc_shm::AlarmEntry;
 use std::collections::BTreeMap;
 use std::fmt;
@@ -112,16 +113,17 @@ impl RuntimeAlarms {
     /// The alarms `T` declares, all normal; an error naming the alarm if a `suppress_when`
     /// path names no bool of the program (the derive cannot follow a path into a structure
     /// or an array, so this is where it is checked).
-    pub(crate) fn of<T: GlobalMemory>() -> Result<RuntimeAlarms, String> {
-        if T::ALARMS.is_empty() {
+    pub(crate) fn of(schema: &Schema) -> Result<RuntimeAlarms, String> {
+        let (variables, decls) = (schema.variables, schema.alarms);
+        if decls.is_empty() {
             return Ok(RuntimeAlarms::none());
         }
-        let paths = alarm_paths(T::VARIABLES, T::ALARMS);
-        let watch = T::ALARMS
+        let paths = alarm_paths(variables, decls);
+        let watch = decls
             .iter()
             .zip(&paths)
             .map(|(d, path)| {
-                let suppress = resolve_suppress(T::VARIABLES, d.suppress_when).map_err(|e| {
+                let suppress = resolve_suppress(variables, d.suppress_when).map_err(|e| {
                     format!(
                         "alarm `{path}` (\"{}\"): {e}; point `suppress_when` at a bool of the \
                          program, by its path as `plc get` takes it",
@@ -135,7 +137,7 @@ impl RuntimeAlarms {
             })
             .collect::<Result<Vec<_>, String>>()?;
         Ok(RuntimeAlarms {
-            alarms: Alarms::from_decls(T::ALARMS),
+            alarms: Alarms::from_decls(decls),
             // Room for a few transitions of every alarm in one cycle: a flood pushes no
             // further once the vector has grown to it.
             events: Vec::with_capacity(4 * paths.len()),
@@ -147,8 +149,8 @@ impl RuntimeAlarms {
             unacknowledged: 0,
             recount: true,
             published: (0, 0),
-            changed: Vec::with_capacity(T::ALARMS.len()),
-            dirty: vec![false; T::ALARMS.len()],
+            changed: Vec::with_capacity(decls.len()),
+            dirty: vec![false; decls.len()],
         })
     }
 
@@ -195,7 +197,7 @@ impl RuntimeAlarms {
     }
 
     /// One cycle's step from `gm`'s values, each transition handed to the journal.
-    pub(crate) fn evaluate<T: GlobalMemory>(&mut self, gm: &T) {
+    pub(crate) fn evaluate<T: Memory>(&mut self, gm: &T) {
         let watch = &self.watch;
         let sample = |i: usize| sample(gm, watch[i]);
         self.alarms.evaluate(self.now_ns, sample, &mut self.events);
@@ -397,11 +399,15 @@ impl RuntimeAlarms {
 }
 
 /// Alarm `w`'s value and suppression in `gm`.
-fn sample<T: GlobalMemory>(gm: &T, w: Watch) -> Sample {
+fn sample<T: Memory>(gm: &T, w: Watch) -> Sample {
     let suppressed = w
         .suppress
-        .is_some_and(|(index, leaf)| gm.get(index, leaf) == plc_core::Value::Bool(true));
-    Sample::from_value(&gm.get(w.value.0, w.value.1), suppressed)
+        .is_some_and(|(index, leaf)| gm.try_get(index, leaf) == Some(plc_core::Value::Bool(true)));
+    // The paths were resolved against this program's variables: a value is always there.
+    let value = gm
+        .try_get(w.value.0, w.value.1)
+        .unwrap_or(plc_core::Value::Bool(false));
+    Sample::from_value(&value, suppressed)
 }
 
 /// Why an operator's action on an alarm was refused. Nothing changed, nothing was journaled.
@@ -470,7 +476,7 @@ mod tests {
 
     #[test]
     fn a_suppress_when_member_of_each_instance_suppresses_its_own_alarm() {
-        let mut alarms = RuntimeAlarms::of::<Gm>().unwrap();
+        let mut alarms = RuntimeAlarms::of(&plc_core::memory::Schema::of::<Gm>()).unwrap();
         assert_eq!(alarms.paths(), ["stations[0].door", "stations[1].door"]);
         let mut gm = Gm::default();
         gm.stations[0].out_of_service = true;
@@ -493,7 +499,7 @@ mod tests {
 
     #[test]
     fn a_shelved_alarm_is_out_of_the_counts_until_its_shelf_expires() {
-        let mut alarms = RuntimeAlarms::of::<Gm>().unwrap();
+        let mut alarms = RuntimeAlarms::of(&plc_core::memory::Schema::of::<Gm>()).unwrap();
         let mut gm = Gm::default();
         gm.stations[1].door = true;
         alarms.set_now(1_000);

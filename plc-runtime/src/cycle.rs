@@ -11,19 +11,16 @@ use super::{
 use crate::alarm_journal::AlarmJournal;
 use crate::alarms::RuntimeAlarms;
 use crate::retain::{RetainStore, RetainWriter};
-use plc_core::{GlobalMemory, Time};
-use plc_shm::{RunState, SharedGlobalMemory, ShmOwner};
+use plc_core::Time;
+use plc_core::memory::Memory;
+use plc_shm::{RunState, ShmOwner};
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 #[cfg(feature = "cycle-probe")]
 use std::time::Instant;
-use zerocopy::{Immutable, IntoBytes};
 
 /// What a running program owns besides its settings.
-pub(super) struct Cycle<T: GlobalMemory + 'static>
-where
-    T::Image: Send,
-{
+pub(super) struct Cycle<T: Memory> {
     ctx: Context<T>,
     /// The last completed cycle's image. On a cache line: the image type has alignment 1, and
     /// the word copies into shared memory cost up to three times as much from a buffer that
@@ -46,10 +43,7 @@ where
     placement: Option<CpuPlacement>,
 }
 
-impl<T: GlobalMemory + Default + Clone + Send + 'static> Cycle<T>
-where
-    T::Image: Send,
-{
+impl<T: Memory> Cycle<T> {
     /// The CPU checked, realtime priority and signals as asked, retained values loaded, the
     /// segment created and the initial image published, the cycle moved to its CPU, then the
     /// I/O started.
@@ -66,17 +60,22 @@ where
             // Ctrl-C still ends the program, only without the clean stop.
             log::warn!(target: "plc_io::runtime", "Ctrl-C and SIGTERM will end the program without a clean stop: {e}");
         }
-        let mut gm = T::default();
+        let mut gm = s.initial.clone();
+        let schema = gm.schema();
         let retain = match &s.retain {
             Some(path) => {
                 let store = RetainStore::new(path);
                 let report = store.load(&mut gm).map_err(RuntimeError::Retain)?;
                 report.log(path);
-                Some(RetainWriter::spawn::<T>(store, s.retain_interval))
+                Some(RetainWriter::spawn_for(
+                    store,
+                    s.retain_interval,
+                    gm.clone(),
+                ))
             }
             None => None,
         };
-        let (alarms, journal) = start_alarms::<T>(s)?;
+        let (alarms, journal) = start_alarms(s, &schema)?;
         // Tools learn where the alarm history is from the segment (`plc alarms --history`).
         let sharing = match (&journal, s.alarm_journal_path()) {
             (Some(_), Some(path)) => s
@@ -86,14 +85,15 @@ where
             _ => s.sharing.clone(),
         };
         let shm = match &s.segment {
-            Some(name) => Some(
-                SharedGlobalMemory::<T>::create_with(name, &sharing).map_err(RuntimeError::Shm)?,
-            ),
+            Some(name) => {
+                Some(ShmOwner::create(name, &sharing, schema).map_err(RuntimeError::Shm)?)
+            }
             None => None,
         };
-        let image = Box::new(Aligned(gm.to_image()));
+        let mut image = Box::new(Aligned(gm.new_image()));
+        gm.store_image(&mut image.0);
         let cycle = Cycle {
-            retained: RetainedBytes::new::<T>(&image.0),
+            retained: RetainedBytes::new(&schema, T::image_bytes(&image.0)),
             ctx: Context::before_first_cycle(gm, s.period, alarms),
             image,
             retain,
@@ -236,9 +236,9 @@ where
             shm.record_traces(&self.image.0, self.ctx.cycle, since_start);
         }
         if let Some(writer) = &self.retain
-            && self.retained.changed(&self.image.0)
+            && self.retained.changed(T::image_bytes(&self.image.0))
         {
-            writer.offer(self.image.0);
+            writer.offer(self.image.0.clone());
         }
         let end = monotonic_ns();
         self.report(start, end, &io);
@@ -364,13 +364,11 @@ where
 
 /// The program's alarms, each given its state from the journal if there is one (opened,
 /// with its writer started); none and no journal for a program without alarms.
-fn start_alarms<T: GlobalMemory + Default + Clone + Send + 'static>(
+fn start_alarms<T: Memory>(
     s: &RuntimeBuilder<T>,
-) -> Result<(RuntimeAlarms, Option<AlarmJournal>), RuntimeError>
-where
-    T::Image: Send,
-{
-    let mut alarms = RuntimeAlarms::of::<T>().map_err(RuntimeError::Alarm)?;
+    schema: &plc_core::memory::Schema,
+) -> Result<(RuntimeAlarms, Option<AlarmJournal>), RuntimeError> {
+    let mut alarms = RuntimeAlarms::of(schema).map_err(RuntimeError::Alarm)?;
     alarms.set_max_shelve(s.max_shelve);
     let path = match s.alarm_journal_path() {
         Some(path) if !alarms.is_empty() => path,
@@ -405,13 +403,13 @@ struct RetainedBytes {
 }
 
 impl RetainedBytes {
-    fn new<T: GlobalMemory>(image: &T::Image) -> Self {
-        let ranges: Vec<_> = T::VARIABLES
+    fn new(schema: &plc_core::memory::Schema, bytes: &[u8]) -> Self {
+        let ranges: Vec<_> = schema
+            .variables
             .iter()
             .filter(|v| v.nonvolatile)
             .map(|v| v.offset..v.offset + v.size)
             .collect();
-        let bytes = image.as_bytes();
         let last = ranges
             .iter()
             .flat_map(|r| bytes[r.clone()].iter().copied())
@@ -420,8 +418,7 @@ impl RetainedBytes {
     }
 
     /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).
-    fn changed<I: IntoBytes + Immutable>(&mut self, image: &I) -> bool {
-        let bytes = image.as_bytes();
+    fn changed(&mut self, bytes: &[u8]) -> bool {
         let mut at = 0;
         let mut changed = false;
         for r in &self.ranges {
@@ -440,6 +437,7 @@ impl RetainedBytes {
 mod tests {
     use super::{RetainedBytes, panic_message};
     use plc_core::GlobalMemory;
+    use zerocopy::IntoBytes;
 
     #[derive(GlobalMemory, Clone, Debug)]
     #[plc(crate = "plc_core")]
@@ -452,13 +450,14 @@ mod tests {
     #[test]
     fn only_a_change_of_a_nonvolatile_variable_counts() {
         let mut gm = Gm::default();
-        let mut retained = RetainedBytes::new::<Gm>(&gm.to_image());
+        let schema = plc_core::memory::Schema::of::<Gm>();
+        let mut retained = RetainedBytes::new(&schema, gm.to_image().as_bytes());
         gm.scratch = 5;
-        assert!(!retained.changed(&gm.to_image()));
+        assert!(!retained.changed(gm.to_image().as_bytes()));
         gm.kept = 1;
-        assert!(retained.changed(&gm.to_image()));
+        assert!(retained.changed(gm.to_image().as_bytes()));
         assert!(
-            !retained.changed(&gm.to_image()),
+            !retained.changed(gm.to_image().as_bytes()),
             "the change is remembered"
         );
     }

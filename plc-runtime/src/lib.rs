@@ -25,6 +25,7 @@ use cycle::Cycle;
 
 use crate::alarm_journal::JournalError;
 use crate::retain::RetainError;
+use plc_core::memory::Memory;
 use plc_core::{Direction, GlobalMemory, Value};
 use plc_shm::ShmError;
 use std::fmt;
@@ -131,6 +132,8 @@ impl StopHandle {
 
 /// Settings of a [`Runtime`].
 pub struct RuntimeBuilder<T> {
+    /// The variables before the first cycle (before retained values are loaded).
+    initial: T,
     period: Duration,
     segment: Option<String>,
     sharing: plc_shm::Sharing,
@@ -176,10 +179,20 @@ pub struct Runtime<T> {
     settings: RuntimeBuilder<T>,
 }
 
-impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
+impl<T: GlobalMemory + Memory + Default> Runtime<T> {
     /// Settings with a 10 ms period, no segment, no retain file, no I/O, Ctrl-C/SIGTERM handled.
     pub fn builder() -> RuntimeBuilder<T> {
+        Runtime::for_memory(T::default())
+    }
+}
+
+impl<T: Memory> Runtime<T> {
+    /// [`builder`](Self::builder)'s settings for variables that start as `initial`: a
+    /// program whose variables are known only at run time (a host's loaded module) starts
+    /// here; a compiled one starts from its initial values with `builder`.
+    pub fn for_memory(initial: T) -> RuntimeBuilder<T> {
         RuntimeBuilder {
+            initial,
             period: Duration::from_millis(10),
             segment: None,
             sharing: plc_shm::Sharing::new(),
@@ -200,7 +213,7 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T> {
     }
 }
 
-impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
+impl<T: Memory> RuntimeBuilder<T> {
     /// The cycle period. Each cycle is due one period after the last one's deadline, an
     /// absolute time on the monotonic clock slept to with no timer slack; a late cycle is
     /// followed at once, with no burst of catch-up cycles. With an I/O that keeps a clock of
@@ -376,13 +389,14 @@ impl<T: GlobalMemory + Default + Clone + Send + 'static> RuntimeBuilder<T> {
                 self.max_shelve
             )));
         }
-        if !T::ALARMS.is_empty() && self.alarm_journal_path().is_none() {
+        let alarms = self.initial.schema().alarms.len();
+        if alarms > 0 && self.alarm_journal_path().is_none() {
             log::warn!(target: "plc_io::runtime",
                 "segment `{segment}`: the program's {} alarms are evaluated, but their history \
                  and unacknowledged alarms will not survive a restart: give the runtime a \
                  retain file (`RuntimeBuilder::retain`) or an alarm journal \
                  (`RuntimeBuilder::alarm_journal`)",
-                T::ALARMS.len());
+                alarms);
         }
         Ok(Runtime { settings: self })
     }
@@ -438,8 +452,8 @@ fn set_realtime(priority: i32) -> Result<(), RuntimeError> {
 }
 
 /// Sets every output variable of `gm` to zero / false / "".
-pub fn zero_outputs<T: GlobalMemory>(gm: &mut T) {
-    for (i, v) in T::VARIABLES.iter().enumerate() {
+pub fn zero_outputs<T: Memory>(gm: &mut T) {
+    for (i, v) in gm.schema().variables.iter().enumerate() {
         if v.direction != Direction::Output {
             continue;
         }
@@ -450,10 +464,7 @@ pub fn zero_outputs<T: GlobalMemory>(gm: &mut T) {
     }
 }
 
-impl<T: GlobalMemory + Default + Clone + Send + 'static> Runtime<T>
-where
-    T::Image: Send,
-{
+impl<T: Memory> Runtime<T> {
     /// The stop handle of this runtime.
     pub fn stop_handle(&self) -> StopHandle {
         self.settings.stop.clone()

@@ -67,6 +67,7 @@ pub use format::alarm_table::AlarmEntry;
 pub use format::bus_clocks::BusClocks;
 pub use format::bus_state::BusState;
 pub use format::change;
+pub use format::codec;
 pub use format::cycle_stats::CycleStats;
 pub use format::descriptor::{BitDescriptor, LayoutDescriptor, VarDescriptor};
 pub use format::force_table::ForceInfo;

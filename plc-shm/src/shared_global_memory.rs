@@ -6,6 +6,7 @@ use crate::owner::ShmOwner;
 use crate::owner::policy::Sharing;
 use crate::tool::reader::ShmReader;
 use plc_core::GlobalMemory;
+use plc_core::memory::{Memory, Schema};
 use std::marker::PhantomData;
 
 /// A `GlobalMemory` struct in a named shared-memory segment: the two ways in.
@@ -62,13 +63,19 @@ impl<T: GlobalMemory> SharedGlobalMemory<T> {
     /// Creates segment `name` as its owner, read and written by this process's user only. A
     /// segment left by a dead owner is replaced (with a later generation); one owned by a live
     /// process is refused.
-    pub fn create(name: &str) -> Result<ShmOwner<T>, ShmError> {
+    pub fn create(name: &str) -> Result<ShmOwner<T>, ShmError>
+    where
+        T: Memory,
+    {
         Self::create_with(name, &Sharing::new())
     }
 
     /// Creates segment `name` as its owner, shared with the groups `sharing` names.
-    pub fn create_with(name: &str, sharing: &Sharing) -> Result<ShmOwner<T>, ShmError> {
-        ShmOwner::create(name, sharing)
+    pub fn create_with(name: &str, sharing: &Sharing) -> Result<ShmOwner<T>, ShmError>
+    where
+        T: Memory,
+    {
+        ShmOwner::create(name, sharing, Schema::of::<T>())
     }
 
     /// Attaches to segment `name`, checking that it holds exactly `T`'s layout.

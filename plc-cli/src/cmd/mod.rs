@@ -13,6 +13,7 @@ pub mod list;
 pub mod log;
 pub mod mqtt;
 pub mod opcua;
+pub mod run;
 pub mod set;
 pub mod trace;
 pub mod watch;

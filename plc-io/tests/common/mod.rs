@@ -52,7 +52,7 @@ pub fn kill9(child: &mut ChildGuard) {
 
 /// Runs `f` (which writes and waits for its writes to be applied) while another thread plays
 /// the owner's cycle, applying received writes to `gm`, as the runtime does at each cycle.
-pub fn with_cycles<T: plc_core::GlobalMemory + Send, R>(
+pub fn with_cycles<T: plc_core::GlobalMemory + Clone + Send + 'static, R>(
     owner: &mut plc_io::shm::ShmOwner<T>,
     gm: &mut T,
     f: impl FnOnce() -> R,

@@ -36,12 +36,18 @@ pub fn transport(bus: &SimBus) -> Transport {
 }
 
 /// A backend for `T` on `bus` with `config`, not started.
-pub fn backend<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
+pub fn backend<T: GlobalMemory + Clone + Send + 'static>(
+    bus: &SimBus,
+    config: BusConfig,
+) -> EtherCatBackend<T> {
     EtherCatBackend::<T>::new(config, transport(bus), Options::simulated()).unwrap()
 }
 
 /// [`backend`], started: the bus in OP.
-pub fn started<T: GlobalMemory>(bus: &SimBus, config: BusConfig) -> EtherCatBackend<T> {
+pub fn started<T: GlobalMemory + Clone + Send + 'static>(
+    bus: &SimBus,
+    config: BusConfig,
+) -> EtherCatBackend<T> {
     let mut backend = backend::<T>(bus, config);
     backend.start().unwrap();
     backend

@@ -40,7 +40,8 @@
 //! ```
 
 use plc_core::convert::can_widen;
-use plc_core::{GlobalMemory, IecType, Value};
+use plc_core::memory::Memory;
+use plc_core::{IecType, Value};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 use std::fs::{self, OpenOptions};
@@ -206,9 +207,9 @@ impl RetainStore {
         &self.path
     }
 
-    fn body_of<T: GlobalMemory>(gm: &T) -> Body {
+    fn body_of<T: Memory>(gm: &T) -> Body {
         Body {
-            variables: items(T::VARIABLES)
+            variables: items(gm.schema().variables)
                 .into_iter()
                 .map(|item| Stored {
                     values: (0..item.elements)
@@ -223,7 +224,7 @@ impl RetainStore {
     }
 
     /// Saves the nonvolatile variables of `gm`, atomically.
-    pub fn save<T: GlobalMemory>(&self, gm: &T) -> Result<(), RetainError> {
+    pub fn save<T: Memory>(&self, gm: &T) -> Result<(), RetainError> {
         let body = serde_json::to_vec_pretty(&Self::body_of(gm)).map_err(|e| RetainError::Io {
             path: self.path.clone(),
             error: std::io::Error::other(e),
@@ -370,13 +371,13 @@ impl RetainStore {
     /// Loads saved values into `gm`'s nonvolatile variables (others are untouched). A missing
     /// file is not an error: every nonvolatile variable is then reported new, and a missing
     /// directory is created (mode 0700).
-    pub fn load<T: GlobalMemory>(&self, gm: &mut T) -> Result<RetainReport, RetainError> {
+    pub fn load<T: Memory>(&self, gm: &mut T) -> Result<RetainReport, RetainError> {
         let body = self.read_body()?.unwrap_or(Body { variables: vec![] });
         let mut report = RetainReport {
             stale_temps: self.remove_stale_temps(),
             ..RetainReport::default()
         };
-        let retained = items(T::VARIABLES);
+        let retained = items(gm.schema().variables);
         for stored in &body.variables {
             if !retained
                 .iter()

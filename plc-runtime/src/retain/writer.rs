@@ -3,6 +3,7 @@
 
 use super::{RetainError, RetainStore};
 use plc_core::GlobalMemory;
+use plc_core::memory::Memory;
 use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -20,11 +21,20 @@ pub struct RetainWriter<I: Send + 'static> {
     path: PathBuf,
 }
 
-impl<I: Copy + Send + 'static> RetainWriter<I> {
+impl<I: Clone + Send + 'static> RetainWriter<I> {
     /// Starts the writer for a program of type `T` (whose image type is `I`).
-    pub fn spawn<T>(store: RetainStore, interval: Duration) -> RetainWriter<T::Image>
+    pub fn spawn<T>(store: RetainStore, interval: Duration) -> RetainWriter<I>
     where
-        T: GlobalMemory<Image = I>,
+        T: GlobalMemory + Memory<Image = I> + Default,
+    {
+        Self::spawn_for(store, interval, T::default())
+    }
+
+    /// Starts the writer for the program whose variables `program` holds (their values do
+    /// not matter: each image offered is read into a copy of it and saved from there).
+    pub fn spawn_for<T>(store: RetainStore, interval: Duration, program: T) -> RetainWriter<I>
+    where
+        T: Memory<Image = I>,
     {
         let (tx, rx) = mpsc::channel::<Option<I>>();
         let failed_saves = Arc::new(AtomicU64::new(0));
@@ -43,7 +53,9 @@ impl<I: Copy + Send + 'static> RetainWriter<I> {
                 // A failed save (disk full, directory gone) keeps the values pending: they are
                 // tried again at the next interval, never dropped, and the failure is counted.
                 let save = |image: I, pending: &mut Option<I>| {
-                    let result = store.save(&T::from_image(&image));
+                    let mut values = program.clone();
+                    values.load_image(&image);
+                    let result = store.save(&values);
                     if let Err(e) = &result {
                         failed.fetch_add(1, Ordering::Relaxed);
                         log::error!(target: "plc_io::retain", "{e}; the values are kept and saved again later");

@@ -33,7 +33,7 @@ impl VarDescriptor {
 
 /// The value of type `ty` that an element's `bytes` hold (all of its bytes: a STRING's
 /// capacity, a number's width).
-pub(crate) fn decode(ty: IecType, bytes: &[u8]) -> Value {
+pub fn decode(ty: IecType, bytes: &[u8]) -> Value {
     let size = bytes.len();
     let mut w = [0u8; 8];
     if ty != IecType::String {
@@ -56,7 +56,7 @@ pub(crate) fn decode(ty: IecType, bytes: &[u8]) -> Value {
 /// Writes `value`, already fitted to type `ty` (see [`Value::fit`]), as an element's `bytes`:
 /// the inverse of [`decode`]. A STRING is its text zero padded; `false` if the text does not
 /// fit the bytes, and then nothing is written.
-pub(crate) fn encode(ty: IecType, value: &Value, bytes: &mut [u8]) -> bool {
+pub fn encode(ty: IecType, value: &Value, bytes: &mut [u8]) -> bool {
     match (ty.family(), value) {
         (TypeFamily::String, Value::Text(t)) => {
             let text = t.as_str().as_bytes();

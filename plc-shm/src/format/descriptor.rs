@@ -235,12 +235,18 @@ pub struct LayoutDescriptor {
 impl LayoutDescriptor {
     /// The descriptor of a compiled `GlobalMemory` type.
     pub fn of<T: plc_core::GlobalMemory>() -> Self {
+        LayoutDescriptor::of_schema(&plc_core::memory::Schema::of::<T>())
+    }
+
+    /// The descriptor of a program's variables as a runtime sees them (a compiled program's,
+    /// or a loaded module's).
+    pub fn of_schema(schema: &plc_core::memory::Schema) -> Self {
         LayoutDescriptor {
             format_version: plc_rules::layout::FORMAT_VERSION,
-            layout_hash: T::LAYOUT_HASH,
-            image_size: core::mem::size_of::<T::Image>(),
-            variables: T::VARIABLES.iter().map(VarDescriptor::from).collect(),
-            alarms: AlarmDescriptor::all(T::VARIABLES, T::ALARMS),
+            layout_hash: schema.layout_hash,
+            image_size: schema.image_size,
+            variables: schema.variables.iter().map(VarDescriptor::from).collect(),
+            alarms: AlarmDescriptor::all(schema.variables, schema.alarms),
             alarm_journal: None,
             alarm_journal_capacity: None,
         }

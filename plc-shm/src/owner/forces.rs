@@ -17,9 +17,10 @@ use crate::limits::MAX_FORCES;
 use crate::naming::{path_of, shown_in_log};
 use crate::protocol::Release;
 use crate::sys::base::Base;
+use plc_core::memory::Memory;
 use plc_core::place::HeldBytes;
 use plc_core::write::Checked;
-use plc_core::{GlobalMemory, Value, VarInfo};
+use plc_core::{Value, VarInfo};
 
 /// One force held.
 #[derive(Clone, Debug)]
@@ -53,7 +54,7 @@ pub(crate) struct ForceTable<T> {
     scratch: Vec<(Option<usize>, Placed<T>)>,
 }
 
-impl<T: GlobalMemory> ForceTable<T> {
+impl<T: Memory> ForceTable<T> {
     pub fn new(vars: &'static [VarInfo], log: ForceLog) -> Self {
         ForceTable {
             held: Vec::new(),

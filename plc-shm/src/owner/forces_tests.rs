@@ -4,6 +4,7 @@ use super::super::force_log::{Ended, ForceLogReader};
 use super::super::spent::{Spent, SpentTx};
 use super::*;
 use crate::limits::{FORCE_LOG_LINES, MAX_WRITES};
+use plc_core::GlobalMemory;
 use plc_core::write::{Write, check_force};
 use std::sync::mpsc::Receiver;
 

@@ -38,7 +38,7 @@ use crate::sys::clock::{now_ns, utc_ns};
 use crate::sys::rundir;
 use force_log::ForceLog;
 use forces::ForceTable;
-use plc_core::GlobalMemory;
+use plc_core::memory::{Memory, Schema};
 use plc_core::write::Write;
 use policy::{Policy, Sharing};
 use requests::{Counters, Inbox};
@@ -46,14 +46,12 @@ use segment::OwnedSegment;
 use server::Setup;
 use std::cell::{Cell, RefCell};
 use std::marker::PhantomData;
-use std::mem::size_of;
 use std::sync::atomic::{Ordering, fence};
 use std::sync::{Arc, Mutex};
-use zerocopy::IntoBytes;
 
 /// The owner of a segment (the control program): publishes, applies writes, reports.
 /// From [`SharedGlobalMemory::create`](crate::SharedGlobalMemory::create).
-pub struct ShmOwner<T: GlobalMemory> {
+pub struct ShmOwner<T: Memory> {
     inbox: Inbox<T>,
     seg: OwnedSegment,
     /// The mapping (the segment's, kept here for the cycle's stores).
@@ -71,13 +69,15 @@ pub struct ShmOwner<T: GlobalMemory> {
     _t: PhantomData<fn() -> T>,
 }
 
-impl<T: GlobalMemory> ShmOwner<T> {
-    /// Creates segment `name` as its owner, shared with the groups `sharing` names: its header
-    /// and descriptor written, then served (tools connect only to a complete segment).
-    pub(crate) fn create(name: &str, sharing: &Sharing) -> Result<ShmOwner<T>, ShmError> {
+impl<T: Memory> ShmOwner<T> {
+    /// Creates segment `name` as the owner of a program whose variables `schema` describes,
+    /// shared with the groups `sharing` names: its header and descriptor written, then served
+    /// (tools connect only to a complete segment). A compiled program's owner comes from
+    /// [`SharedGlobalMemory::create_with`](crate::SharedGlobalMemory::create_with).
+    pub fn create(name: &str, sharing: &Sharing, schema: Schema) -> Result<ShmOwner<T>, ShmError> {
         let name = rundir::normalise(name)?;
         let policy = Policy::resolve(&name, sharing)?;
-        let mut desc = LayoutDescriptor::of::<T>();
+        let mut desc = LayoutDescriptor::of_schema(&schema);
         if let Some((path, records)) = sharing.alarm_history_file() {
             desc.alarm_journal = Some(path.display().to_string());
             desc.alarm_journal_capacity = Some(records);
@@ -86,17 +86,17 @@ impl<T: GlobalMemory> ShmOwner<T> {
             name: name.clone(),
             why: e.to_string(),
         })?;
-        let off = Offsets::new(size_of::<T::Image>());
+        let off = Offsets::new(schema.image_size);
         // A new segment is zeroed: every alarm normal, never raised.
-        let alarms = AlarmTable::after(off.descriptor + json.len(), T::ALARMS.len());
+        let alarms = AlarmTable::after(off.descriptor + json.len(), schema.alarms.len());
         let size = alarms.end().ok_or_else(|| ShmError::Corrupt {
             name: name.clone(),
-            why: format!("{} alarms do not fit in a segment", T::ALARMS.len()),
+            why: format!("{} alarms do not fit in a segment", schema.alarms.len()),
         })?;
         let mut seg = OwnedSegment::create(&name, size, &policy)?;
         let base = seg.base();
         let generation = segment::next_generation(0);
-        header::write(&base, &json, T::LAYOUT_HASH, &off, generation);
+        header::write(&base, &json, schema.layout_hash, &off, generation);
         base.store(H_SEQ, 0);
         base.store(S_HEARTBEAT_NS, now_ns());
         base.store(H_MAGIC, MAGIC);
@@ -109,8 +109,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
         seg.serve(Setup {
             name: name.clone(),
             policy,
-            vars: T::VARIABLES,
-            alarms: T::ALARMS.len(),
+            vars: schema.variables,
+            alarms: schema.alarms.len(),
             off,
             counters: counters.clone(),
             queue,
@@ -128,7 +128,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
                 rx: Mutex::new(rx),
                 counters,
                 unpublished: Default::default(),
-                forces: RefCell::new(ForceTable::new(T::VARIABLES, log)),
+                forces: RefCell::new(ForceTable::new(schema.variables, log)),
                 recordings: Default::default(),
                 spent,
                 held_over: RefCell::new(None),
@@ -175,7 +175,8 @@ impl<T: GlobalMemory> ShmOwner<T> {
 
     /// Publishes `gm`: the image goes out under the seqlock, through atomics.
     pub fn publish(&self, gm: &T) -> Result<(), ShmError> {
-        let image = gm.to_image();
+        let mut image = gm.new_image();
+        gm.store_image(&mut image);
         self.publish_image(&image)
     }
 
@@ -195,7 +196,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
         let s = self.seq.get();
         seq.store(s.wrapping_add(1), Ordering::Relaxed);
         fence(Ordering::Release);
-        bytes::store(base, IMAGE, image.as_bytes());
+        bytes::store(base, IMAGE, T::image_bytes(image));
         seq.store(s.wrapping_add(2), Ordering::Release);
         self.seq.set(s.wrapping_add(2));
         base.store(S_HEARTBEAT_NS, heartbeat_ns);
@@ -243,7 +244,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
             .apply(gm, &self.base, &self.off, &mut audit, &mut act)
     }
 
-    /// Stores the states of the alarms that changed (number in `T::ALARMS`, state) into the
+    /// Stores the states of the alarms that changed (number in the schema's alarms, state) into the
     /// segment's alarm table, which tools read (`plc alarms`, OPC UA); numbers beyond the
     /// table are skipped.
     pub fn publish_alarms(&self, changed: impl Iterator<Item = (usize, AlarmEntry)>) {
@@ -273,13 +274,12 @@ impl<T: GlobalMemory> ShmOwner<T> {
     /// started). A program that traces nothing pays one length check.
     #[inline]
     pub fn record_traces(&self, image: &T::Image, cycle: u64, time_ns: u64) {
-        self.inbox.record(image.as_bytes(), cycle, time_ns);
+        self.inbox.record(T::image_bytes(image), cycle, time_ns);
     }
 
     /// A consistent copy of the image as readers see it, into `image` (for tests and
     /// benchmarks of the whole round trip; the program itself has its variables).
-    pub fn snapshot_image_into(&self, image: &mut T::Image) -> Result<(), ShmError> {
-        let out = image.as_mut_bytes();
+    pub fn snapshot_image_into(&self, out: &mut [u8]) -> Result<(), ShmError> {
         let owner_ok = || header::check_current(&self.base, self.generation, self.name());
         owner_ok()?;
         seqlock::read(
@@ -354,7 +354,7 @@ impl<T: GlobalMemory> ShmOwner<T> {
     }
 }
 
-impl<T: GlobalMemory> Drop for ShmOwner<T> {
+impl<T: Memory> Drop for ShmOwner<T> {
     fn drop(&mut self) {
         // A fault stays visible to readers still attached: only a running owner stops.
         if self.run_state.get() != RunState::Faulted {

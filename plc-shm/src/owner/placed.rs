@@ -3,8 +3,8 @@
 //! a BOOL's bit or byte), kept inline so a flood of forces allocates nothing per value; a
 //! STRING is several.
 
-use plc_core::GlobalMemory;
-use plc_core::place::{self, PlacedBytes};
+use plc_core::memory::Memory;
+use plc_core::place::PlacedBytes;
 
 /// The bytes that hold a forced value where it lies in `T`.
 #[derive(Clone, Debug)]
@@ -17,12 +17,12 @@ pub(crate) enum Placed<T> {
     Many(Vec<PlacedBytes<T>>),
 }
 
-impl<T: GlobalMemory> Placed<T> {
+impl<T: Memory> Placed<T> {
     /// The bytes that hold value `leaf` of variable `index` where it lies in `gm`, which holds
     /// its forced value.
     pub fn capture(gm: &T, index: usize, leaf: usize) -> Self {
         let mut placed = Placed::Unplaced;
-        let whole = place::capture(gm, index, leaf, |s| {
+        let whole = gm.capture_places(index, leaf, |s| {
             placed = match std::mem::replace(&mut placed, Placed::Unplaced) {
                 Placed::Unplaced => Placed::One(s),
                 Placed::One(first) => Placed::Many(vec![first, s]),

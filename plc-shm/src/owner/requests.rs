@@ -19,8 +19,9 @@ use crate::protocol::{self, Code, Reply};
 use crate::sys::base::Base;
 use crate::sys::clock::utc_ns;
 use crate::sys::unix;
+use plc_core::memory::Memory;
 use plc_core::write::{self, Checked, Write};
-use plc_core::{GlobalMemory, SetError, Value, VarInfo};
+use plc_core::{SetError, Value, VarInfo};
 use std::cell::RefCell;
 use std::fmt;
 use std::os::fd::{AsRawFd, OwnedFd};
@@ -38,7 +39,7 @@ pub enum Rejection {
         /// Why: read-only, input or status.
         reason: &'static str,
     },
-    /// The program's [`GlobalMemory::set`] refused it (unknown
+    /// The program's [`set`](plc_core::GlobalMemory::set) refused it (unknown
     /// index, element out of range, value that does not fit).
     Set(SetError),
 }
@@ -253,7 +254,7 @@ pub(crate) fn validate(
 }
 
 /// The cycle thread's end of the queue, for a program of type `T`.
-pub(crate) struct Inbox<T: GlobalMemory> {
+pub(crate) struct Inbox<T: Memory> {
     pub rx: Mutex<Receiver<Batch>>,
     pub counters: Arc<Counters>,
     /// Requests applied and not yet published: their writers hear "applied" once a reader
@@ -271,7 +272,7 @@ pub(crate) struct Inbox<T: GlobalMemory> {
     pub held_over: RefCell<Option<Batch>>,
 }
 
-impl<T: GlobalMemory> Inbox<T> {
+impl<T: Memory> Inbox<T> {
     /// Applies the queued requests to `gm`, in order, each all or none; answers each one.
     /// Returns how many writes were applied.
     pub fn apply(
@@ -390,7 +391,7 @@ impl<T: GlobalMemory> Inbox<T> {
 /// Applies `writes` through the program's `set`; if it refuses one, the writes before it
 /// are undone (their earlier values set again) and the refused one is named.
 /// A write to a forced value refuses the request, naming the force.
-fn apply_batch<T: GlobalMemory>(
+fn apply_batch<T: Memory>(
     gm: &mut T,
     writes: &[Checked],
     forces: &ForceTable<T>,
@@ -414,7 +415,7 @@ fn apply_batch<T: GlobalMemory>(
             }
             let rejection = Rejection::Set(e);
             audit(w, &Err(rejection));
-            let name = T::VARIABLES.get(w.index).map_or("?", |v| v.name);
+            let name = gm.schema().variables.get(w.index).map_or("?", |v| v.name);
             return Err(Refused::rejected(k, format!("`{name}`: {rejection}")));
         }
         undo.push((w.index, w.leaf, before));

@@ -1,0 +1,6 @@
+//! The host's side of running a module: its variables for the runtime ([`ModuleMemory`],
+//! over the schema its descriptor gives).
+
+pub mod memory;
+mod schema;
+pub mod tick;
