@@ -20,6 +20,7 @@
 //! plc shelve tensile_tester specimen_not_centred --for 1h
 //! plc opcua serve tensile_tester --users users.txt   # an OPC UA server on port 4840
 //! plc opcua user add users.txt operator              # password from standard input
+//! plc new conveyor                  # a program module crate to start from
 //! plc run target/release/libtensile_tester.so   # a program module, on the simulated bus
 //! plc change tensile_tester target/release/libtensile_tester.so --dry-run   # what a change would do
 //! plc mqtt serve tensile_tester --broker mqtt://127.0.0.1:1883 --group plant --node line1
@@ -129,6 +130,9 @@ enum Command {
     /// Runs a program module (`lib<name>.so` of a crate that uses `plc_io::program!`): the
     /// cycle, its bus (simulated unless --interface), shared memory and retained values.
     Run(cmd::run::RunArgs),
+    /// Writes a new program module crate: `cargo build --release` in it, then `plc run
+    /// target/release/lib<NAME>.so` runs it on the simulated bus.
+    New(cmd::new::NewArgs),
     /// Acknowledges alarms, as this user (who may is the write policy's, as for `plc set`).
     Ack(cmd::alarm_actions::ActArgs),
     /// Resets latched alarms whose condition has cleared (a reset acknowledges too).
@@ -371,6 +375,7 @@ fn main() -> ExitCode {
         Command::Alarms(args) => cmd::alarms::run(&args),
         Command::Change(args) => cmd::change::run(&args),
         Command::Run(args) => cmd::run::run(&args),
+        Command::New(args) => cmd::new::run(&args),
         Command::Ack(args) => cmd::alarm_actions::run(AlarmAction::Acknowledge, &args),
         Command::Reset(args) => cmd::alarm_actions::run(AlarmAction::Reset, &args),
         Command::Shelve(args) => cmd::alarm_actions::shelve(&args),

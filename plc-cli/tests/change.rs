@@ -117,20 +117,20 @@ fn a_dry_run_lists_what_happens_to_every_value() {
 }
 
 #[test]
-fn a_change_without_a_dry_run_needs_a_hosted_program() {
+fn a_change_without_a_dry_run_is_not_made_yet() {
     let owner = running("linked");
     let same = module("libcounter.so");
     let out = plc(&["change", &owner.segment, same.to_str().unwrap()]);
     assert!(!out.status.success());
     let err = stderr(&out);
     assert!(
-        err.contains("not started by `plc run`") && err.contains("--dry-run"),
+        err.contains("does not make one yet") && err.contains("--dry-run"),
         "{err}"
     );
     let out = plc(&["change", &owner.segment, "--back"]);
     assert!(!out.status.success());
     assert!(
-        stderr(&out).contains("not started by `plc run`"),
+        stderr(&out).contains("does not make one yet"),
         "{}",
         stderr(&out)
     );

@@ -38,10 +38,10 @@ pub fn run(args: &ChangeArgs) -> Result<(), Error> {
         (Some(module), true) => module,
         _ => {
             return Err(format!(
-                "the program in segment `{}` was not started by `plc run`: only a program \
-                 `plc run` hosts can take a new build between two cycles (a linked program is \
-                 stopped and started again); `plc change {} MODULE --dry-run` shows what a \
-                 change would do",
+                "segment `{}`: this version of plc-vars plans a change but does not make one \
+                 yet: stop the program and start the new build (`plc run MODULE` keeps the \
+                 retained values); `plc change {} MODULE --dry-run` shows what a change would \
+                 do to each value",
                 args.segment, args.segment
             )
             .into());

@@ -12,6 +12,7 @@ pub mod import;
 pub mod list;
 pub mod log;
 pub mod mqtt;
+pub mod new;
 pub mod opcua;
 pub mod run;
 pub mod set;

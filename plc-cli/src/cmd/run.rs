@@ -65,6 +65,11 @@ pub fn run(args: &RunArgs) -> Result<(), Error> {
         .map(|dir| dir.join(format!("{segment}.retain")));
     if let Some(file) = &retain {
         builder = builder.retain(file);
+    } else if let Some(v) = schema.variables.iter().find(|v| v.nonvolatile) {
+        log::warn!(target: "plc_io::run",
+            "plc run: `{}` and the program's other nonvolatile variables start from their \
+             initial values at every start: give --retain DIR to keep them",
+            v.name);
     }
     if let Some(cpu) = args.cpu {
         builder = builder.cpu(cpu);
