@@ -110,27 +110,27 @@ fn a_dry_run_lists_what_happens_to_every_value() {
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
     assert!(
-        stdout(&out).contains("swap the code only"),
+        stdout(&out).contains("swaps the code only"),
         "{}",
         stdout(&out)
     );
 }
 
 #[test]
-fn a_change_without_a_dry_run_is_not_made_yet() {
+fn a_linked_program_takes_no_change_only_a_dry_run() {
     let owner = running("linked");
     let same = module("libcounter.so");
     let out = plc(&["change", &owner.segment, same.to_str().unwrap()]);
     assert!(!out.status.success());
     let err = stderr(&out);
     assert!(
-        err.contains("does not make one yet") && err.contains("--dry-run"),
+        err.contains("is not run by `plc run`") && err.contains("--dry-run"),
         "{err}"
     );
     let out = plc(&["change", &owner.segment, "--back"]);
     assert!(!out.status.success());
     assert!(
-        stderr(&out).contains("does not make one yet"),
+        stderr(&out).contains("is not run by `plc run`"),
         "{}",
         stderr(&out)
     );

@@ -183,6 +183,20 @@ impl<T: Memory> EtherCatBackend<T> {
         })
     }
 
+    /// Binds the links of the variables `schema` describes (a new build of the program taking
+    /// over) to the entries of the running bus: links may move between its entries, and a
+    /// link to a device or entry the bus does not have is refused, naming it (a new device
+    /// or PDO needs a restart). On a refusal the bindings stay as they were.
+    pub fn rebind(&mut self, schema: &Schema) -> Result<(), EtherCatError> {
+        let bindings = resolve_vars(schema.variables, &self.layout)?;
+        let (inputs, outputs) = bindings
+            .into_iter()
+            .partition(|b| b.entry.direction == PdoDirection::Input);
+        self.inputs = inputs;
+        self.outputs = outputs;
+        Ok(())
+    }
+
     /// The bus description.
     pub fn config(&self) -> &BusConfig {
         &self.config

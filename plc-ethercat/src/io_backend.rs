@@ -42,6 +42,10 @@ impl<T: Memory> IoBackend<T> for EtherCatBackend<T> {
     fn cycle_phase(&self) -> Option<CyclePhase> {
         EtherCatBackend::cycle_phase(self)
     }
+
+    fn rebind(&mut self, schema: &plc_core::memory::Schema) -> Result<(), IoError> {
+        EtherCatBackend::rebind(self, schema).map_err(IoError::from)
+    }
 }
 
 #[cfg(test)]

@@ -42,6 +42,7 @@ mod host;
 mod load;
 
 pub use fingerprint::Fingerprint;
+pub use host::change::{AtChange, Prepared, prepare, prepare_back};
 pub use host::memory::ModuleMemory;
 pub use host::tick::{facts, tick};
 pub use load::error::ModuleError;

@@ -74,6 +74,18 @@ pub trait IoBackend<T> {
     fn cycle_phase(&self) -> Option<CyclePhase> {
         None
     }
+    /// A new build of the program takes over between two cycles (an online change) with the
+    /// variables `schema` describes: bind the I/O to them (EtherCAT: each link to its entry
+    /// again, by name, on the devices already running). Called on the cycle thread between
+    /// two exchanges. An error refuses the change and leaves the I/O bound as it was; the
+    /// default refuses, for I/O that cannot follow a change.
+    fn rebind(&mut self, schema: &plc_core::memory::Schema) -> Result<(), IoError> {
+        let _ = schema;
+        Err(IoError::new(
+            "this program's I/O cannot follow a change of its variables: stop it and start \
+             the new build",
+        ))
+    }
 }
 
 /// Where a cycle's exchange fell against the I/O's own clock ([`IoBackend::cycle_phase`]):
@@ -117,4 +129,7 @@ impl<T> IoBackend<T> for NoIo {
         IoStatus::NONE
     }
     fn stop(&mut self) {}
+    fn rebind(&mut self, _: &plc_core::memory::Schema) -> Result<(), IoError> {
+        Ok(())
+    }
 }

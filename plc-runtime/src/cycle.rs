@@ -11,6 +11,7 @@ use super::{
 use crate::alarm_journal::AlarmJournal;
 use crate::alarms::RuntimeAlarms;
 use crate::retain::{RetainStore, RetainWriter};
+use crate::swap::{Probation, Remake};
 use plc_core::Time;
 use plc_core::memory::Memory;
 use plc_shm::{RunState, ShmOwner};
@@ -21,16 +22,20 @@ use std::time::Instant;
 
 /// What a running program owns besides its settings.
 pub(super) struct Cycle<T: Memory> {
-    ctx: Context<T>,
+    pub(super) ctx: Context<T>,
     /// The last completed cycle's image. On a cache line: the image type has alignment 1, and
     /// the word copies into shared memory cost up to three times as much from a buffer that
     /// straddles lines.
-    image: Box<Aligned<T::Image>>,
-    retained: RetainedBytes,
-    retain: Option<RetainWriter<T::Image>>,
+    pub(super) image: Box<Aligned<T::Image>>,
+    pub(super) retained: RetainedBytes,
+    pub(super) retain: Option<RetainWriter<T::Image>>,
     /// The alarm journal's writer, if the program has alarms and a journal file.
-    journal: Option<AlarmJournal>,
-    shm: Option<ShmOwner<T>>,
+    pub(super) journal: Option<AlarmJournal>,
+    pub(super) shm: Option<ShmOwner<T>>,
+    /// A change on probation.
+    pub(super) probation: Option<Probation<T>>,
+    /// How to follow a change of layout.
+    pub(super) remake: Remake,
     /// The cycle's clock (`Context::now`'s, the schedule's, the published values' time).
     clock: CycleClock,
     /// The mean of all cycles' times.
@@ -99,6 +104,12 @@ impl<T: Memory> Cycle<T> {
             retain,
             journal,
             shm,
+            probation: None,
+            remake: Remake {
+                retain: s.retain.clone().map(|path| (path, s.retain_interval)),
+                sharing,
+                max_shelve: s.max_shelve,
+            },
             clock: CycleClock::start(),
             mean: RunningMean::default(),
             #[cfg(feature = "cycle-probe")]
@@ -134,6 +145,8 @@ impl<T: Memory> Cycle<T> {
         let mut start = monotonic_ns();
         while !s.stop.is_stopped() && s.max_cycles.is_none_or(|m| self.ctx.cycle < m) {
             let end = self.once(start, &mut *s.backend, tick)?;
+            // Between two cycles: a change of the program, if one waits (`swap`).
+            self.take_swap(s.swaps.as_ref(), &mut *s.backend);
             // Where the exchange fell against the I/O's own clock (EtherCAT: SYNC0), if it
             // keeps one: the next deadline moves a little towards it (`schedule`).
             let phase = s.backend.cycle_phase();
@@ -213,8 +226,10 @@ impl<T: Memory> Cycle<T> {
             }
         }));
         if let Err(panic) = step {
-            return Err(self.fault(backend, panic));
+            // On probation, the previous program comes back and the cycle goes on with it.
+            self.on_panic(backend, panic)?;
         }
+        let ctx = &mut self.ctx;
         // After the tick and the forces, from the values the cycle publishes: the program
         // writes nothing for its alarms.
         if alarmed {
@@ -266,7 +281,7 @@ impl<T: Memory> Cycle<T> {
 
     /// The tick panicked: outputs to zero, on the bus and in the segment, and the I/O in its
     /// safe state.
-    fn fault(
+    pub(super) fn fault(
         &mut self,
         backend: &mut (dyn IoBackend<T> + Send),
         panic: Box<dyn Any + Send>,
@@ -382,7 +397,7 @@ fn start_alarms<T: Memory>(
 }
 
 /// A panic's message, when it has one.
-fn panic_message(panic: &(dyn Any + Send)) -> String {
+pub(super) fn panic_message(panic: &(dyn Any + Send)) -> String {
     panic
         .downcast_ref::<&str>()
         .map(|s| s.to_string())
@@ -392,12 +407,12 @@ fn panic_message(panic: &(dyn Any + Send)) -> String {
 
 /// An image on a cache-line boundary.
 #[repr(C, align(64))]
-struct Aligned<I>(I);
+pub(super) struct Aligned<I>(pub(super) I);
 
 /// The image bytes of the nonvolatile variables as last handed to the retain writer, to notice
 /// a change without decoding. Their ranges are found once, so a cycle compares bytes in place
 /// and neither walks `VARIABLES` nor allocates.
-struct RetainedBytes {
+pub(super) struct RetainedBytes {
     ranges: Vec<std::ops::Range<usize>>,
     last: Vec<u8>,
 }
@@ -415,6 +430,14 @@ impl RetainedBytes {
             .flat_map(|r| bytes[r.clone()].iter().copied())
             .collect();
         RetainedBytes { ranges, last }
+    }
+
+    /// As [`new`](Self::new), but the first comparison finds every value changed: after a
+    /// change of the program, whose new retain writer must save at once.
+    pub(super) fn changed_from_nothing(schema: &plc_core::memory::Schema, bytes: &[u8]) -> Self {
+        let mut r = RetainedBytes::new(schema, bytes);
+        r.last.iter_mut().for_each(|b| *b = !*b);
+        r
     }
 
     /// Whether the nonvolatile bytes of `image` differ from the last ones (then remembered).

@@ -15,11 +15,13 @@ pub mod probe;
 pub mod retain;
 mod schedule;
 mod stats;
+mod swap;
 
 pub use alarms::{AlarmActionError, RuntimeAlarms};
 pub use backend::{CyclePhase, IoBackend, IoError, IoStatus, NoIo};
 pub use context::Context;
 pub use plc_shm::{BusState, CycleStats};
+pub use swap::{Convert, Swap, SwapEvent};
 
 use cycle::Cycle;
 
@@ -143,6 +145,7 @@ pub struct RuntimeBuilder<T> {
     alarm_capacity: usize,
     max_shelve: plc_core::Time,
     backend: Box<dyn IoBackend<T> + Send>,
+    swaps: Option<std::sync::mpsc::Receiver<Swap<T>>>,
     realtime: Option<i32>,
     cpu: Option<usize>,
     max_cycles: Option<u64>,
@@ -202,6 +205,7 @@ impl<T: Memory> Runtime<T> {
             alarm_capacity: alarm_journal::DEFAULT_CAPACITY,
             max_shelve: plc_core::alarm::DEFAULT_MAX_SHELVE,
             backend: Box::new(NoIo),
+            swaps: None,
             realtime: None,
             cpu: None,
             max_cycles: None,
@@ -293,6 +297,12 @@ impl<T: Memory> RuntimeBuilder<T> {
     /// The I/O backend (default: none).
     pub fn backend(mut self, backend: impl IoBackend<T> + Send + 'static) -> Self {
         self.backend = Box::new(backend);
+        self
+    }
+    /// Takes online changes from `swaps`: each is made between two cycles (see [`Swap`]). A
+    /// host (`plc run`) prepares them; a linked program has no use for it.
+    pub fn swaps(mut self, swaps: std::sync::mpsc::Receiver<Swap<T>>) -> Self {
+        self.swaps = Some(swaps);
         self
     }
     /// Runs the cycle thread with SCHED_FIFO at this priority (1..=99).

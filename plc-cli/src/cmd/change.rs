@@ -1,13 +1,17 @@
-//! `plc change SEGMENT MODULE --dry-run [--reset PATH...]`: what an online change to a new
-//! build of the program would do to every value of the running one, from the two descriptors.
-//! The module is checked as a host checks it (owner, writers, links, ELF, fingerprint, entry)
-//! and loaded only by a short-lived child: its code never runs in `plc`.
+//! `plc change SEGMENT MODULE [--dry-run] [--reset PATH...]`, `plc change SEGMENT --back`: an
+//! online change of a program `plc run` hosts, asked of the host through its change socket
+//! (`change_server`), which reports each value kept, converted, added, reset and removed.
+//! Against a linked program only `--dry-run` works: the module is then checked here as a host
+//! checks it and loaded only by a short-lived child, its code never run in `plc`.
 
 use super::Error;
+use super::change_wire::{Answer, MAX_LINE, Outcome, Request, head, report, socket_path};
+use plc_module::Module;
 use plc_module::trial::Trial;
-use plc_module::{Module, ModuleInfo};
 use plc_shm::DynSegment;
 use plc_shm::change::{ChangePlan, Direction};
+use std::io::{BufRead, BufReader, Read, Write};
+use std::os::unix::net::UnixStream;
 use std::path::{Path, PathBuf};
 
 /// `plc change`.
@@ -33,20 +37,65 @@ pub struct ChangeArgs {
 }
 
 pub fn run(args: &ChangeArgs) -> Result<(), Error> {
-    let seg = DynSegment::attach(&args.segment)?;
-    let module = match (&args.module, args.dry_run && !args.back) {
-        (Some(module), true) => module,
-        _ => {
-            return Err(format!(
-                "segment `{}`: this version of plc-vars plans a change but does not make one \
-                 yet: stop the program and start the new build (`plc run MODULE` keeps the \
-                 retained values); `plc change {} MODULE --dry-run` shows what a change would \
-                 do to each value",
-                args.segment, args.segment
-            )
-            .into());
-        }
+    let socket = socket_path(&args.segment)?;
+    let module = match &args.module {
+        Some(m) => Some(std::path::absolute(m)?),
+        None => None,
     };
+    match UnixStream::connect(&socket) {
+        Ok(stream) => ask_host(stream, module, args),
+        Err(_) => {
+            let seg = DynSegment::attach(&args.segment)?;
+            match (&module, args.dry_run) {
+                (Some(module), true) => plan_here(&seg, module, args),
+                _ => Err(format!(
+                    "segment `{}` is not run by `plc run` (no change socket `{}` of yours): only \
+                     a program `plc run` hosts takes a new build between two cycles; a linked \
+                     program is stopped and started again (`plc change {} MODULE --dry-run` \
+                     shows what a change would do to each value)",
+                    args.segment,
+                    socket.display(),
+                    args.segment
+                )
+                .into()),
+            }
+        }
+    }
+}
+
+/// The change through the host's socket: it prepares, makes and reports it.
+fn ask_host(stream: UnixStream, module: Option<PathBuf>, args: &ChangeArgs) -> Result<(), Error> {
+    let request = Request {
+        module,
+        resets: args.reset.clone(),
+        dry_run: args.dry_run,
+    };
+    let mut line = serde_json::to_vec(&request)?;
+    line.push(b'\n');
+    (&stream).write_all(&line)?;
+    let mut answer = String::new();
+    BufReader::new((&stream).take(MAX_LINE)).read_line(&mut answer)?;
+    let answer: Answer = serde_json::from_str(&answer)
+        .map_err(|_| "the host ended without an answer: see its log")?;
+    match answer.outcome {
+        Outcome::Done => {
+            print!("{}", answer.text);
+            Ok(())
+        }
+        Outcome::Refused => Err(answer.text.into()),
+        Outcome::SwappedBack => {
+            let (report, why) = answer
+                .text
+                .rsplit_once("swapped back: ")
+                .unwrap_or(("", &answer.text));
+            print!("{report}");
+            Err(format!("swapped back: {why}").into())
+        }
+    }
+}
+
+/// A dry run against a program `plc run` does not host: the two descriptors, here.
+fn plan_here(seg: &DynSegment, module: &Path, args: &ChangeArgs) -> Result<(), Error> {
     let info = Module::inspect(module, &Trial::this_program()?)?;
     let plan = ChangePlan::new(
         seg.descriptor(),
@@ -64,44 +113,7 @@ pub fn run(args: &ChangeArgs) -> Result<(), Error> {
             lines.join("\n")
         )
     })?;
-    print!("{}", report(&args.segment, module, &info, &plan));
+    let head = head(&args.segment, &info.name, module, &info.fingerprint, true);
+    print!("{}", report(&head, &plan));
     Ok(())
-}
-
-/// The report: the change and each value in the list of what happens to it.
-fn report(segment: &str, module: &Path, info: &ModuleInfo, plan: &ChangePlan) -> String {
-    let mut out = format!(
-        "dry run, nothing changed: segment `{segment}` would run `{}` ({}), built by {}\n",
-        info.name,
-        module.display(),
-        info.fingerprint
-    );
-    if plan.changes_nothing() {
-        out.push_str("every value is kept as it is: the change would swap the code only\n");
-    }
-    let lists = [
-        ("kept", &plan.kept),
-        ("converted", &plan.widened),
-        ("added", &plan.added),
-        ("reset", &plan.reset),
-        ("removed", &plan.removed),
-    ];
-    for (what, paths) in lists {
-        out.push_str(&format!("{what:<10} {:>5}", paths.len()));
-        let mut width = 16;
-        for (k, path) in paths.iter().enumerate() {
-            let sep = if k == 0 { "  " } else { ", " };
-            if k > 0 && width + sep.len() + path.len() > 100 {
-                out.push_str(",\n                 ");
-                width = 17;
-            } else {
-                out.push_str(sep);
-                width += sep.len();
-            }
-            out.push_str(path);
-            width += path.len();
-        }
-        out.push('\n');
-    }
-    out
 }

@@ -5,6 +5,8 @@ pub mod alarm_history;
 pub mod alarms;
 pub mod bus;
 pub mod change;
+pub mod change_server;
+pub mod change_wire;
 pub mod export;
 pub mod force;
 pub mod get;

@@ -108,7 +108,16 @@ pub fn run(args: &RunArgs) -> Result<(), Error> {
         args.period_us,
         retain.as_ref().map_or("none".into(), |f| f.display().to_string()),
     );
-    builder.build()?.run(plc_module::tick)?;
+    let (swaps, changes) = std::sync::mpsc::channel();
+    builder = builder.swaps(changes);
+    let runtime = builder.build()?;
+    let _changes = super::change_server::serve(
+        &segment,
+        &module,
+        swaps,
+        Duration::from_micros(args.period_us),
+    )?;
+    runtime.run(plc_module::tick)?;
     Ok(())
 }
 

@@ -1,0 +1,258 @@
+//! The host's side of `plc change`: a socket in the user's runtime dir, one change at a time,
+//! each prepared on this thread (the module checked, tried in a child and loaded, the plans
+//! both ways, the new initial image) and made by the cycle between two cycles. It answers
+//! once the new program passed its probation, or came back from it.
+
+use super::change_wire::{Answer, MAX_LINE, Outcome, Request, head, report, socket_path};
+use plc_module::trial::Trial;
+use plc_module::{AtChange, Module, ModuleMemory, prepare, prepare_back};
+use plc_runtime::{Swap, SwapEvent};
+use plc_shm::LayoutDescriptor;
+use plc_shm::change::ChangePlan;
+use std::io::{BufRead, BufReader, Write};
+use std::os::fd::AsRawFd;
+use std::os::unix::net::{UnixListener, UnixStream};
+use std::path::PathBuf;
+use std::sync::Arc;
+use std::sync::mpsc::{Receiver, RecvTimeoutError, Sender};
+use std::time::Duration;
+
+/// Cycles a new program is on probation.
+pub const PROBATION: u64 = 100;
+
+/// The change socket, removed when dropped (when `plc run` ends).
+pub struct ChangeServer {
+    path: PathBuf,
+}
+
+impl Drop for ChangeServer {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.path);
+    }
+}
+
+/// What the server knows of the running program.
+struct Host {
+    segment: String,
+    running: LayoutDescriptor,
+    at_change: Option<(AtChange, LayoutDescriptor)>,
+    swaps: Sender<Swap<ModuleMemory>>,
+    period: Duration,
+}
+
+/// Listens for changes of the program running as `segment` (its module `running`), handing
+/// each to the cycle through `swaps`.
+pub fn serve(
+    segment: &str,
+    running: &Module,
+    swaps: Sender<Swap<ModuleMemory>>,
+    period: Duration,
+) -> Result<ChangeServer, super::Error> {
+    let path = socket_path(segment)?;
+    if UnixStream::connect(&path).is_ok() {
+        return Err(format!("`{}`: another host serves this segment", path.display()).into());
+    }
+    let _ = std::fs::remove_file(&path);
+    let listener = UnixListener::bind(&path)
+        .map_err(|e| format!("cannot listen for changes at `{}`: {e}", path.display()))?;
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o600))?;
+    let mut host = Host {
+        segment: segment.to_string(),
+        running: running.descriptor().clone(),
+        at_change: None,
+        swaps,
+        period,
+    };
+    std::thread::Builder::new()
+        .name("plc-change".into())
+        .spawn(move || {
+            plc_shm::normal_priority();
+            for stream in listener.incoming().flatten() {
+                let answer = host.answer(&stream);
+                let mut line = serde_json::to_vec(&answer).unwrap_or_default();
+                line.push(b'\n');
+                let _ = (&stream).write_all(&line);
+            }
+        })?;
+    Ok(ChangeServer { path })
+}
+
+/// The uid of the process at the other end.
+fn peer_uid(stream: &UnixStream) -> Option<u32> {
+    let mut cred = libc::ucred {
+        pid: 0,
+        uid: 0,
+        gid: 0,
+    };
+    let mut len = size_of::<libc::ucred>() as libc::socklen_t;
+    // SAFETY: SO_PEERCRED fills a ucred of the size given, on our own socket.
+    let r = unsafe {
+        libc::getsockopt(
+            stream.as_raw_fd(),
+            libc::SOL_SOCKET,
+            libc::SO_PEERCRED,
+            (&mut cred as *mut libc::ucred).cast(),
+            &mut len,
+        )
+    };
+    (r == 0).then_some(cred.uid)
+}
+
+fn refused(text: impl Into<String>) -> Answer {
+    Answer {
+        outcome: Outcome::Refused,
+        text: text.into(),
+    }
+}
+
+impl Host {
+    fn answer(&mut self, stream: &UnixStream) -> Answer {
+        let owner = plc_shm::euid();
+        match peer_uid(stream) {
+            Some(uid) if uid == owner => {}
+            Some(uid) => {
+                return refused(format!(
+                    "only uid {owner}, who runs the program, may change it (you are uid {uid})"
+                ));
+            }
+            None => return refused("the caller's credentials could not be read"),
+        }
+        let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
+        let mut line = String::new();
+        let read = BufReader::new(std::io::Read::take(stream, MAX_LINE)).read_line(&mut line);
+        let request: Request = match read.ok().and_then(|_| serde_json::from_str(&line).ok()) {
+            Some(r) => r,
+            None => return refused("the request is not one this host reads"),
+        };
+        match &request.module {
+            Some(path) => self.change(path, &request),
+            None => self.back(request.dry_run),
+        }
+    }
+
+    fn change(&mut self, path: &std::path::Path, request: &Request) -> Answer {
+        let trial = match Trial::this_program() {
+            Ok(t) => t,
+            Err(e) => return refused(format!("cannot find this program to try the module: {e}")),
+        };
+        let module = match Module::load(path, &trial) {
+            Ok(m) => Arc::new(m),
+            Err(e) => return refused(e.to_string()),
+        };
+        let new_descriptor = module.descriptor().clone();
+        let info = module.info();
+        let prepared = match prepare(&self.running, module, &request.resets, PROBATION) {
+            Ok(p) => p,
+            Err(refusals) => {
+                let lines: Vec<String> = refusals.iter().map(|r| format!("  {r}")).collect();
+                return refused(format!(
+                    "the change to `{}` is refused, nothing changed:\n{}\nname a value with \
+                     --reset PATH to start it afresh from the new build's initial value",
+                    path.display(),
+                    lines.join("\n")
+                ));
+            }
+        };
+        let head = head(
+            &self.segment,
+            &info.name,
+            path,
+            &info.fingerprint,
+            request.dry_run,
+        );
+        if request.dry_run {
+            return Answer {
+                outcome: Outcome::Done,
+                text: report(&head, &prepared.plan),
+            };
+        }
+        let answer = self.make(prepared.swap, prepared.events, &head, &prepared.plan);
+        if answer.outcome == Outcome::Done {
+            let previous = std::mem::replace(&mut self.running, new_descriptor);
+            self.at_change = Some((prepared.at_change, previous));
+        }
+        answer
+    }
+
+    fn back(&mut self, dry_run: bool) -> Answer {
+        let Some((at_change, previous)) = &self.at_change else {
+            return refused("no change was made since the program started: nothing to go back to");
+        };
+        let Some((plan, swap, events)) = prepare_back(&self.running, at_change, PROBATION) else {
+            return refused("the variables before the last change are gone");
+        };
+        let head = format!(
+            "segment `{}` {} the program it ran before the last change",
+            self.segment,
+            if dry_run {
+                "would return to"
+            } else {
+                "returns to"
+            }
+        );
+        if dry_run {
+            return Answer {
+                outcome: Outcome::Done,
+                text: report(&head, &plan),
+            };
+        }
+        let previous = previous.clone();
+        let answer = self.make(swap, events, &head, &plan);
+        if answer.outcome == Outcome::Done {
+            self.running = previous;
+            self.at_change = None;
+        }
+        answer
+    }
+
+    /// Hands `swap` to the cycle and waits for its outcome.
+    fn make(
+        &self,
+        swap: Swap<ModuleMemory>,
+        events: Receiver<SwapEvent>,
+        head: &str,
+        plan: &ChangePlan,
+    ) -> Answer {
+        if self.swaps.send(swap).is_err() {
+            return refused("the program has stopped");
+        }
+        let patience = self.period * (PROBATION as u32 + 10) + Duration::from_secs(30);
+        let mut text = report(head, plan);
+        loop {
+            match events.recv_timeout(patience) {
+                Ok(SwapEvent::Refused(why)) => return refused(why),
+                Ok(SwapEvent::Swapped {
+                    cycle,
+                    took,
+                    relaid,
+                }) => text.push_str(&format!(
+                    "swapped before cycle {cycle}, {} us on the cycle thread{}\n",
+                    took.as_micros(),
+                    if relaid {
+                        "; the segment was made again (tools attach again)"
+                    } else {
+                        ""
+                    }
+                )),
+                Ok(SwapEvent::Kept { cycle }) => {
+                    text.push_str(&format!("probation passed at cycle {cycle}\n"));
+                    return Answer {
+                        outcome: Outcome::Done,
+                        text,
+                    };
+                }
+                Ok(SwapEvent::SwappedBack { cycle, message }) => {
+                    return Answer {
+                        outcome: Outcome::SwappedBack,
+                        text: format!("{text}swapped back: {message} (in cycle {cycle})"),
+                    };
+                }
+                Err(RecvTimeoutError::Timeout) => {
+                    return refused(format!("{text}no word from the cycle in {patience:?}"));
+                }
+                Err(RecvTimeoutError::Disconnected) => return refused("the program has stopped"),
+            }
+        }
+    }
+}

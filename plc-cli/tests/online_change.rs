@@ -1,0 +1,224 @@
+//! Online changes of programs `plc run` hosts, in real processes: `plc change` asks the host,
+//! which checks and tries the new module, plans the conversion, and the cycle swaps between
+//! two cycles; the new code's effect, every kept value, the way back, the refusals (the
+//! running program untouched), the probation, and the tensile tester changed while its bus is
+//! in OP.
+
+mod common;
+
+use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, wait_until};
+use plc_io::BusState;
+use plc_io::shm::DynSegment;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+fn module(name: &str) -> PathBuf {
+    let lib = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name(name);
+    assert!(
+        lib.is_file(),
+        "{} is missing: run the tests with scripts/test.sh",
+        lib.display()
+    );
+    lib
+}
+
+fn host(lib: &str, segment: &str) -> ChildGuard {
+    let child = Command::new(env!("CARGO_BIN_EXE_plc"))
+        .arg("run")
+        .arg(module(lib))
+        .args(["--segment", segment])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn_guarded()
+        .unwrap();
+    wait_until("the host to publish", || {
+        DynSegment::attach(segment).is_ok()
+    });
+    wait_until("the change socket", || {
+        plc(&["change", segment, "--back"]).status.code() == Some(1)
+            && stderr(&plc(&["change", segment, "--back"])).contains("nothing to go back to")
+    });
+    child
+}
+
+fn value(segment: &str, name: &str) -> String {
+    let out = stdout(&plc(&["get", segment, name]));
+    out.trim().rsplit(" = ").next().unwrap_or("").to_string()
+}
+
+fn number(segment: &str, name: &str) -> i64 {
+    value(segment, name).parse().unwrap()
+}
+
+fn change(segment: &str, lib: &str, extra: &[&str]) -> Output {
+    let lib = module(lib);
+    let mut args = vec!["change", segment, lib.to_str().unwrap()];
+    args.extend_from_slice(extra);
+    plc(&args)
+}
+
+#[test]
+fn a_change_runs_the_new_code_with_every_value_kept_and_goes_back() {
+    let segment = format!("chg_values_{}", std::process::id());
+    let _host = host("libcounter.so", &segment);
+    wait_until("some cycles", || number(&segment, "count") > 300);
+
+    let out = change(&segment, "libcounter_v2.so", &["--reset", "last_now_us"]);
+    let report = stdout(&out);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        report.contains("converted      1  count (UDINT to ULINT)"),
+        "{report}"
+    );
+    assert!(
+        report.contains("removed        1  panic_at_cycle"),
+        "{report}"
+    );
+    assert!(report.contains("swapped before cycle"), "{report}");
+    assert!(report.contains("probation passed"), "{report}");
+
+    // The new code counts by two, from where the old one was; `speed` starts at its initial
+    // value. Read together in one `get`, so the same cycle.
+    let pair = || {
+        let out = stdout(&plc(&["get", &segment, "count", "last_cycle"]));
+        let nums: Vec<i64> = out
+            .lines()
+            .map(|l| l.rsplit(" = ").next().unwrap().parse().unwrap())
+            .collect();
+        (nums[0], nums[1])
+    };
+    let (c1, k1) = pair();
+    std::thread::sleep(std::time::Duration::from_millis(50));
+    let (c2, k2) = pair();
+    assert_eq!(
+        c2 - c1,
+        2 * (k2 - k1),
+        "two a cycle: {c1}@{k1} then {c2}@{k2}"
+    );
+    assert_eq!(value(&segment, "speed"), "2.5");
+
+    // Back: the count narrows back (it fits), `panic_at_cycle` returns with its value at the
+    // change, `speed` goes.
+    let out = plc(&["change", &segment, "--back"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(stdout(&out).contains("narrowed       1  count (ULINT to UDINT)"));
+    assert_eq!(value(&segment, "panic_at_cycle"), "0");
+    assert!(!plc(&["get", &segment, "speed"]).status.success());
+    let (c1, k1) = pair();
+    std::thread::sleep(std::time::Duration::from_millis(50));
+    let (c2, k2) = pair();
+    assert_eq!(c2 - c1, k2 - k1, "one a cycle again");
+}
+
+#[test]
+fn refused_changes_leave_the_running_program_untouched() {
+    let segment = format!("chg_refused_{}", std::process::id());
+    let _host = host("libcounter.so", &segment);
+    let before = DynSegment::attach(&segment).unwrap().descriptor().clone();
+
+    let out = change(&segment, "libcounter_v2.so", &[]);
+    assert!(!out.status.success());
+    assert!(stderr(&out).contains("`last_now_us`"), "{}", stderr(&out));
+
+    let out = change(&segment, "libforeign.so", &[]);
+    assert!(stderr(&out).contains("rustc 1.80.0"), "{}", stderr(&out));
+
+    let dir = std::env::temp_dir().join(format!("plc-chg-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let writable = dir.join("libcounter_v2.so");
+    std::fs::write(
+        &writable,
+        std::fs::read(module("libcounter_v2.so")).unwrap(),
+    )
+    .unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&writable, std::fs::Permissions::from_mode(0o664)).unwrap();
+    let out = plc(&["change", &segment, writable.to_str().unwrap()]);
+    assert!(stderr(&out).contains("writable"), "{}", stderr(&out));
+    let link = dir.join("libcurrent.so");
+    std::os::unix::fs::symlink(module("libcounter.so"), &link).unwrap();
+    let out = plc(&["change", &segment, link.to_str().unwrap()]);
+    assert!(stderr(&out).contains("symbolic link"), "{}", stderr(&out));
+    let text = dir.join("libtext.so");
+    std::fs::write(&text, "no module\n").unwrap();
+    let out = plc(&["change", &segment, text.to_str().unwrap()]);
+    assert!(stderr(&out).contains("not an ELF file"), "{}", stderr(&out));
+    std::fs::remove_dir_all(&dir).unwrap();
+
+    let seg = DynSegment::attach(&segment).unwrap();
+    assert_eq!(seg.descriptor(), &before, "the same program runs");
+    let n = number(&segment, "count");
+    wait_until("it counts on", || number(&segment, "count") > n);
+}
+
+#[test]
+fn a_module_that_panics_on_probation_is_swapped_back_outputs_untouched() {
+    let segment = format!("chg_panics_{}", std::process::id());
+    let _host = host("libcounter.so", &segment);
+    assert!(plc(&["force", &segment, "inputs=4"]).status.success());
+    wait_until("the output on", || value(&segment, "outputs") == "1");
+
+    let out = change(&segment, "libpanics.so", &[]);
+    assert!(!out.status.success());
+    let err = stderr(&out);
+    assert!(
+        err.contains("swapped back: the program panicked: this build panics in its third cycle"),
+        "{err}"
+    );
+    // The previous program runs on, as it was, and its output was never zeroed.
+    let seg = DynSegment::attach(&segment).unwrap();
+    assert!(seg.index_of("new_ticks").is_none());
+    assert_eq!(value(&segment, "outputs"), "1");
+    let n = number(&segment, "count");
+    wait_until("it counts on", || number(&segment, "count") > n);
+}
+
+#[test]
+fn the_tensile_tester_takes_a_new_build_with_its_bus_in_op() {
+    let segment = format!("chg_tensile_{}", std::process::id());
+    let _host = host("libtensile_tester.so", &segment);
+    let seg = DynSegment::attach(&segment).unwrap();
+    wait_until("the bus in OP", || seg.status().bus_state == BusState::Op);
+    wait_until("the crosshead homed", || {
+        value(&segment, "crosshead.homed") == "true"
+    });
+
+    // Watch the bus state through the change, every half millisecond.
+    let watching = Arc::new(AtomicBool::new(true));
+    let watcher = {
+        let watching = watching.clone();
+        let name = segment.clone();
+        std::thread::spawn(move || {
+            let seg = DynSegment::attach(&name).unwrap();
+            let mut states = Vec::new();
+            while watching.load(Ordering::Relaxed) {
+                states.push(seg.status().bus_state);
+                std::thread::sleep(std::time::Duration::from_micros(500));
+            }
+            states
+        })
+    };
+    let out = change(&segment, "libtensile_tester.so", &[]);
+    watching.store(false, Ordering::Relaxed);
+    let states = watcher.join().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stdout(&out).contains("swaps the code only"),
+        "{}",
+        stdout(&out)
+    );
+    assert!(
+        !stdout(&out).contains("made again"),
+        "the same layout keeps its segment: {}",
+        stdout(&out)
+    );
+    assert!(states.len() > 10);
+    assert!(
+        states.iter().all(|s| *s == BusState::Op),
+        "the bus left OP: {states:?}"
+    );
+    assert_eq!(value(&segment, "crosshead.homed"), "true");
+    assert_eq!(seg.status().bus_state, BusState::Op);
+}

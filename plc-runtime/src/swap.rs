@@ -1,0 +1,209 @@
+//! An online change: new variables (a new build of the program, converted from the running
+//! one's) take over between two cycles, after a cycle published its image and before the
+//! next exchange, so no value is a cycle old and the I/O never stops.
+//!
+//! The conversion is prepared off the cycle thread by whoever sends the [`Swap`] (a host such
+//! as `plc run`); the cycle only runs it, then follows the new variables with what depends
+//! on them, when their layout differs: the I/O's bindings ([`IoBackend::rebind`]), the
+//! segment (made again: tools attach again as after a restart; forces held are released and
+//! traces end, each with a message), the retain writer (the file follows the new
+//! declaration) and the alarms (evaluated afresh). A new program is on probation for
+//! [`Swap::probation`] cycles: a panic in them swaps the previous one back before that
+//! cycle's outputs are written.
+
+use super::cycle::Cycle;
+use super::{IoBackend, RuntimeError};
+use crate::alarms::RuntimeAlarms;
+use crate::retain::{RetainStore, RetainWriter};
+use plc_core::memory::Memory;
+use plc_shm::ShmOwner;
+use std::sync::mpsc::Sender;
+use std::time::Duration;
+
+/// The conversion of the running variables into new ones (or back).
+pub type Convert<T> = Box<dyn FnOnce(&T) -> Result<T, String> + Send>;
+
+/// A change the cycle makes between two cycles: see the [module](self).
+pub struct Swap<T> {
+    /// The new variables from the running ones: run on the cycle thread, so only the
+    /// conversion itself (everything else prepared).
+    pub convert: Convert<T>,
+    /// The previous variables from the new ones, if the new program panics on probation.
+    pub back: Convert<T>,
+    /// Cycles on probation, the first new one included.
+    pub probation: u64,
+    /// Where the cycle tells what happened.
+    pub report: Sender<SwapEvent>,
+}
+
+/// What became of a [`Swap`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SwapEvent {
+    /// Not made; the running program goes on as it was.
+    Refused(String),
+    /// The new variables run from cycle `cycle` on; the swap took `took` on the cycle thread.
+    Swapped {
+        /// The first cycle of the new program.
+        cycle: u64,
+        /// The work on the cycle thread.
+        took: Duration,
+        /// Whether the variables' layout changed (the segment was made again).
+        relaid: bool,
+    },
+    /// Its probation passed: it stays.
+    Kept {
+        /// The last cycle of the probation.
+        cycle: u64,
+    },
+    /// It panicked in cycle `cycle` of its probation and the previous program was swapped
+    /// back before that cycle's outputs went out.
+    SwappedBack {
+        /// The cycle it panicked in.
+        cycle: u64,
+        /// The panic's message.
+        message: String,
+    },
+}
+
+/// A change on probation: until which cycle, and the way back.
+pub(super) struct Probation<T> {
+    until: u64,
+    back: Convert<T>,
+    report: Sender<SwapEvent>,
+}
+
+/// What the cycle needs to follow a change of layout: how the retain writer and the segment
+/// were made at start.
+pub(super) struct Remake {
+    pub retain: Option<(std::path::PathBuf, Duration)>,
+    pub sharing: plc_shm::Sharing,
+    pub max_shelve: plc_core::Time,
+}
+
+impl<T: Memory> Cycle<T> {
+    /// Between two cycles: ends a probation that passed, and makes the change waiting, if
+    /// any (one at a time: a change that comes during another's probation is refused).
+    pub(super) fn take_swap(
+        &mut self,
+        swaps: Option<&std::sync::mpsc::Receiver<Swap<T>>>,
+        backend: &mut (dyn IoBackend<T> + Send),
+    ) {
+        let cycle = self.ctx.cycle;
+        if self.probation.as_ref().is_some_and(|p| cycle >= p.until)
+            && let Some(p) = self.probation.take()
+        {
+            let _ = p.report.send(SwapEvent::Kept { cycle });
+        }
+        let Some(swap) = swaps.and_then(|rx| rx.try_recv().ok()) else {
+            return;
+        };
+        if self.probation.is_some() {
+            let _ = swap.report.send(SwapEvent::Refused(
+                "the last change is still on probation: try again once it passed".into(),
+            ));
+            return;
+        }
+        let started = std::time::Instant::now();
+        match self.install(backend, swap.convert) {
+            Ok(relaid) => {
+                let _ = swap.report.send(SwapEvent::Swapped {
+                    cycle: cycle + 1,
+                    took: started.elapsed(),
+                    relaid,
+                });
+                self.probation = Some(Probation {
+                    until: cycle + swap.probation.max(1),
+                    back: swap.back,
+                    report: swap.report,
+                });
+            }
+            Err(why) => {
+                let _ = swap.report.send(SwapEvent::Refused(why));
+            }
+        }
+    }
+
+    /// A panic in this cycle's tick: swaps the previous program back if the running one is
+    /// on probation (`Ok`: the cycle goes on with it), else the program's fault.
+    pub(super) fn on_panic(
+        &mut self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        panic: Box<dyn std::any::Any + Send>,
+    ) -> Result<(), RuntimeError> {
+        let Some(p) = self.probation.take() else {
+            return Err(self.fault(backend, panic));
+        };
+        let message = super::cycle::panic_message(&*panic);
+        match self.install(backend, p.back) {
+            Ok(_) => {
+                log::error!(target: "plc_io::runtime",
+                    "the new program panicked in cycle {} of its probation: {message}; the \
+                     previous program was swapped back", self.ctx.cycle);
+                let _ = p.report.send(SwapEvent::SwappedBack {
+                    cycle: self.ctx.cycle,
+                    message,
+                });
+                Ok(())
+            }
+            Err(why) => {
+                log::error!(target: "plc_io::runtime", "the previous program could not be swapped back: {why}");
+                Err(self.fault(backend, panic))
+            }
+        }
+    }
+
+    /// Puts the variables `convert` makes in place of the running ones; whether their layout
+    /// changed. Refused without a change if the conversion or the I/O's bindings are.
+    fn install(
+        &mut self,
+        backend: &mut (dyn IoBackend<T> + Send),
+        convert: Convert<T>,
+    ) -> Result<bool, String> {
+        let new = convert(&self.ctx.gm)?;
+        let schema = new.schema();
+        let relaid = schema != self.ctx.gm.schema();
+        if relaid {
+            backend
+                .rebind(&schema)
+                .map_err(|e| format!("its links do not fit the running bus: {e}"))?;
+            self.relay(&new)?;
+        }
+        self.ctx.gm = new;
+        self.ctx.gm.store_image(&mut self.image.0);
+        Ok(relaid)
+    }
+
+    /// Follows a new layout with the segment, the retain writer and the alarms.
+    fn relay(&mut self, new: &T) -> Result<(), String> {
+        let schema = new.schema();
+        if let Some(old) = self.shm.take() {
+            let name = old.name().to_string();
+            drop(old);
+            let made = ShmOwner::create(&name, &self.remake.sharing, schema);
+            self.shm = Some(made.map_err(|e| format!("segment `{name}` was not made again: {e}"))?);
+        }
+        if let Some((path, interval)) = &self.remake.retain {
+            if let Some(old) = self.retain.take() {
+                // Its last offer is saved off the cycle; the new writer saves the converted
+                // values at its first offer, right after this swap.
+                std::thread::spawn(move || old.finish(None));
+            }
+            self.retain = Some(RetainWriter::spawn_for(
+                RetainStore::new(path),
+                *interval,
+                new.clone(),
+            ));
+        }
+        let mut image = new.new_image();
+        new.store_image(&mut image);
+        self.retained =
+            super::cycle::RetainedBytes::changed_from_nothing(&schema, T::image_bytes(&image));
+        let mut alarms = RuntimeAlarms::of(&schema)?;
+        alarms.set_max_shelve(self.remake.max_shelve);
+        if let Some(journal) = &self.journal {
+            alarms.attach(journal.sender(alarms.path_table()));
+        }
+        self.ctx.alarms = alarms;
+        Ok(())
+    }
+}
