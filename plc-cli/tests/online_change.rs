@@ -25,10 +25,16 @@ fn module(name: &str) -> PathBuf {
 }
 
 fn host(lib: &str, segment: &str) -> ChildGuard {
+    host_with(lib, segment, &[])
+}
+
+/// `plc run` of module `lib` as `segment`, with `extra` arguments, once it takes changes.
+fn host_with(lib: &str, segment: &str, extra: &[&str]) -> ChildGuard {
     let child = Command::new(env!("CARGO_BIN_EXE_plc"))
         .arg("run")
         .arg(module(lib))
         .args(["--segment", segment])
+        .args(extra)
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn_guarded()
@@ -110,6 +116,28 @@ fn a_change_runs_the_new_code_with_every_value_kept_and_goes_back() {
     std::thread::sleep(std::time::Duration::from_millis(50));
     let (c2, k2) = pair();
     assert_eq!(c2 - c1, k2 - k1, "one a cycle again");
+}
+
+#[test]
+fn retained_values_follow_a_change_and_survive_a_restart_after_it() {
+    let segment = format!("chg_retain_{}", std::process::id());
+    let dir = std::env::temp_dir().join(format!("plc-chg-retain-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let retain = ["--retain", dir.to_str().unwrap()];
+    let mut first = host_with("libcounter.so", &segment, &retain);
+    let out = change(&segment, "libcounter_v2.so", &["--reset", "last_now_us"]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    // `speed` is new and retained: the retain file follows the new declaration.
+    assert!(plc(&["set", &segment, "speed=7.5"]).status.success());
+    let file = dir.join(format!("{segment}.retain"));
+    wait_until("the retain file to hold the new value", || {
+        std::fs::read_to_string(&file).is_ok_and(|t| t.contains("\"speed\"") && t.contains("7.5"))
+    });
+    assert!(common::terminate(&mut first), "plc run stops cleanly");
+    // The new build again, from the file: its retained value is back.
+    let _again = host_with("libcounter_v2.so", &segment, &retain);
+    assert_eq!(value(&segment, "speed"), "7.5");
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

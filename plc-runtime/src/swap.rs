@@ -183,15 +183,18 @@ impl<T: Memory> Cycle<T> {
             self.shm = Some(made.map_err(|e| format!("segment `{name}` was not made again: {e}"))?);
         }
         if let Some((path, interval)) = &self.remake.retain {
-            if let Some(old) = self.retain.take() {
-                // Its last offer is saved off the cycle; the new writer saves the converted
-                // values at its first offer, right after this swap.
-                std::thread::spawn(move || old.finish(None));
-            }
-            self.retain = Some(RetainWriter::spawn_for(
+            // The old writer's last save happens off the cycle; the new one saves the converted
+            // values, offered right after this swap, once that save is done.
+            let before = self.retain.take().map(|old| {
+                std::thread::spawn(move || {
+                    let _ = old.finish(None);
+                })
+            });
+            self.retain = Some(RetainWriter::spawn_after(
                 RetainStore::new(path),
                 *interval,
                 new.clone(),
+                before,
             ));
         }
         let mut image = new.new_image();

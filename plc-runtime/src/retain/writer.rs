@@ -36,6 +36,21 @@ impl<I: Clone + Send + 'static> RetainWriter<I> {
     where
         T: Memory<Image = I>,
     {
+        Self::spawn_after(store, interval, program, None)
+    }
+
+    /// [`spawn_for`](Self::spawn_for), its first save only after `before` ended: the last
+    /// save of the writer it replaces (an online change), which would otherwise overwrite
+    /// the new declaration's values with the old one's.
+    pub(crate) fn spawn_after<T>(
+        store: RetainStore,
+        interval: Duration,
+        program: T,
+        before: Option<JoinHandle<()>>,
+    ) -> RetainWriter<I>
+    where
+        T: Memory<Image = I>,
+    {
         let (tx, rx) = mpsc::channel::<Option<I>>();
         let failed_saves = Arc::new(AtomicU64::new(0));
         let failed = failed_saves.clone();
@@ -46,6 +61,9 @@ impl<I: Clone + Send + 'static> RetainWriter<I> {
                 // Saving (converting, writing, syncing the file) must not compete with a
                 // realtime cycle, whose priority this thread would otherwise inherit.
                 plc_shm::normal_priority();
+                if let Some(before) = before {
+                    let _ = before.join();
+                }
                 let mut pending: Option<I> = None;
                 // None: nothing saved yet, so the first change is saved at once.
                 let mut last_save: Option<Instant> = None;

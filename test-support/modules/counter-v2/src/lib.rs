@@ -1,6 +1,6 @@
 //! The counter test module's next build: `count` widened from UDINT to ULINT, `last_now_us`
 //! narrowed from LINT to DINT (which a change refuses unless it is reset), `speed` added with
-//! an initial value, `panic_at_cycle` removed, the rest kept.
+//! an initial value (retained), `panic_at_cycle` removed, the rest kept.
 
 use plc_core::GlobalMemory;
 use plc_module::__Context as Context;
@@ -29,8 +29,8 @@ pub struct Gm {
     /// The last tick's time in microseconds.
     #[plc(direction = "status")]
     pub last_now_us: i32,
-    /// A new setpoint.
-    #[plc(initial = 2.5, direction = "command")]
+    /// A new setpoint, kept across restarts.
+    #[plc(initial = 2.5, direction = "command", nonvolatile)]
     pub speed: f32,
 }
 
