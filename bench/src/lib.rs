@@ -11,6 +11,7 @@ pub mod derive_check;
 pub mod drives;
 pub mod hand_seqlock;
 pub mod located;
+pub mod online_change;
 pub mod opcua;
 pub mod owner;
 pub mod owner_cycle;

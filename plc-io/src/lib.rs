@@ -41,5 +41,6 @@ pub use plc_runtime::probe;
 #[cfg(feature = "runtime")]
 pub use plc_runtime::{
     AlarmActionError, BusState, Context, CyclePhase, CycleStats, IoBackend, IoError, IoStatus,
-    NoIo, Runtime, RuntimeAlarms, RuntimeBuilder, RuntimeError, StopHandle, zero_outputs,
+    NoIo, Runtime, RuntimeAlarms, RuntimeBuilder, RuntimeError, StopHandle, Swap, SwapEvent,
+    zero_outputs,
 };

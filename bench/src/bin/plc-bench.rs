@@ -28,7 +28,7 @@ pub struct Big64k {
 }
 
 /// The groups of figures, in the order they run.
-const GROUPS: [&str; 15] = [
+const GROUPS: [&str; 16] = [
     "cycle",
     "structures",
     "cycle_10k",
@@ -44,12 +44,15 @@ const GROUPS: [&str; 15] = [
     "drives",
     "alarms",
     "sparkplug",
+    "online_change",
 ];
 
 /// Groups that run only when asked for (`--full`, or by name in `--only`).
 const OPT_IN: [&str; 1] = ["cycle_100k"];
 
 fn main() {
+    // The online change group tries its modules in a child: this program, run again.
+    plc_io::module::trial::serve_if_asked();
     let args: Vec<String> = std::env::args().collect();
     if args.get(1).map(String::as_str) == Some("--publisher") {
         publisher(&args[2]);
@@ -141,6 +144,10 @@ fn main() {
             "flood" => match plc_bench::commissioning::flood() {
                 Ok(lines) => print!("{lines}"),
                 Err(e) => fail(&format!("flood: {e}")),
+            },
+            "online_change" => match plc_bench::online_change::run() {
+                Ok(lines) => print!("{lines}"),
+                Err(e) => fail(&format!("online_change: {e}")),
             },
             "drives" => match plc_bench::drives::run(quick) {
                 Ok(lines) => print!("{lines}"),
