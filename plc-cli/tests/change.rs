@@ -30,14 +30,7 @@ fn counter_role() {
 }
 
 fn module(name: &str) -> PathBuf {
-    let lib = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name(name);
-    assert!(
-        lib.is_file(),
-        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p \
-         plc-test-module-counter -p plc-test-module-counter-v2` first)",
-        lib.display()
-    );
-    lib
+    common::built_module(name)
 }
 
 /// The counter's program, started as segment `change_<test>_<pid>`.

@@ -107,12 +107,7 @@ fn plc_new_refuses_what_it_cannot_make() {
 
 #[test]
 fn the_new_program_runs_on_the_simulated_bus_at_once() {
-    let lib = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name("libnew_program.so");
-    assert!(
-        lib.is_file(),
-        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p new-program`)",
-        lib.display()
-    );
+    let lib = common::built_module("libnew_program.so");
     let segment = format!("new_program_{}", std::process::id());
     let _run = Command::new(env!("CARGO_BIN_EXE_plc"))
         .arg("run")

@@ -15,13 +15,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 fn module(name: &str) -> PathBuf {
-    let lib = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name(name);
-    assert!(
-        lib.is_file(),
-        "{} is missing: run the tests with scripts/test.sh",
-        lib.display()
-    );
-    lib
+    common::built_module(name)
 }
 
 fn host(lib: &str, segment: &str) -> ChildGuard {

@@ -14,14 +14,7 @@ use std::process::{Command, Stdio};
 use std::time::Duration;
 
 fn module(name: &str) -> PathBuf {
-    let lib = Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name(name);
-    assert!(
-        lib.is_file(),
-        "{} is missing: run the tests with scripts/test.sh (or `cargo build -p \
-         tensile-tester-module -p plc-test-module-counter` first)",
-        lib.display()
-    );
-    lib
+    common::built_module(name)
 }
 
 fn test_dir(what: &str) -> PathBuf {

@@ -82,6 +82,7 @@ pub use protocol::{Ticket, WriteOutcome};
 pub use shared_global_memory::SharedGlobalMemory;
 pub use sys::clock::clock_ns;
 pub use sys::ids::{euid, user_name};
+pub use sys::memfd::memory_file;
 pub use sys::priority::normal_priority;
 pub use sys::rundir::{normalise as normalise_name, owner_dir as runtime_dir};
 pub use sys::signals::stop_on_signals;

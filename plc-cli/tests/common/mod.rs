@@ -85,3 +85,15 @@ pub fn as_nobody(cmd: &mut Command) -> &mut Command {
         })
     }
 }
+
+/// A program module `scripts/test.sh` builds beside `plc` (`libcounter.so`,
+/// `libtensile_tester.so`, ...); the test fails naming how to build it if it is missing.
+pub fn built_module(name: &str) -> std::path::PathBuf {
+    let lib = std::path::Path::new(env!("CARGO_BIN_EXE_plc")).with_file_name(name);
+    assert!(
+        lib.is_file(),
+        "{} is missing: run the tests with scripts/test.sh, which builds the test modules",
+        lib.display()
+    );
+    lib
+}

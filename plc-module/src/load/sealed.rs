@@ -6,10 +6,9 @@
 //! mounted `noexec`. The memory file stays open while the module is loaded, so its number,
 //! and the path, is never reused for another module meanwhile.
 
-use std::ffi::CString;
 use std::fs::File;
 use std::io::{self, Write};
-use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
+use std::os::fd::{AsRawFd, OwnedFd};
 
 /// The seals of a module's memory file.
 const SEALS: libc::c_int =
@@ -24,38 +23,20 @@ pub struct SealedCopy {
 impl SealedCopy {
     /// Copies `bytes` into a new memory file labelled `label` and seals it.
     pub fn new(label: &str, bytes: &[u8]) -> io::Result<SealedCopy> {
-        let label = CString::new(format!("plc-module.{label}").replace('\0', "_"))
-            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
-        let create = |flags: libc::c_uint| {
-            // SAFETY: a valid C string; the descriptor returned is ours.
-            let raw = unsafe {
-                libc::memfd_create(
-                    label.as_ptr(),
-                    libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC | flags,
-                )
-            };
-            if raw < 0 {
-                Err(io::Error::last_os_error())
-            } else {
-                // SAFETY: a fresh descriptor nobody else owns.
-                Ok(unsafe { OwnedFd::from_raw_fd(raw) })
-            }
-        };
-        // Executable on purpose (`MFD_EXEC`), as kernels since 6.3 want it said; an older
-        // kernel does not know the flag (EINVAL) and makes every memory file executable.
-        let fd = match create(libc::MFD_EXEC) {
-            Err(e) if e.raw_os_error() == Some(libc::EINVAL) => create(0)?,
-            Err(e) if e.raw_os_error() == Some(libc::EACCES) => {
-                return Err(io::Error::new(
-                    e.kind(),
-                    format!(
-                        "{e}: this system forbids executable memory files \
+        // Executable on purpose (`MFD_EXEC`), as kernels since 6.3 want it said.
+        let fd =
+            plc_shm::memory_file(&format!("plc-module.{label}"), libc::MFD_EXEC).map_err(|e| {
+                match e.raw_os_error() {
+                    Some(libc::EACCES) => io::Error::new(
+                        e.kind(),
+                        format!(
+                            "{e}: this system forbids executable memory files \
                          (sysctl vm.memfd_noexec = 2), which loading a module needs"
+                        ),
                     ),
-                ));
-            }
-            made => made?,
-        };
+                    _ => e,
+                }
+            })?;
         let mut file = File::from(fd);
         file.write_all(bytes)?;
         // SAFETY: fcntl with an integer argument on our descriptor.

@@ -15,6 +15,34 @@ use std::os::fd::{AsRawFd, FromRawFd, OwnedFd};
 pub const SEALS: libc::c_int =
     libc::F_SEAL_SHRINK | libc::F_SEAL_GROW | libc::F_SEAL_FUTURE_WRITE | libc::F_SEAL_SEAL;
 
+/// A new anonymous memory file labelled `label` (the label is only what `/proc/<pid>/fd`
+/// shows; it need not be unique), sealable and closed on exec, with `flag` as well
+/// (`MFD_NOEXEC_SEAL`, `MFD_EXEC`) where the kernel knows it: a kernel before 6.3 refuses
+/// those (EINVAL) and gets the file without, as it makes every memory file.
+pub fn memory_file(label: &str, flag: libc::c_uint) -> io::Result<OwnedFd> {
+    let label = std::ffi::CString::new(label.replace('\0', "_"))
+        .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
+    let create = |flags: libc::c_uint| {
+        // SAFETY: a valid C string; the descriptor returned is ours.
+        let raw = unsafe {
+            libc::memfd_create(
+                label.as_ptr(),
+                libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC | flags,
+            )
+        };
+        if raw < 0 {
+            Err(io::Error::last_os_error())
+        } else {
+            // SAFETY: a fresh descriptor nobody else owns.
+            Ok(unsafe { OwnedFd::from_raw_fd(raw) })
+        }
+    };
+    match create(flag) {
+        Err(e) if e.raw_os_error() == Some(libc::EINVAL) && flag != 0 => create(0),
+        made => made,
+    }
+}
+
 /// A shared mapping of a segment.
 pub struct Mapping {
     ptr: *mut u8,
@@ -70,32 +98,9 @@ impl Mapping {
                 "an empty segment",
             ));
         }
-        // The name is only what /proc/<pid>/fd shows; it need not be unique.
-        let label = std::ffi::CString::new(format!("plc.{name}"))
-            .map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
-        let create = |flags: libc::c_uint| {
-            // SAFETY: a valid C string; the descriptor returned is ours.
-            let raw = unsafe {
-                libc::memfd_create(
-                    label.as_ptr(),
-                    libc::MFD_ALLOW_SEALING | libc::MFD_CLOEXEC | flags,
-                )
-            };
-            if raw < 0 {
-                Err(io::Error::last_os_error())
-            } else {
-                Ok(raw)
-            }
-        };
         // Never executable (`F_SEAL_EXEC` with it), which kernels set to `vm.memfd_noexec=2`
-        // require; a kernel before 6.3 does not know the flag and refuses it (EINVAL): the
-        // segment is then made as those kernels make every memfd.
-        let raw = match create(libc::MFD_NOEXEC_SEAL) {
-            Err(e) if e.raw_os_error() == Some(libc::EINVAL) => create(0)?,
-            made => made?,
-        };
-        // SAFETY: a fresh descriptor nobody else owns.
-        let fd = unsafe { OwnedFd::from_raw_fd(raw) };
+        // require.
+        let fd = memory_file(&format!("plc.{name}"), libc::MFD_NOEXEC_SEAL)?;
         // SAFETY: plain system call on our descriptor.
         if unsafe { libc::ftruncate(fd.as_raw_fd(), len as libc::off_t) } != 0 {
             return Err(io::Error::last_os_error());
