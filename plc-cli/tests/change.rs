@@ -9,7 +9,7 @@ use common::{SpawnGuarded, plc, stderr, stdout};
 use owner::Owner;
 use plc_io::Runtime;
 use std::os::unix::fs::PermissionsExt;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::{Command, Stdio};
 use std::time::Duration;
 

@@ -9,7 +9,7 @@ mod common;
 use common::{ChildGuard, SpawnGuarded, plc, stderr, stdout, wait_until};
 use plc_io::BusState;
 use plc_io::shm::DynSegment;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -46,8 +46,8 @@ pub use host::change::{AtChange, Prepared, prepare, prepare_back};
 pub use host::memory::ModuleMemory;
 pub use host::tick::{facts, tick};
 pub use load::error::ModuleError;
-pub use load::module::{Module, ModuleFault, ModuleInfo};
-pub use load::trial;
+pub use load::info::ModuleInfo;
+pub use load::module::{Module, ModuleFault};
 
 /// Makes this `cdylib` crate a program module: `program!(Gm, tick)` with
 /// `fn tick(ctx: &mut Context<Gm>)`, where `Gm` is the program's `#[derive(GlobalMemory)]`
@@ -124,3 +124,11 @@ macro_rules! program {
 
 #[doc(hidden)]
 pub use plc_runtime::Context as __Context;
+
+/// The trial load: a module is tried in a short-lived child (this program run again) before a
+/// host trusts it. A program that loads modules calls [`serve_if_asked`](trial::serve_if_asked)
+/// first thing in `main`.
+pub mod trial {
+    pub use crate::load::trial::{TRIAL_ARG, Trial};
+    pub use crate::load::trial_child::serve_if_asked;
+}

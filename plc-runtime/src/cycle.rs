@@ -10,8 +10,8 @@ use super::{
 };
 use crate::alarm_journal::AlarmJournal;
 use crate::alarms::RuntimeAlarms;
+use crate::change::{Probation, Remake};
 use crate::retain::{RetainStore, RetainWriter};
-use crate::swap::{Probation, Remake};
 use plc_core::Time;
 use plc_core::memory::Memory;
 use plc_shm::{RunState, ShmOwner};

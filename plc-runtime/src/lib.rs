@@ -5,6 +5,7 @@ mod alarm_commands;
 pub mod alarm_journal;
 mod alarms;
 mod backend;
+mod change;
 mod clock;
 mod context;
 mod cycle;
@@ -19,9 +20,9 @@ mod swap;
 
 pub use alarms::{AlarmActionError, RuntimeAlarms};
 pub use backend::{CyclePhase, IoBackend, IoError, IoStatus, NoIo};
+pub use change::{Convert, Swap, SwapEvent};
 pub use context::Context;
 pub use plc_shm::{BusState, CycleStats};
-pub use swap::{Convert, Swap, SwapEvent};
 
 use cycle::Cycle;
 

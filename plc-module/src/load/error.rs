@@ -49,6 +49,8 @@ pub enum ModuleError {
         path: PathBuf,
         /// Its size.
         size: u64,
+        /// The most a module may have.
+        max: u64,
     },
     /// It is not a shared library for this machine.
     NotALibrary {
@@ -126,11 +128,10 @@ impl fmt::Display for ModuleError {
                 path.display(),
                 path.display()
             ),
-            TooLarge { path, size } => write!(
+            TooLarge { path, size, max } => write!(
                 f,
-                "module `{}` has {size} bytes, more than the {} a module may have",
-                path.display(),
-                super::file::MAX_MODULE_BYTES
+                "module `{}` has {size} bytes, more than the {max} a module may have",
+                path.display()
             ),
             NotALibrary { path, why } => write!(
                 f,

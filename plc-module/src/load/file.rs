@@ -56,6 +56,7 @@ pub fn read_checked(path: &Path) -> Result<Vec<u8>, ModuleError> {
         return Err(ModuleError::TooLarge {
             path: path.into(),
             size: meta.len(),
+            max: MAX_MODULE_BYTES,
         });
     }
     let mut bytes = Vec::with_capacity(meta.len() as usize);
@@ -66,6 +67,7 @@ pub fn read_checked(path: &Path) -> Result<Vec<u8>, ModuleError> {
         return Err(ModuleError::TooLarge {
             path: path.into(),
             size: bytes.len() as u64,
+            max: MAX_MODULE_BYTES,
         });
     }
     Ok(bytes)

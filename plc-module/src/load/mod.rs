@@ -5,7 +5,9 @@
 mod elf;
 pub mod error;
 mod file;
+pub mod info;
 mod library;
 pub mod module;
 mod sealed;
 pub mod trial;
+pub mod trial_child;

@@ -1,6 +1,7 @@
 //! A loaded, checked module, and the calls a host makes on it over image bytes.
 
 use super::error::ModuleError;
+use super::info::ModuleInfo;
 use super::library::{self, Checked};
 use super::sealed::SealedCopy;
 use super::trial::Trial;
@@ -40,20 +41,6 @@ impl fmt::Display for ModuleFault {
 }
 
 impl std::error::Error for ModuleFault {}
-
-/// What a module says of itself, checked: from [`Module::inspect`] (which loads no code into
-/// this process) or [`Module::info`].
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct ModuleInfo {
-    /// The program crate's name.
-    pub name: String,
-    /// What built it.
-    pub fingerprint: String,
-    /// Its variables, as its segment publishes them.
-    pub descriptor: LayoutDescriptor,
-    /// The bus description it was compiled against: the path as written and the text.
-    pub bus: Option<(String, String)>,
-}
 
 /// A program module loaded into this process: its descriptor and the calls that run it over
 /// an image. It is never unloaded (its code may run until the process ends): each load costs

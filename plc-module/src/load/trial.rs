@@ -4,14 +4,13 @@
 //! child, not the running program.
 //!
 //! The child is the host's own program run again with [`TRIAL_ARG`]: a program that loads
-//! modules calls [`serve_if_asked`] first thing in `main`. (A `fork` without `exec` of a
-//! program with threads may not call the dynamic loader.)
+//! modules calls `serve_if_asked` (`trial_child`) first thing in `main`. (A `fork` without
+//! `exec` of a program with threads may not call the dynamic loader.)
 
 use super::error::ModuleError;
-use super::module::{Module, ModuleInfo};
+use super::info::ModuleInfo;
 use super::sealed::SealedCopy;
-use std::ffi::OsStr;
-use std::io::{self, Read, Write};
+use std::io::{self, Read};
 use std::os::fd::AsRawFd;
 use std::os::unix::process::{CommandExt, ExitStatusExt};
 use std::path::{Path, PathBuf};
@@ -22,9 +21,9 @@ use std::time::{Duration, Instant};
 pub const TRIAL_ARG: &str = "--plc-module-trial";
 
 /// The descriptor number the child finds the module's memory file at.
-const CHILD_FD: i32 = 3;
+pub(super) const CHILD_FD: i32 = 3;
 /// What starts the child's answer on its standard output (a module may print too).
-const MARK: &str = "plc-module-trial: ";
+pub(super) const MARK: &str = "plc-module-trial: ";
 /// The most bytes of the child's standard output kept: its answer carries the module's
 /// descriptor and bus description, which the entry's checks bound.
 const MAX_OUTPUT: usize = 96 << 20;
@@ -39,7 +38,7 @@ pub struct Trial {
 }
 
 impl Trial {
-    /// Runs `program`, which calls [`serve_if_asked`] at its start.
+    /// Runs `program`, which calls `plc_module::trial::serve_if_asked` at its start.
     pub fn with_program(program: impl Into<PathBuf>) -> Trial {
         Trial {
             program: program.into(),
@@ -47,7 +46,8 @@ impl Trial {
         }
     }
 
-    /// Runs the program of this process again (it must call [`serve_if_asked`]).
+    /// Runs the program of this process again (it must call
+    /// `plc_module::trial::serve_if_asked`).
     pub fn this_program() -> io::Result<Trial> {
         Ok(Trial::with_program(std::env::current_exe()?))
     }
@@ -133,47 +133,8 @@ impl Trial {
     }
 }
 
-/// In a program that loads modules: if this process was started as a trial child, tries the
-/// module and exits with the answer; otherwise returns at once.
-///
-/// ```no_run
-/// // First thing in `main`:
-/// plc_module::trial::serve_if_asked();
-/// ```
-pub fn serve_if_asked() {
-    let mut args = std::env::args_os();
-    if args.nth(1).as_deref() != Some(OsStr::new(TRIAL_ARG)) {
-        return;
-    }
-    let path = PathBuf::from(args.next().unwrap_or_default());
-    let answer = Module::in_trial(&path, &format!("/proc/self/fd/{CHILD_FD}")).and_then(|m| {
-        let mut image = m.initial_image().map_err(|f| fault(&path, f))?;
-        m.unpack_bits(&mut image).map_err(|f| fault(&path, f))?;
-        m.pack_bits(&mut image).map_err(|f| fault(&path, f))?;
-        Ok(m.info())
-    });
-    let line = match &answer {
-        Ok(info) => match serde_json::to_string(info) {
-            Ok(json) => format!("ok {json}"),
-            Err(e) => format!("trial\tits description cannot be written: {e}"),
-        },
-        Err(e) => to_wire(e),
-    };
-    let mut stdout = io::stdout().lock();
-    let _ = writeln!(stdout, "\n{MARK}{line}");
-    let _ = stdout.flush();
-    std::process::exit(if answer.is_ok() { 0 } else { 1 });
-}
-
-fn fault(path: &Path, fault: super::module::ModuleFault) -> ModuleError {
-    ModuleError::Trial {
-        path: path.into(),
-        why: format!("making its initial image failed: {fault}"),
-    }
-}
-
 /// A refusal as one line: its kind, a tab, its reason.
-fn to_wire(e: &ModuleError) -> String {
+pub(super) fn to_wire(e: &ModuleError) -> String {
     let (kind, why) = match e {
         ModuleError::NotALibrary { why, .. } => ("not-a-library", why.clone()),
         ModuleError::NotAProgram { why, .. } => ("not-a-program", why.clone()),
