@@ -55,6 +55,6 @@ fi
 export PLC_SPARKPLUG_PYTHON="$PWD/$spb_venv/bin/python"
 
 # The loader's tests load real program modules: cargo builds a `cdylib` only when asked.
-cargo build -p plc-test-module-counter -p plc-test-module-counter-v2 -p plc-test-module-panics -p plc-test-module-foreign -p tensile-tester-module -p new-program -p plc-module --bins
+cargo build -p plc-test-module-counter -p plc-test-module-counter-v2 -p plc-test-module-panics -p plc-test-module-foreign -p tensile-tester-module -p new-program -p plc-module
 
 cargo test --workspace "$@"
