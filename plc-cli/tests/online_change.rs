@@ -64,10 +64,30 @@ fn a_change_runs_the_new_code_with_every_value_kept_and_goes_back() {
     let segment = format!("chg_values_{}", std::process::id());
     let _host = host("libcounter.so", &segment);
     wait_until("some cycles", || number(&segment, "count") > 300);
+    // Two forces: one on a value the next build keeps, one on a value it removes.
+    assert!(
+        plc(&["force", &segment, "inputs=4", "panic_at_cycle=0"])
+            .status
+            .success()
+    );
+    wait_until("the forced input's output", || {
+        value(&segment, "outputs") == "1"
+    });
 
     let out = change(&segment, "libcounter_v2.so", &["--reset", "last_now_us"]);
     let report = stdout(&out);
     assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        report.contains("forces released (the new build has no such value): panic_at_cycle"),
+        "{report}"
+    );
+    // The kept force is held by the new segment, and the new build sees it.
+    let forces = stdout(&plc(&["forces", &segment]));
+    assert!(
+        forces.contains("inputs") && !forces.contains("panic_at_cycle"),
+        "{forces}"
+    );
+    assert_eq!(value(&segment, "outputs"), "1");
     assert!(
         report.contains("converted      1  count (UDINT to ULINT)"),
         "{report}"

@@ -5,8 +5,8 @@
 //! The conversion is prepared off the cycle thread by whoever sends the [`Swap`] (a host such
 //! as `plc run`); the cycle only runs it, then follows the new variables with what depends
 //! on them, when their layout differs: the I/O's bindings ([`IoBackend::rebind`](crate::IoBackend::rebind)), the
-//! segment (made again: tools attach again as after a restart; forces held are released and
-//! traces end, each with a message), the retain writer (the file follows the new
+//! segment (made again: tools attach again as after a restart; the forces whose paths remain
+//! are held again, the others released and named; traces end, each with a message), the retain writer (the file follows the new
 //! declaration) and the alarms (evaluated afresh). A new program is on probation for
 //! [`Swap::probation`] cycles: a panic in them swaps the previous one back before that
 //! cycle's outputs are written.
@@ -43,6 +43,9 @@ pub enum SwapEvent {
         took: Duration,
         /// Whether the variables' layout changed (the segment was made again).
         relaid: bool,
+        /// The paths of the forces it released: the new program has no such value, or not
+        /// of a type the forced value fits. The others are held again.
+        released_forces: Vec<String>,
     },
     /// Its probation passed: it stays.
     Kept {

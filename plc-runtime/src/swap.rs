@@ -36,11 +36,12 @@ impl<T: Memory> Cycle<T> {
         }
         let started = std::time::Instant::now();
         match self.install(backend, swap.convert) {
-            Ok(relaid) => {
+            Ok((relaid, released_forces)) => {
                 let _ = swap.report.send(SwapEvent::Swapped {
                     cycle: cycle + 1,
                     took: started.elapsed(),
                     relaid,
+                    released_forces,
                 });
                 self.probation = Some(Probation {
                     until: cycle + swap.probation.max(1),
@@ -84,34 +85,41 @@ impl<T: Memory> Cycle<T> {
     }
 
     /// Puts the variables `convert` makes in place of the running ones; whether their layout
-    /// changed. Refused without a change if the conversion or the I/O's bindings are.
+    /// changed, and the forces it released. Refused without a change if the conversion or
+    /// the I/O's bindings are.
     fn install(
         &mut self,
         backend: &mut (dyn IoBackend<T> + Send),
         convert: Convert<T>,
-    ) -> Result<bool, String> {
-        let new = convert(&self.ctx.gm)?;
+    ) -> Result<(bool, Vec<String>), String> {
+        let mut new = convert(&self.ctx.gm)?;
         let schema = new.schema();
         let relaid = schema != self.ctx.gm.schema();
+        let mut released = Vec::new();
         if relaid {
             backend
                 .rebind(&schema)
                 .map_err(|e| format!("its links do not fit the running bus: {e}"))?;
-            self.relay(&new)?;
+            released = self.relay(&mut new)?;
         }
         self.ctx.gm = new;
         self.ctx.gm.store_image(&mut self.image.0);
-        Ok(relaid)
+        Ok((relaid, released))
     }
 
-    /// Follows a new layout with the segment, the retain writer and the alarms.
-    fn relay(&mut self, new: &T) -> Result<(), String> {
+    /// Follows a new layout with the segment (the forces whose paths remain held again), the
+    /// retain writer and the alarms; the paths of the forces released.
+    fn relay(&mut self, new: &mut T) -> Result<Vec<String>, String> {
         let schema = new.schema();
+        let mut released = Vec::new();
         if let Some(old) = self.shm.take() {
             let name = old.name().to_string();
+            let forces = old.held_forces();
             drop(old);
             let made = ShmOwner::create(&name, &self.remake.sharing, schema);
-            self.shm = Some(made.map_err(|e| format!("segment `{name}` was not made again: {e}"))?);
+            let owner = made.map_err(|e| format!("segment `{name}` was not made again: {e}"))?;
+            released = owner.carry_forces(new, forces);
+            self.shm = Some(owner);
         }
         if let Some((path, interval)) = &self.remake.retain {
             // The old writer's last save happens off the cycle; the new one saves the converted
@@ -138,6 +146,6 @@ impl<T: Memory> Cycle<T> {
             alarms.attach(journal.sender(alarms.path_table()));
         }
         self.ctx.alarms = alarms;
-        Ok(())
+        Ok(released)
     }
 }

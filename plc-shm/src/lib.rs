@@ -77,7 +77,7 @@ pub use limits::{GREETING_GRACE, MAX_CONNECTIONS, MAX_FORCES, MAX_PER_UID, RESER
 pub use log_limit::LogLimit;
 pub use naming::{path_of, shown_in_log};
 pub use owner::policy::Sharing;
-pub use owner::{AlarmCommand, AlarmRefusal, Rejection, ShmOwner};
+pub use owner::{AlarmCommand, AlarmRefusal, HeldForce, Rejection, ShmOwner};
 pub use protocol::{Ticket, WriteOutcome};
 pub use shared_global_memory::SharedGlobalMemory;
 pub use sys::clock::clock_ns;

@@ -226,15 +226,24 @@ impl Host {
                     cycle,
                     took,
                     relaid,
-                }) => text.push_str(&format!(
-                    "swapped before cycle {cycle}, {} us on the cycle thread{}\n",
-                    took.as_micros(),
-                    if relaid {
-                        "; the segment was made again (tools attach again)"
-                    } else {
-                        ""
+                    released_forces,
+                }) => {
+                    text.push_str(&format!(
+                        "swapped before cycle {cycle}, {} us on the cycle thread{}\n",
+                        took.as_micros(),
+                        if relaid {
+                            "; the segment was made again (tools attach again)"
+                        } else {
+                            ""
+                        }
+                    ));
+                    if !released_forces.is_empty() {
+                        text.push_str(&format!(
+                            "forces released (the new build has no such value): {}\n",
+                            released_forces.join(", ")
+                        ));
                     }
-                )),
+                }
                 Ok(SwapEvent::Kept { cycle }) => {
                     text.push_str(&format!("probation passed at cycle {cycle}\n"));
                     return Answer {

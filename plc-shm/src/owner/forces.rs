@@ -322,6 +322,21 @@ impl<T: Memory> ForceTable<T> {
         Ok(())
     }
 
+    /// The forces held, by path.
+    pub fn held(&self) -> Vec<super::carry::HeldForce> {
+        self.held
+            .iter()
+            .map(|f| {
+                let w = f.write.write();
+                super::carry::HeldForce {
+                    path: self.path(w.index, w.leaf),
+                    value: w.value.clone(),
+                    uid: f.uid,
+                }
+            })
+            .collect()
+    }
+
     /// The forces still held when the program stops, one line each (for its log).
     pub fn held_lines(&self) -> Vec<String> {
         self.held

@@ -6,6 +6,7 @@
 
 mod alarm_commands;
 mod by_value;
+mod carry;
 mod force_log;
 mod forces;
 mod placed;
@@ -18,6 +19,7 @@ mod server;
 mod spent;
 
 pub use alarm_commands::{AlarmCommand, AlarmRefusal};
+pub use carry::HeldForce;
 pub use requests::Rejection;
 use spent::SpentTx;
 
