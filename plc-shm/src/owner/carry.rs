@@ -38,7 +38,7 @@ impl<T: Memory> ShmOwner<T> {
                     let write = Write {
                         index: at.index,
                         leaf: at.leaf,
-                        value: f.value.clone(),
+                        value: f.value,
                     };
                     check_force(vars, write).ok()
                 })

@@ -330,7 +330,7 @@ impl<T: Memory> ForceTable<T> {
                 let w = f.write.write();
                 super::carry::HeldForce {
                     path: self.path(w.index, w.leaf),
-                    value: w.value.clone(),
+                    value: w.value,
                     uid: f.uid,
                 }
             })
