@@ -118,6 +118,13 @@ fn a_change_runs_the_new_code_with_every_value_kept_and_goes_back() {
         "two a cycle: {c1}@{k1} then {c2}@{k2}"
     );
     assert_eq!(value(&segment, "speed"), "2.5");
+    let listed = stdout(&plc(&["list", &segment]));
+    assert!(
+        listed.contains("module `plc-test-module-counter-v2` (")
+            && listed.contains("libcounter_v2.so), built 20")
+            && listed.contains("; 1 online change since it started"),
+        "{listed}"
+    );
 
     // Back: the count narrows back (it fits), `panic_at_cycle` returns with its value at the
     // change, `speed` goes.
@@ -130,6 +137,12 @@ fn a_change_runs_the_new_code_with_every_value_kept_and_goes_back() {
     std::thread::sleep(std::time::Duration::from_millis(50));
     let (c2, k2) = pair();
     assert_eq!(c2 - c1, k2 - k1, "one a cycle again");
+    let listed = stdout(&plc(&["list", &segment]));
+    assert!(
+        listed.contains("module `plc-test-module-counter` (")
+            && listed.contains("; 2 online changes since it started"),
+        "{listed}"
+    );
 }
 
 #[test]

@@ -69,6 +69,7 @@ fn ask_host(stream: UnixStream, module: Option<PathBuf>, args: &ChangeArgs) -> R
         module,
         resets: args.reset.clone(),
         dry_run: args.dry_run,
+        info: false,
     };
     let mut line = serde_json::to_vec(&request)?;
     line.push(b'\n');

@@ -35,7 +35,12 @@ impl Drop for ChangeServer {
 struct Host {
     segment: String,
     running: LayoutDescriptor,
-    at_change: Option<(AtChange, LayoutDescriptor)>,
+    /// The running module, as `plc list` shows it: name, file, build time.
+    module: String,
+    /// Changes made since the start (a return counts as one).
+    changes: u64,
+    /// The variables at the last change, and the program before it (descriptor, as shown).
+    at_change: Option<(AtChange, LayoutDescriptor, String)>,
     swaps: Sender<Swap<ModuleMemory>>,
     period: Duration,
 }
@@ -60,6 +65,8 @@ pub fn serve(
     let mut host = Host {
         segment: segment.to_string(),
         running: running.descriptor().clone(),
+        module: shown(running),
+        changes: 0,
         at_change: None,
         swaps,
         period,
@@ -76,6 +83,22 @@ pub fn serve(
             }
         })?;
     Ok(ChangeServer { path })
+}
+
+/// A module as `plc list` shows it: its name, its file and when that was built (written).
+fn shown(module: &Module) -> String {
+    let built = std::fs::metadata(module.path())
+        .and_then(|m| m.modified())
+        .ok()
+        .and_then(|t| t.duration_since(std::time::UNIX_EPOCH).ok())
+        .map_or("at an unknown time".into(), |d| {
+            plc_shm::utc_text(d.as_nanos() as u64)
+        });
+    format!(
+        "`{}` ({}), built {built}",
+        module.name(),
+        module.path().display()
+    )
 }
 
 /// The uid of the process at the other end.
@@ -125,6 +148,17 @@ impl Host {
             Some(r) => r,
             None => return refused("the request is not one this host reads"),
         };
+        if request.info {
+            return Answer {
+                outcome: Outcome::Done,
+                text: format!(
+                    "module {}; {} online change{} since it started",
+                    self.module,
+                    self.changes,
+                    if self.changes == 1 { "" } else { "s" }
+                ),
+            };
+        }
         match &request.module {
             Some(path) => self.change(path, &request),
             None => self.back(request.dry_run),
@@ -142,6 +176,7 @@ impl Host {
         };
         let new_descriptor = module.descriptor().clone();
         let info = module.info();
+        let new_module = shown(&module);
         let prepared = match prepare(&self.running, module, &request.resets, PROBATION) {
             Ok(p) => p,
             Err(refusals) => {
@@ -170,13 +205,15 @@ impl Host {
         let answer = self.make(prepared.swap, prepared.events, &head, &prepared.plan);
         if answer.outcome == Outcome::Done {
             let previous = std::mem::replace(&mut self.running, new_descriptor);
-            self.at_change = Some((prepared.at_change, previous));
+            let module = std::mem::replace(&mut self.module, new_module);
+            self.at_change = Some((prepared.at_change, previous, module));
+            self.changes += 1;
         }
         answer
     }
 
     fn back(&mut self, dry_run: bool) -> Answer {
-        let Some((at_change, previous)) = &self.at_change else {
+        let Some((at_change, previous, module)) = &self.at_change else {
             return refused("no change was made since the program started: nothing to go back to");
         };
         let Some((plan, swap, events)) = prepare_back(&self.running, at_change, PROBATION) else {
@@ -197,11 +234,13 @@ impl Host {
                 text: report(&head, &plan),
             };
         }
-        let previous = previous.clone();
+        let (previous, module) = (previous.clone(), module.clone());
         let answer = self.make(swap, events, &head, &plan);
         if answer.outcome == Outcome::Done {
             self.running = previous;
+            self.module = module;
             self.at_change = None;
+            self.changes += 1;
         }
         answer
     }

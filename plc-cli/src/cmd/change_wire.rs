@@ -18,6 +18,9 @@ pub struct Request {
     pub resets: Vec<String>,
     /// Report only.
     pub dry_run: bool,
+    /// Only what runs: the module, its build time and the changes made (`plc list`).
+    #[serde(default)]
+    pub info: bool,
 }
 
 /// How it ended.
@@ -38,6 +41,29 @@ pub struct Answer {
     pub outcome: Outcome,
     /// The report, or why not.
     pub text: String,
+}
+
+/// What the host of segment `segment` runs (`plc list SEGMENT`), if `plc run` hosts it and it
+/// answers.
+pub fn hosted(segment: &str) -> Option<String> {
+    use std::io::{BufRead, BufReader, Read, Write};
+    let stream = std::os::unix::net::UnixStream::connect(socket_path(segment).ok()?).ok()?;
+    let _ = stream.set_read_timeout(Some(std::time::Duration::from_secs(5)));
+    let request = Request {
+        module: None,
+        resets: Vec::new(),
+        dry_run: true,
+        info: true,
+    };
+    let mut line = serde_json::to_vec(&request).ok()?;
+    line.push(b'\n');
+    (&stream).write_all(&line).ok()?;
+    let mut answer = String::new();
+    BufReader::new((&stream).take(MAX_LINE))
+        .read_line(&mut answer)
+        .ok()?;
+    let answer: Answer = serde_json::from_str(&answer).ok()?;
+    (answer.outcome == Outcome::Done).then_some(answer.text)
 }
 
 /// Where the host of segment `segment` listens for changes.

@@ -71,6 +71,10 @@ pub fn run(segment: Option<&str>, json: bool) -> Result<(), Error> {
         "NAME", "TYPE", "DIRECTION", "ACCESS", "LINK / ADDRESS"
     );
     print_level(&seg.descriptor().variables, 0, None);
+    // A program `plc run` hosts says which module runs.
+    if let Some(hosted) = super::change_wire::hosted(seg.name()) {
+        println!("\n{hosted}");
+    }
     let status = seg.status();
     if let Some(clocks) = &status.clocks {
         println!("\ndc: {clocks}");
