@@ -276,4 +276,37 @@ fn the_tensile_tester_takes_a_new_build_with_its_bus_in_op() {
     );
     assert_eq!(value(&segment, "crosshead.homed"), "true");
     assert_eq!(seg.status().bus_state, BusState::Op);
+
+    // A build linked to devices the running bus does not have needs a restart: refused, the
+    // program and its bus untouched.
+    let out = change(&segment, "libnew_program.so", &[]);
+    assert!(!out.status.success());
+    let err = stderr(&out);
+    assert!(
+        err.contains("links do not fit the running bus (a new device or PDO needs a restart)"),
+        "{err}"
+    );
+    assert!(err.contains("el1004"), "{err}");
+    let seg = DynSegment::attach(&segment).unwrap();
+    assert!(seg.index_of("crosshead_position").is_some());
+    assert_eq!(seg.status().bus_state, BusState::Op);
+}
+
+#[test]
+fn a_program_without_a_bus_takes_no_build_with_links() {
+    let segment = format!("chg_nobus_{}", std::process::id());
+    let _host = host("libcounter.so", &segment);
+    let out = change(&segment, "libnew_program.so", &[]);
+    assert!(!out.status.success());
+    let err = stderr(&out);
+    assert!(
+        err.contains("runs without a bus") && err.contains("ethercat.el1004.input_1"),
+        "{err}"
+    );
+    assert!(
+        DynSegment::attach(&segment)
+            .unwrap()
+            .index_of("count")
+            .is_some()
+    );
 }

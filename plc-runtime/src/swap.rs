@@ -97,9 +97,13 @@ impl<T: Memory> Cycle<T> {
         let relaid = schema != self.ctx.gm.schema();
         let mut released = Vec::new();
         if relaid {
-            backend
-                .rebind(&schema)
-                .map_err(|e| format!("its links do not fit the running bus: {e}"))?;
+            backend.rebind(&schema).map_err(|e| {
+                format!(
+                    "the change is refused, the running program goes on: the new build's \
+                         links do not fit the running bus (a new device or PDO needs a restart): \
+                         {e}"
+                )
+            })?;
             released = self.relay(&mut new)?;
         }
         self.ctx.gm = new;

@@ -43,6 +43,8 @@ struct Host {
     at_change: Option<(AtChange, LayoutDescriptor, String)>,
     swaps: Sender<Swap<ModuleMemory>>,
     period: Duration,
+    /// Whether the program runs with a bus: one without takes no build with links.
+    has_bus: bool,
 }
 
 /// Listens for changes of the program running as `segment` (its module `running`), handing
@@ -52,6 +54,7 @@ pub fn serve(
     running: &Module,
     swaps: Sender<Swap<ModuleMemory>>,
     period: Duration,
+    has_bus: bool,
 ) -> Result<ChangeServer, super::Error> {
     let path = socket_path(segment)?;
     if UnixStream::connect(&path).is_ok() {
@@ -70,6 +73,7 @@ pub fn serve(
         at_change: None,
         swaps,
         period,
+        has_bus,
     };
     std::thread::Builder::new()
         .name("plc-change".into())
@@ -174,6 +178,21 @@ impl Host {
             Ok(m) => Arc::new(m),
             Err(e) => return refused(e.to_string()),
         };
+        if !self.has_bus
+            && let Some(v) = module
+                .descriptor()
+                .variables
+                .iter()
+                .find(|v| v.link.is_some())
+        {
+            return refused(format!(
+                "`{}` links `{}` to `{}`, and the running program runs without a bus: a bus \
+                 needs a restart (`plc run` with the new build)",
+                path.display(),
+                v.name,
+                v.link.as_deref().unwrap_or_default()
+            ));
+        }
         let new_descriptor = module.descriptor().clone();
         let info = module.info();
         let new_module = shown(&module);

@@ -80,7 +80,9 @@ pub fn run(args: &RunArgs) -> Result<(), Error> {
     if let Some(n) = args.cycles {
         builder = builder.max_cycles(n);
     }
-    let bus = match bus_description(args, &module)? {
+    let description = bus_description(args, &module)?;
+    let has_bus = description.is_some();
+    let bus = match description {
         Some((config, from)) => {
             let (transport, options, kind) = match &args.interface {
                 Some(name) => (
@@ -116,6 +118,7 @@ pub fn run(args: &RunArgs) -> Result<(), Error> {
         &module,
         swaps,
         Duration::from_micros(args.period_us),
+        has_bus,
     )?;
     runtime.run(plc_module::tick)?;
     Ok(())
