@@ -12,6 +12,7 @@ use crate::alarm_journal::AlarmJournal;
 use crate::alarms::RuntimeAlarms;
 use crate::change::{Probation, Remake};
 use crate::retain::{RetainStore, RetainWriter};
+use crate::started::Started;
 use plc_core::Time;
 use plc_core::memory::Memory;
 use plc_shm::{RunState, ShmOwner};
@@ -32,6 +33,8 @@ pub(super) struct Cycle<T: Memory> {
     /// The alarm journal's writer, if the program has alarms and a journal file.
     pub(super) journal: Option<AlarmJournal>,
     pub(super) shm: Option<ShmOwner<T>>,
+    /// The line to log after the first cycle.
+    started: Option<Started>,
     /// A change on probation.
     pub(super) probation: Option<Probation<T>>,
     /// How to follow a change of layout.
@@ -66,12 +69,14 @@ impl<T: Memory> Cycle<T> {
             log::warn!(target: "plc_io::runtime", "Ctrl-C and SIGTERM will end the program without a clean stop: {e}");
         }
         let mut gm = s.initial.clone();
+        let mut loaded = None;
         let schema = gm.schema();
         let retain = match &s.retain {
             Some(path) => {
                 let store = RetainStore::new(path);
                 let report = store.load(&mut gm).map_err(RuntimeError::Retain)?;
                 report.log(path);
+                loaded = Some((path.clone(), report.restored.len() + report.converted.len()));
                 Some(RetainWriter::spawn_for(
                     store,
                     s.retain_interval,
@@ -105,6 +110,10 @@ impl<T: Memory> Cycle<T> {
             journal,
             shm,
             probation: None,
+            started: Some(Started {
+                segment: s.segment.clone(),
+                retain: loaded,
+            }),
             remake: Remake {
                 retain: s.retain.clone().map(|path| (path, s.retain_interval)),
                 sharing,
@@ -257,6 +266,9 @@ impl<T: Memory> Cycle<T> {
         }
         let end = monotonic_ns();
         self.report(start, end, &io);
+        if let Some(started) = self.started.take() {
+            started.log(&io);
+        }
         #[cfg(feature = "cycle-probe")]
         if let (Some(probe), Some(bus), Some(exchange_end), Some((tick_start, tick_end))) = (
             self.probe.as_mut(),

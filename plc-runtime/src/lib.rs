@@ -15,6 +15,7 @@ mod private_dir;
 pub mod probe;
 pub mod retain;
 mod schedule;
+mod started;
 mod stats;
 mod swap;
 
