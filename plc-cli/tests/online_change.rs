@@ -292,6 +292,103 @@ fn the_tensile_tester_takes_a_new_build_with_its_bus_in_op() {
     assert_eq!(seg.status().bus_state, BusState::Op);
 }
 
+/// One sample of the moving crosshead, read from one image.
+#[derive(Clone, Copy, Debug)]
+struct Sample {
+    bus: BusState,
+    position: i64,
+    statusword: i64,
+    following_error: i64,
+}
+
+#[test]
+fn a_change_while_the_axis_moves_keeps_its_profile_and_the_drive_enabled() {
+    let segment = format!("chg_moving_{}", std::process::id());
+    let _host = host("libtensile_tester.so", &segment);
+    let seg = DynSegment::attach(&segment).unwrap();
+    wait_until("the bus in OP", || seg.status().bus_state == BusState::Op);
+    wait_until("the crosshead homed", || {
+        value(&segment, "crosshead.homed") == "true"
+    });
+    // The specimen centred and lifted, as the sensors would say: the machine goes on to its
+    // test, the crosshead pulling at the test speed.
+    let forced = plc(&["force", &segment, "impact67_0_digital_inputs=3"]);
+    assert!(forced.status.success(), "{}", stderr(&forced));
+    wait_until("the test running", || {
+        value(&segment, "machine_state_name") == "testing"
+    });
+    wait_until("the crosshead moving", || {
+        number(&segment, "crosshead_velocity") != 0
+    });
+
+    let watching = Arc::new(AtomicBool::new(true));
+    let watcher = {
+        let watching = watching.clone();
+        let name = segment.clone();
+        std::thread::spawn(move || {
+            let seg = DynSegment::attach(&name).unwrap();
+            let at = |path: &str| seg.locate(path).unwrap().var;
+            let (pos, sw, fe) = (
+                at("crosshead_position"),
+                at("crosshead_statusword"),
+                at("crosshead_following_error"),
+            );
+            let int = |v: Option<plc_core::Value>| match v {
+                Some(plc_core::Value::Int(i)) => i,
+                Some(plc_core::Value::UInt(u)) => u as i64,
+                other => panic!("not an integer: {other:?}"),
+            };
+            let mut samples = Vec::new();
+            while watching.load(Ordering::Relaxed) {
+                let image = seg.snapshot_bytes().unwrap();
+                samples.push(Sample {
+                    bus: seg.status().bus_state,
+                    position: int(pos.value_in(&image, 0)),
+                    statusword: int(sw.value_in(&image, 0)),
+                    following_error: int(fe.value_in(&image, 0)),
+                });
+                std::thread::sleep(std::time::Duration::from_micros(500));
+            }
+            samples
+        })
+    };
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let out = change(&segment, "libtensile_tester.so", &[]);
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    watching.store(false, Ordering::Relaxed);
+    let samples = watcher.join().unwrap();
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(samples.len() > 100, "{} samples", samples.len());
+    for s in &samples {
+        assert_eq!(s.bus, BusState::Op, "the bus left OP: {s:?}");
+        assert_eq!(
+            s.statusword & 0x6F,
+            0x27,
+            "the drive left operation enabled: {s:?}"
+        );
+        assert!(s.following_error.abs() < 1_000, "following error: {s:?}");
+    }
+    // The profile goes on without a jump: the crosshead moves one way, and no step between
+    // two samples is more than a few times the usual one.
+    let way = (samples[samples.len() - 1].position - samples[0].position).signum();
+    assert_ne!(way, 0, "the crosshead did not move");
+    let steps: Vec<i64> = samples
+        .windows(2)
+        .map(|w| way * (w[1].position - w[0].position))
+        .collect();
+    assert!(steps.iter().all(|&d| d >= 0), "it moved back: {steps:?}");
+    let mut moving: Vec<i64> = steps.iter().copied().filter(|&d| d > 0).collect();
+    moving.sort_unstable();
+    let usual = moving[moving.len() / 2];
+    assert!(
+        steps.iter().all(|&d| d <= 4 * usual + 2),
+        "a jump: usual step {usual}, steps {steps:?}"
+    );
+    assert_eq!(value(&segment, "machine_state_name"), "testing");
+    let fault = stdout(&plc(&["get", &segment, "fault_text"]));
+    assert_eq!(fault.trim(), "fault_text =", "no fault");
+}
+
 #[test]
 fn a_program_without_a_bus_takes_no_build_with_links() {
     let segment = format!("chg_nobus_{}", std::process::id());
