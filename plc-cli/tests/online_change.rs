@@ -407,3 +407,61 @@ fn a_program_without_a_bus_takes_no_build_with_links() {
             .is_some()
     );
 }
+
+#[test]
+fn another_user_may_not_change_the_program() {
+    // SAFETY: geteuid has no preconditions.
+    if unsafe { libc::geteuid() } != 0 {
+        eprintln!("skipped: switching to another uid needs root");
+        return;
+    }
+    let base = std::env::temp_dir().join(format!("plc-chg-uid-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&base);
+    let rt = base.join("rt");
+    std::fs::create_dir_all(&rt).unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    // `plc` where nobody may run it; the runtime dir private, as a program's is.
+    std::fs::set_permissions(&base, std::fs::Permissions::from_mode(0o755)).unwrap();
+    std::fs::set_permissions(&rt, std::fs::Permissions::from_mode(0o700)).unwrap();
+    let segment = format!("chg_uid_{}", std::process::id());
+    let _host = Command::new(env!("CARGO_BIN_EXE_plc"))
+        .arg("run")
+        .arg(module("libcounter.so"))
+        .args(["--segment", &segment])
+        .env(plc_io::shm::RUNTIME_DIR_ENV, &rt)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn_guarded()
+        .unwrap();
+    wait_until("the change socket", || {
+        rt.join(format!("{segment}.change")).exists()
+    });
+    let bin =
+        plc_test_support::install_executable(env!("CARGO_BIN_EXE_plc").as_ref(), &base).unwrap();
+    let lib = module("libcounter_v2.so");
+    let out = common::as_nobody(
+        Command::new(&bin)
+            .args([
+                "change",
+                &segment,
+                lib.to_str().unwrap(),
+                "--reset",
+                "last_now_us",
+            ])
+            .env(plc_io::shm::RUNTIME_DIR_ENV, &rt),
+    )
+    .output_guarded()
+    .unwrap();
+    assert!(!out.status.success());
+    let err = stderr(&out);
+    assert!(err.contains("is run by another user"), "{err}");
+    // The program is the same one, counting on.
+    let mut get = Command::new(env!("CARGO_BIN_EXE_plc"));
+    get.args(["get", &segment, "panic_at_cycle"])
+        .env(plc_io::shm::RUNTIME_DIR_ENV, &rt);
+    assert!(
+        get.output_guarded().unwrap().status.success(),
+        "v1's variable is there"
+    );
+    std::fs::remove_dir_all(&base).unwrap();
+}

@@ -44,6 +44,13 @@ pub fn run(args: &ChangeArgs) -> Result<(), Error> {
     };
     match UnixStream::connect(&socket) {
         Ok(stream) => ask_host(stream, module, args),
+        Err(e) if e.kind() == std::io::ErrorKind::PermissionDenied => Err(format!(
+            "segment `{}` is run by another user: only the user who runs a program may change \
+             it (its change socket `{}` is not yours)",
+            args.segment,
+            socket.display()
+        )
+        .into()),
         Err(_) => {
             let seg = DynSegment::attach(&args.segment)?;
             match (&module, args.dry_run) {
