@@ -389,7 +389,10 @@ fn a_change_while_the_axis_moves_keeps_its_profile_and_the_drive_enabled() {
     // A single pair can read a position one exchange late and the next one early (the
     // simulated drive's frame), a dip and a rise that cancel: the speed is taken over three
     // pairs, and no pair may be far above the test speed.
-    let smooth: Vec<f64> = speeds.windows(3).map(|w| w.iter().sum::<f64>() / 3.0).collect();
+    let smooth: Vec<f64> = speeds
+        .windows(3)
+        .map(|w| w.iter().sum::<f64>() / 3.0)
+        .collect();
     let mut sorted = speeds.clone();
     sorted.sort_by(f64::total_cmp);
     let usual = sorted[sorted.len() / 2];
