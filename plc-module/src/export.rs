@@ -107,7 +107,7 @@ unsafe fn image_of<'a, T: GlobalMemory>(image: *mut u8, len: usize) -> Option<&'
 /// Runs `work` over the image, catching a panic into `panic`.
 ///
 /// # Safety
-/// As [`image_of`]; `panic` is null or points to a [`PanicText`] whose buffer has `cap`
+/// As `image_of`; `panic` is null or points to a [`PanicText`] whose buffer has `cap`
 /// writable bytes.
 pub unsafe fn guarded<T: GlobalMemory>(
     image: *mut u8,

@@ -17,7 +17,10 @@ use std::time::Duration;
 /// The conversion of the running variables into new ones (or back).
 pub type Convert<T> = Box<dyn FnOnce(&T) -> Result<T, String> + Send>;
 
-/// A change the cycle makes between two cycles: see the [module](self).
+/// A change the cycle makes between two cycles, taken from
+/// [`RuntimeBuilder::swaps`](crate::RuntimeBuilder::swaps): the conversion runs on the cycle
+/// thread; when the layout differs, the I/O is bound again and the segment, the retain writer
+/// and the alarms follow; the new program is on probation for `probation` cycles.
 pub struct Swap<T> {
     /// The new variables from the running ones: run on the cycle thread, so only the
     /// conversion itself (everything else prepared).

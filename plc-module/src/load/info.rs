@@ -2,8 +2,8 @@
 
 use plc_shm::LayoutDescriptor;
 
-/// What a module says of itself, checked: from [`Module::inspect`] (which loads no code into
-/// this process) or [`Module::info`].
+/// What a module says of itself, checked: from [`Module::inspect`](crate::Module::inspect)
+/// (which loads no code into this process) or [`Module::info`](crate::Module::info).
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct ModuleInfo {
     /// The program crate's name.
