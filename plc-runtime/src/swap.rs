@@ -108,6 +108,13 @@ impl<T: Memory> Cycle<T> {
         }
         self.ctx.gm = new;
         self.ctx.gm.store_image(&mut self.image.0);
+        if relaid {
+            // The new retain writer saves at the next offer: every retained byte counts as new.
+            self.retained = super::cycle::RetainedBytes::changed_from_nothing(
+                &schema,
+                T::image_bytes(&self.image.0),
+            );
+        }
         Ok((relaid, released))
     }
 
@@ -140,10 +147,6 @@ impl<T: Memory> Cycle<T> {
                 before,
             ));
         }
-        let mut image = new.new_image();
-        new.store_image(&mut image);
-        self.retained =
-            super::cycle::RetainedBytes::changed_from_nothing(&schema, T::image_bytes(&image));
         let mut alarms = RuntimeAlarms::of(&schema)?;
         alarms.set_max_shelve(self.remake.max_shelve);
         if let Some(journal) = &self.journal {

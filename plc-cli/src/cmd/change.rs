@@ -5,12 +5,11 @@
 //! checks it and loaded only by a short-lived child, its code never run in `plc`.
 
 use super::Error;
-use super::change_wire::{Answer, MAX_LINE, Outcome, Request, head, report, socket_path};
+use super::change_wire::{Outcome, Request, ask, head, refused_plan, report, socket_path};
 use plc_module::Module;
 use plc_module::trial::Trial;
 use plc_shm::DynSegment;
 use plc_shm::change::{ChangePlan, Direction};
-use std::io::{BufRead, BufReader, Read, Write};
 use std::os::unix::net::UnixStream;
 use std::path::{Path, PathBuf};
 
@@ -78,13 +77,7 @@ fn ask_host(stream: UnixStream, module: Option<PathBuf>, args: &ChangeArgs) -> R
         dry_run: args.dry_run,
         info: false,
     };
-    let mut line = serde_json::to_vec(&request)?;
-    line.push(b'\n');
-    (&stream).write_all(&line)?;
-    let mut answer = String::new();
-    BufReader::new((&stream).take(MAX_LINE)).read_line(&mut answer)?;
-    let answer: Answer = serde_json::from_str(&answer)
-        .map_err(|_| "the host ended without an answer: see its log")?;
+    let answer = ask(&stream, &request)?;
     match answer.outcome {
         Outcome::Done => {
             print!("{}", answer.text);
@@ -111,16 +104,7 @@ fn plan_here(seg: &DynSegment, module: &Path, args: &ChangeArgs) -> Result<(), E
         &args.reset,
         Direction::Forward,
     )
-    .map_err(|refused| {
-        let lines: Vec<String> = refused.iter().map(|r| format!("  {r}")).collect();
-        format!(
-            "the change of `{}` to `{}` is refused, nothing changed:\n{}\nname a value with \
-             --reset PATH to start it afresh from the new build's initial value",
-            args.segment,
-            module.display(),
-            lines.join("\n")
-        )
-    })?;
+    .map_err(|refused| refused_plan(module, &refused))?;
     let head = head(&args.segment, &info.name, module, &info.fingerprint, true);
     print!("{}", report(&head, &plan));
     Ok(())

@@ -3,7 +3,9 @@
 //! both ways, the new initial image) and made by the cycle between two cycles. It answers
 //! once the new program passed its probation, or came back from it.
 
-use super::change_wire::{Answer, MAX_LINE, Outcome, Request, head, report, socket_path};
+use super::change_wire::{
+    Answer, MAX_LINE, Outcome, Request, head, refused_plan, report, socket_path,
+};
 use plc_module::trial::Trial;
 use plc_module::{AtChange, Module, ModuleMemory, prepare, prepare_back};
 use plc_runtime::{Swap, SwapEvent};
@@ -198,15 +200,7 @@ impl Host {
         let new_module = shown(&module);
         let prepared = match prepare(&self.running, module, &request.resets, PROBATION) {
             Ok(p) => p,
-            Err(refusals) => {
-                let lines: Vec<String> = refusals.iter().map(|r| format!("  {r}")).collect();
-                return refused(format!(
-                    "the change to `{}` is refused, nothing changed:\n{}\nname a value with \
-                     --reset PATH to start it afresh from the new build's initial value",
-                    path.display(),
-                    lines.join("\n")
-                ));
-            }
+            Err(refusals) => return refused(refused_plan(path, &refusals)),
         };
         let head = head(
             &self.segment,

@@ -46,7 +46,6 @@ pub struct Answer {
 /// What the host of segment `segment` runs (`plc list SEGMENT`), if `plc run` hosts it and it
 /// answers.
 pub fn hosted(segment: &str) -> Option<String> {
-    use std::io::{BufRead, BufReader, Read, Write};
     let stream = std::os::unix::net::UnixStream::connect(socket_path(segment).ok()?).ok()?;
     let _ = stream.set_read_timeout(Some(std::time::Duration::from_secs(5)));
     let request = Request {
@@ -55,15 +54,36 @@ pub fn hosted(segment: &str) -> Option<String> {
         dry_run: true,
         info: true,
     };
-    let mut line = serde_json::to_vec(&request).ok()?;
-    line.push(b'\n');
-    (&stream).write_all(&line).ok()?;
-    let mut answer = String::new();
-    BufReader::new((&stream).take(MAX_LINE))
-        .read_line(&mut answer)
-        .ok()?;
-    let answer: Answer = serde_json::from_str(&answer).ok()?;
+    let answer = ask(&stream, &request).ok()?;
     (answer.outcome == Outcome::Done).then_some(answer.text)
+}
+
+/// Sends `request` to the host at the other end of `stream` and reads its answer.
+pub fn ask(
+    mut stream: &std::os::unix::net::UnixStream,
+    request: &Request,
+) -> Result<Answer, String> {
+    use std::io::{BufRead, BufReader, Read, Write};
+    let mut line = serde_json::to_vec(request).map_err(|e| e.to_string())?;
+    line.push(b'\n');
+    let mut answer = String::new();
+    stream
+        .write_all(&line)
+        .and_then(|()| BufReader::new(stream.take(MAX_LINE)).read_line(&mut answer))
+        .map_err(|e| format!("the host did not answer: {e}"))?;
+    serde_json::from_str(&answer)
+        .map_err(|_| "the host ended without an answer: see its log".into())
+}
+
+/// Why a change to `module` is refused, each value its plan cannot carry on a line of its own.
+pub fn refused_plan(module: &Path, refused: &[plc_shm::change::Refused]) -> String {
+    let lines: Vec<String> = refused.iter().map(|r| format!("  {r}")).collect();
+    format!(
+        "the change to `{}` is refused, nothing changed:\n{}\nname a value with --reset PATH to \
+         start it afresh from the new build's initial value",
+        module.display(),
+        lines.join("\n")
+    )
 }
 
 /// Where the host of segment `segment` listens for changes.
